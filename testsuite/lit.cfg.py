@@ -1,0 +1,49 @@
+# lit configuration for texcc's FileCheck tests. Tools come in by substitution, never by path.
+import os
+import subprocess
+import sys
+
+import lit.formats
+
+config.name = "texcc"
+config.test_format = lit.formats.ShTest(not lit_config.isWindows)
+config.suffixes = [".cl", ".json", ".test"]
+config.excludes = ["Inputs", "Unit", "lit.cfg.py", "CMakeLists.txt"]
+config.test_source_root = os.path.dirname(__file__)
+config.test_exec_root = os.path.join(config.texcc_obj_root, "testsuite")
+
+tools = config.texcc_tools_dir
+config.substitutions.append(("%texcc-src", config.texcc_src_root))
+config.substitutions.append(("%inputs", os.path.join(config.test_source_root, "Inputs")))
+config.substitutions.append(("%python", sys.executable))
+# Longest names first: lit substitutes in order.
+config.substitutions.append(("texcc-cl-probe", os.path.join(tools, "texcc-cl-probe")))
+config.substitutions.append(("texrender", os.path.join(tools, "texrender")))
+config.substitutions.append(("texcc", os.path.join(tools, "texcc")))
+config.substitutions.append(("FileCheck", config.filecheck))
+config.substitutions.append(("not ", config.not_tool + " "))
+config.substitutions.append(("%clang", config.clang))
+
+config.environment["TEXCC_SRC"] = config.texcc_src_root
+for var in ("HOME", "TMPDIR", "POCL_CACHE_DIR", "OCL_ICD_VENDORS", "POCL_DEVICES"):
+    if var in os.environ:
+        config.environment[var] = os.environ[var]
+
+# REQUIRES: opencl — present only when an OpenCL device answers.
+probe = os.path.join(tools, "texcc-cl-probe")
+try:
+    found = subprocess.run([probe], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=60).returncode == 0
+except (OSError, subprocess.TimeoutExpired):
+    found = False
+if found:
+    config.available_features.add("opencl")
+else:
+    lit_config.note("no OpenCL device found: tests that REQUIRE opencl are skipped")
+
+shared = os.path.join(config.texcc_src_root, "..", "shared")
+if os.path.isdir(os.path.join(shared, "assets")):
+    config.available_features.add("shared-assets")
+    config.substitutions.append(("%shared", os.path.abspath(shared)))
+else:
+    lit_config.note("../shared/assets is absent: tests that REQUIRE shared-assets are skipped")
