@@ -1,0 +1,57 @@
+/* texcc_abi.h: the structs shared by the host runtime (C++) and every OpenCL kernel, the
+ * generated texture kernel included. Layouts are fixed: all members are 16-byte vectors or
+ * 4-byte scalars in groups of four. See docs/abi.md. */
+#ifndef TEXCC_ABI_H
+#define TEXCC_ABI_H
+
+#ifdef __OPENCL_VERSION__
+#define TEXCC_F4 float4
+#define TEXCC_I4 int4
+#else
+#include <CL/cl_platform.h>
+#define TEXCC_F4 cl_float4
+#define TEXCC_I4 cl_int4
+#endif
+
+/* Attribute ids (ABI; also the order of attributeTable() in the graph library). */
+#define TEXCC_ATTR_WORLDPOS 0
+#define TEXCC_ATTR_OBJECTPOS 1
+#define TEXCC_ATTR_NORMAL 2
+#define TEXCC_ATTR_GEOMNORMAL 3
+#define TEXCC_ATTR_TANGENT 4
+#define TEXCC_ATTR_TEXCOORD0 5
+#define TEXCC_ATTR_AO 6
+#define TEXCC_ATTR_VIEWDIR 7
+#define TEXCC_ATTR_COUNT 8
+
+/* Per-hit surface attributes. The hit-attributes kernel fills only those the textures read
+ * (layout.json "attributes"); the rest are zero. */
+typedef struct TexccHitAttrs {
+  TEXCC_F4 worldPos;   /* xyz */
+  TEXCC_F4 objectPos;  /* xyz */
+  TEXCC_F4 normal;     /* xyz, shading normal, unit, facing the incoming ray */
+  TEXCC_F4 geomNormal; /* xyz, unit, facing the incoming ray */
+  TEXCC_F4 tangent;    /* xyz, unit (dP/du, or any vector orthogonal to the normal) */
+  TEXCC_F4 viewDir;    /* xyz, unit, from the hit towards the viewer (-ray direction) */
+  TEXCC_F4 uvAO;       /* xy = TexCoord0, z = AO (1 = unoccluded), w = unused */
+} TexccHitAttrs;
+
+/* Global engine settings (readSetting). */
+typedef struct TexccSettings {
+  TEXCC_F4 cameraPos; /* xyz: CameraPos */
+  float time;         /* Time, seconds */
+  int frame;          /* Frame */
+  int pad0;
+  int pad1;
+} TexccSettings;
+
+/* One image bound to a sam2D: texels are linear float4 RGBA, row-major, row 0 at the top
+ * (v = 0 at the top row's centre edge). */
+typedef struct TexccImageInfo {
+  int offset; /* first texel in the texel buffer */
+  int width;
+  int height;
+  int pad;
+} TexccImageInfo;
+
+#endif

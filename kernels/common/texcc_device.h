@@ -1,0 +1,76 @@
+/* texcc_device.h: the device-side embedded API of the generated texture kernel (OpenCL C 1.2).
+ * texcc copies this file verbatim into every proctex.cl (so the kernel is self-contained);
+ * the user's readAttr/readSetting/tex2D calls are lowered by texcc to the accessors below, and
+ * every user function takes the hit context as a first parameter (TEXCC_CTX_PARAM). */
+#ifndef TEXCC_DEVICE_H
+#define TEXCC_DEVICE_H
+
+typedef int sam2D; /* an image index into TexccCtx::images */
+
+typedef struct TexccCtx {
+  TexccHitAttrs hit;
+  __global const TexccSettings *settings;
+  __global const float4 *texels;
+  __global const TexccImageInfo *images;
+} TexccCtx;
+
+#define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx
+#define TEXCC_CTX_ARG texcc_ctx
+
+/* readAttr("Name") lowers to texcc_attr_Name(texcc_ctx). */
+inline float3 texcc_attr_WorldPos(const TexccCtx *c) { return c->hit.worldPos.xyz; }
+inline float3 texcc_attr_ObjectPos(const TexccCtx *c) { return c->hit.objectPos.xyz; }
+inline float3 texcc_attr_Normal(const TexccCtx *c) { return c->hit.normal.xyz; }
+inline float3 texcc_attr_GeomNormal(const TexccCtx *c) { return c->hit.geomNormal.xyz; }
+inline float3 texcc_attr_Tangent(const TexccCtx *c) { return c->hit.tangent.xyz; }
+inline float2 texcc_attr_TexCoord0(const TexccCtx *c) { return c->hit.uvAO.xy; }
+inline float texcc_attr_AO(const TexccCtx *c) { return c->hit.uvAO.z; }
+inline float3 texcc_attr_ViewDir(const TexccCtx *c) { return c->hit.viewDir.xyz; }
+
+/* readSetting("Name") lowers to texcc_setting_Name(texcc_ctx). */
+inline float texcc_setting_Time(const TexccCtx *c) { return c->settings->time; }
+inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->frame; }
+inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->settings->cameraPos.xyz; }
+
+/* Attribute by id, widened to float4 (the interpreter's attribute arguments). */
+inline float4 texcc_attr_by_id(const TexccCtx *c, uint id) {
+  switch (id) {
+  case TEXCC_ATTR_WORLDPOS: return c->hit.worldPos;
+  case TEXCC_ATTR_OBJECTPOS: return c->hit.objectPos;
+  case TEXCC_ATTR_NORMAL: return c->hit.normal;
+  case TEXCC_ATTR_GEOMNORMAL: return c->hit.geomNormal;
+  case TEXCC_ATTR_TANGENT: return c->hit.tangent;
+  case TEXCC_ATTR_TEXCOORD0: return (float4)(c->hit.uvAO.xy, 0.0f, 0.0f);
+  case TEXCC_ATTR_AO: return (float4)(c->hit.uvAO.z, 0.0f, 0.0f, 0.0f);
+  case TEXCC_ATTR_VIEWDIR: return c->hit.viewDir;
+  default: return (float4)(0.0f);
+  }
+}
+
+inline float4 texcc_texel(__global const float4 *texels, TexccImageInfo im, int x, int y) {
+  x = x % im.width;
+  if (x < 0) x += im.width;
+  y = y % im.height;
+  if (y < 0) y += im.height;
+  return texels[im.offset + y * im.width + x];
+}
+
+/* tex2D(s, uv) lowers to texcc_tex2D(texcc_ctx, s, uv): bilinear, wrapping in both axes,
+ * linear RGBA. An out-of-range image index reads magenta, never out of bounds. */
+inline float4 texcc_tex2D(const TexccCtx *c, sam2D s, float2 uv) {
+  if (s < 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);
+  TexccImageInfo im = c->images[s];
+  if (im.width <= 0 || im.height <= 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);
+  float fx = uv.x * (float)im.width - 0.5f;
+  float fy = uv.y * (float)im.height - 0.5f;
+  float x0f = floor(fx), y0f = floor(fy);
+  float tx = fx - x0f, ty = fy - y0f;
+  int x0 = (int)x0f, y0 = (int)y0f;
+  float4 a = texcc_texel(c->texels, im, x0, y0);
+  float4 b = texcc_texel(c->texels, im, x0 + 1, y0);
+  float4 d = texcc_texel(c->texels, im, x0, y0 + 1);
+  float4 e = texcc_texel(c->texels, im, x0 + 1, y0 + 1);
+  return mix(mix(a, b, tx), mix(d, e, tx), ty);
+}
+
+#endif

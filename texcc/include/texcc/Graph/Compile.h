@@ -1,0 +1,137 @@
+#ifndef TEXCC_GRAPH_COMPILE_H
+#define TEXCC_GRAPH_COMPILE_H
+
+// From a parsed graph and the signatures of its functions to what every evaluation mode needs:
+// live nodes (unreached removed, identical merged), a DFS topological program per material,
+// liveness-based value-stack slots, argument records laid out with OpenCL alignment, and the
+// encoded fake stack (args.bin). The byte-level format is specified in docs/abi.md.
+
+#include "texcc/Graph/Graph.h"
+#include "texcc/Graph/Signature.h"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace texcc::graph {
+
+struct CompileOptions {
+  /// Private value-stack cap in float4 slots; beyond it values live in a global spill slice.
+  unsigned StackLimit = 32;
+  /// Function ids to keep (live edits: the kernel's switch cases must not move). Functions not
+  /// listed get the next free ids.
+  std::map<std::string, unsigned> FixedFunctionIds;
+  /// Every user function name the sources define (for "did you mean" on an unknown "fn").
+  std::vector<std::string> KnownFunctions;
+  /// Where the passes log what they did (texcc -v); null for silence.
+  std::ostream *Log = nullptr;
+};
+
+/// One argument of a live node, resolved against the function's signature.
+struct CompiledArg {
+  enum class Source { Constant, Node, Attribute };
+  std::string Name;
+  ValueType Type;             // the parameter's type
+  Source Src = Source::Constant;
+  unsigned NodeIndex = 0;     // Source::Node: index into CompiledGraph::Nodes
+  int AttrId = -1;            // Source::Attribute: attributeTable() index
+  bool Broadcast = false;     // a float value feeding a float2..4 parameter
+  /// Source::Constant. Scalars/vectors: Values has componentCount() entries (already
+  /// broadcast). Int and sam2D (image index) are stored as floats here and written as int32.
+  /// Arrays: Values holds ArrayCount * componentCount(Type.Base) entries, row after row.
+  std::vector<double> Values;
+  unsigned ArrayCount = 0;
+  uint32_t ArrayByteOffset = 0;  // arrays: where the elements start in args.bin
+  uint32_t BlockOffset = 0;      // offset of this parameter inside the record's param block
+};
+
+struct CompiledNode {
+  std::string Id;             // the surviving id (first in file order among merged twins)
+  std::vector<std::string> MergedIds;  // ids merged into this one (edits address any of them)
+  std::string Fn;
+  unsigned FnId = 0;
+  BaseType Return = BaseType::Float;
+  std::vector<CompiledArg> Args;   // in parameter order
+  uint32_t RecordOffset = 0;       // byte offset of the argument record in args.bin
+  uint32_t RecordSize = 0;
+  SourceLoc Loc;
+};
+
+struct Instruction {
+  unsigned Node = 0;          // index into CompiledGraph::Nodes
+  unsigned ResultSlot = 0;    // value-stack slot that receives the result
+};
+
+/// A BSDF input after compilation: a constant, or a texture output of the material.
+struct CompiledBsdfInput {
+  std::string Name;           // "color", "roughness", "mask", "strength"
+  bool IsOutput = false;
+  unsigned Output = 0;        // index into CompiledMaterial::Outputs
+  std::vector<double> Constant;  // 1..4 components when !IsOutput
+};
+
+struct CompiledBsdf {
+  std::string Type;           // diffuse | glossy | mirror | emission | blend
+  std::vector<CompiledBsdfInput> Inputs;
+  std::vector<std::pair<std::string, CompiledBsdf>> Children;  // blend: "a", "b"
+};
+
+struct MaterialOutput {
+  unsigned Node = 0;          // index into CompiledGraph::Nodes
+  unsigned Slot = 0;          // stack slot holding it at the end of the program
+  BaseType Type = BaseType::Float;
+};
+
+struct CompiledMaterial {
+  std::string Name;
+  unsigned Index = 0;
+  std::vector<Instruction> Program;   // DFS topological order (children first)
+  std::vector<MaterialOutput> Outputs;
+  CompiledBsdf Bsdf;
+  uint32_t ProgramWordOffset = 0;     // where its encoded program starts, in uint32 words
+  unsigned StackSlots = 0;            // this material's peak
+};
+
+struct CompiledGraph {
+  std::string GraphPath;
+  std::vector<std::string> Sources;
+  std::vector<std::pair<std::string, std::string>> Images;  // index = image id
+  SignatureMap Signatures;                 // live functions only
+  std::vector<std::string> FunctionsById;  // FnId -> name (live functions only)
+  std::vector<CompiledNode> Nodes;         // live nodes
+  std::vector<CompiledMaterial> Materials;
+  unsigned StackSlots = 0;     // exact peak over all materials (TEXCC_STACK_SLOTS)
+  unsigned StackLimit = 0;
+  bool Spill = false;          // StackSlots > StackLimit: values in a global slice
+  unsigned MaxOutputs = 0;     // TEXCC_MAX_OUTPUTS (at least 1)
+  std::vector<std::string> Attributes;  // read by live functions or node args, sorted
+  std::vector<std::string> Settings;    // read by live functions, sorted
+  std::vector<unsigned> WavefrontOrder; // node indices, a topological order over all materials
+  std::vector<uint8_t> ArgsBin;         // the encoded fake stack (docs/abi.md)
+  uint32_t ProgramWords = 0;            // programs occupy words [0, ProgramWords)
+  uint32_t RecordsOffset = 0;           // byte offset of the first argument record
+
+  /// The index of the node with this id (also a merged-away id), or -1.
+  int findNode(const std::string &Id) const;
+};
+
+/// Validates against the signatures (unknown function or argument, missing argument, type
+/// mismatch, cycle, dangling reference, unknown image/attribute; unused nodes warn), then runs
+/// the passes and encodes args.bin. std::nullopt when any error was reported.
+std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
+                                          const CompileOptions &Opts, DiagnosticSink &Diags);
+
+/// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
+std::string layoutJson(const CompiledGraph &CG);
+
+/// Reads the signatures back from a layout.json (for the runtime's live edits), keyed by name,
+/// and the function ids in use.
+bool readLayoutSignatures(const std::string &LayoutJsonText, SignatureMap &Sigs,
+                          std::map<std::string, unsigned> &FnIds, std::string &Error);
+
+} // namespace texcc::graph
+
+#endif

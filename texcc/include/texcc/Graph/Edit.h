@@ -1,0 +1,50 @@
+#ifndef TEXCC_GRAPH_EDIT_H
+#define TEXCC_GRAPH_EDIT_H
+
+// Live edits without the compiler: change an argument's value or rewire a node input, and get
+// the re-encoded args.bin (and programs). The runtime's --set and interactive mode use this.
+
+#include "texcc/Graph/Compile.h"
+
+#include <string>
+
+namespace texcc::graph {
+
+class GraphEditor {
+public:
+  /// Takes the graph and the signatures of the kernel's functions; FnIds pins the ids the
+  /// kernel was generated with.
+  GraphEditor(Graph G, SignatureMap Sigs, CompileOptions Opts);
+
+  /// Compiles the initial graph. False (with Diags filled) on error.
+  bool init(DiagnosticSink &Diags);
+
+  /// Sets NODE.ARG to a constant given as text ("0.5", "[1,0,0]", "3", "[[0,1,0,0,1],...]").
+  /// When the layout does not change, only the bytes of that argument change in args.bin.
+  bool setArgument(const std::string &NodeId, const std::string &Arg, const std::string &Value,
+                   DiagnosticSink &Diags);
+  /// Makes NODE.ARG read the output of another node ({ "node": Source }).
+  bool rewire(const std::string &NodeId, const std::string &Arg, const std::string &SourceNode,
+              DiagnosticSink &Diags);
+
+  const CompiledGraph &compiled() const { return CG; }
+  const Graph &graph() const { return G; }
+  /// True when the last edit needs a kernel the current one cannot run (a function not in
+  /// the kernel, more stack slots than TEXCC_STACK_SLOTS, more outputs than TEXCC_MAX_OUTPUTS).
+  bool needsRebuild() const { return NeedsRebuild; }
+
+private:
+  bool recompile(DiagnosticSink &Diags);
+
+  Graph G;
+  SignatureMap Sigs;
+  CompileOptions Opts;
+  CompiledGraph CG;
+  unsigned KernelStackSlots = 0;
+  unsigned KernelMaxOutputs = 0;
+  bool NeedsRebuild = false;
+};
+
+} // namespace texcc::graph
+
+#endif

@@ -1,0 +1,78 @@
+#ifndef TEXCC_GRAPH_GRAPH_H
+#define TEXCC_GRAPH_GRAPH_H
+
+// The graph.json (version 1) model, as parsed: nodes, their arguments, materials (BSDF trees).
+// Every element keeps its JSON path and line:col for diagnostics.
+
+#include "texcc/Graph/Diagnostics.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace texcc::graph {
+
+/// One argument of a node, or one input of a BSDF, as written in graph.json.
+struct ArgValue {
+  enum class Kind {
+    Number,      // 4.0, 6
+    Vector,      // [0.7, 0.7, 0.7]       (2..4 numbers)
+    Array,       // [[0.0, ...], [...]] or [1, 2, 3] for a __global const T* parameter
+    NodeRef,     // { "node": "n" }
+    AttrRef,     // { "attr": "AO" }
+    ImageRef,    // { "image": "brick" }
+  };
+  Kind K = Kind::Number;
+  std::vector<double> Numbers;              // Number (1 element), Vector, flat Array
+  std::vector<std::vector<double>> Rows;    // Array of arrays (each row one element)
+  bool IsArrayOfRows = false;
+  bool IsInteger = false;                   // Number written without fraction/exponent
+  std::string Ref;                          // NodeRef / AttrRef / ImageRef target
+  SourceLoc Loc;                            // where the value starts
+  std::string JsonPath;                     // e.g. "/nodes/1/args/stops"
+};
+
+struct Node {
+  std::string Id;
+  std::string Fn;                           // user function name (before renaming)
+  std::vector<std::pair<std::string, ArgValue>> Args;  // in file order
+  SourceLoc Loc;
+  std::string JsonPath;                     // "/nodes/3"
+};
+
+/// A BSDF tree node: "diffuse" {color}, "glossy" {color, roughness}, "mirror" {color},
+/// "emission" {color, strength}, "blend" {mask, a, b}. Inputs are constants or node refs.
+struct Bsdf {
+  std::string Type;
+  std::vector<std::pair<std::string, ArgValue>> Inputs;  // color, roughness, mask, strength...
+  std::vector<std::pair<std::string, Bsdf>> Children;    // blend: a, b
+  SourceLoc Loc;
+  std::string JsonPath;
+};
+
+struct Material {
+  std::string Name;
+  Bsdf Root;
+  SourceLoc Loc;
+};
+
+struct Graph {
+  std::string Path;                          // graph.json as given (for diagnostics)
+  std::vector<std::string> Sources;          // "sources", relative to the graph's folder
+  std::vector<std::pair<std::string, std::string>> Images;  // name -> path, file order
+  std::vector<Node> Nodes;                   // file order
+  std::vector<Material> Materials;           // file order
+
+  const Node *findNode(const std::string &Id) const;
+};
+
+/// Parses graph.json text. Reports malformed JSON (with line:col), wrong value kinds, unknown
+/// keys, duplicate ids, unknown BSDF types and inputs. Returns std::nullopt on any error.
+/// Does not need function signatures; see validateGraph() for checks that do.
+std::optional<Graph> parseGraph(const std::string &Path, const std::string &Text,
+                                DiagnosticSink &Diags);
+
+} // namespace texcc::graph
+
+#endif

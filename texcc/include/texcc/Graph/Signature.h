@@ -1,0 +1,41 @@
+#ifndef TEXCC_GRAPH_SIGNATURE_H
+#define TEXCC_GRAPH_SIGNATURE_H
+
+// What the graph library needs to know of a user texture function. The front end fills these
+// from the user's code; the runtime reads them back from layout.json for live edits.
+
+#include "texcc/Graph/Types.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace texcc::graph {
+
+struct Param {
+  std::string Name;
+  ValueType Type;
+};
+
+struct FunctionSignature {
+  std::string Name;          // as the user wrote it, and as graph.json's "fn" names it
+  std::string RenamedName;   // the per-file name in the generated kernel, e.g. "noise_fbm3"
+  std::string File;          // the source file that defines it
+  BaseType Return = BaseType::Float;  // Float..Float4
+  std::vector<Param> Params;
+  std::vector<std::string> Attributes;  // read by its whole call tree, sorted ("AO", "Normal")
+  std::vector<std::string> Settings;    // likewise ("Time")
+};
+
+using SignatureMap = std::map<std::string, FunctionSignature>;  // by Name
+
+/// The attributes of DESIGN.md, in id order (the id is the index; it is ABI, see docs/abi.md).
+const std::vector<std::pair<std::string, BaseType>> &attributeTable();
+/// Attribute id by name, or -1.
+int attributeId(const std::string &Name);
+/// The settings of DESIGN.md: name and type.
+const std::vector<std::pair<std::string, BaseType>> &settingTable();
+
+} // namespace texcc::graph
+
+#endif
