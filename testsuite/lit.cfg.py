@@ -18,8 +18,11 @@ config.substitutions.append(("%inputs", os.path.join(config.test_source_root, "I
 config.substitutions.append(("%python", sys.executable))
 # Longest names first: lit substitutes in order.
 config.substitutions.append(("texcc-cl-probe", os.path.join(tools, "texcc-cl-probe")))
+config.substitutions.append((r"(?<![\w/.-])texcc-fe(?![\w.-])", os.path.join(tools, "texcc-fe")))
 config.substitutions.append(("texrender", os.path.join(tools, "texrender")))
-config.substitutions.append(("texcc", os.path.join(tools, "texcc")))
+# Tool names are matched as whole words: a substituted path (".../bin/texcc-fe") must not be
+# substituted again by a shorter name.
+config.substitutions.append((r"(?<![\w/.-])texcc(?![\w.-])", os.path.join(tools, "texcc")))
 config.substitutions.append(("FileCheck", config.filecheck))
 config.substitutions.append(("not ", config.not_tool + " "))
 config.substitutions.append(("%clang", config.clang))

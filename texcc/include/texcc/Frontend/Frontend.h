@@ -16,6 +16,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace texcc::frontend {
@@ -50,6 +51,9 @@ struct TranslatedSource {
   };
   std::map<std::string, Range> Definitions;  // renamed name -> range in Text
   std::vector<std::string> DefinedMacros;
+  /// The -D macros (name, value) the file was parsed with: render() defines them before the
+  /// file and #undef's them after it, so the kernel sees what the front end saw.
+  std::vector<std::pair<std::string, std::string>> Predefined;
 };
 
 struct FrontendResult {

@@ -1,0 +1,2 @@
+float one(void) { return 2.0f; }
+float texB(float x) { return one() + x; }

@@ -1,0 +1,1 @@
+#define GAIN_FROM_HEADER 3.0f

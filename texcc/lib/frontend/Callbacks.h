@@ -1,0 +1,92 @@
+#ifndef TEXCC_LIB_FRONTEND_CALLBACKS_H
+#define TEXCC_LIB_FRONTEND_CALLBACKS_H
+
+// One MatchFinder callback per concern of the front end. Each registers its matchers, records
+// edits in FileContext::Edits (never touching text itself) and facts in the FileContext; the
+// front end applies the edits once, after every callback has run.
+
+#include "FileContext.h"
+
+#include "clang/ASTMatchers/ASTMatchFinder.h"
+
+namespace texcc::frontend {
+
+using clang::ast_matchers::MatchFinder;
+
+/// Renames every user function, at its declarations and at every reference (also where the
+/// name is spelled inside a user macro's body or argument), to Prefix + name.
+class Renaming : public MatchFinder::MatchCallback {
+public:
+  explicit Renaming(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+
+private:
+  FileContext &FC;
+};
+
+/// Lowers the embedded API: readAttr("N") -> texcc_attr_N(texcc_ctx), readSetting("N") ->
+/// texcc_setting_N(texcc_ctx), tex2D(s, uv) -> texcc_tex2D(texcc_ctx, s, uv); records what each
+/// function reads; reports unknown names and non-literal arguments.
+class ApiLowering : public MatchFinder::MatchCallback {
+public:
+  explicit ApiLowering(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+
+private:
+  void lowerRead(const clang::CallExpr *Call, const clang::FunctionDecl *Callee,
+                 const clang::FunctionDecl *Caller);
+  FileContext &FC;
+};
+
+/// Threads the hit context: every user function takes TEXCC_CTX_PARAM first, every call to a
+/// user function passes TEXCC_CTX_ARG first.
+class ContextThreading : public MatchFinder::MatchCallback {
+public:
+  explicit ContextThreading(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+
+private:
+  FileContext &FC;
+};
+
+/// Records user function definitions and the call graph, then (finish) builds the signatures
+/// of the requested textures with the attributes and settings of their whole call trees.
+class SignatureCollector : public MatchFinder::MatchCallback {
+public:
+  explicit SignatureCollector(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+  /// Other: textures defined by earlier sources (name -> file), to reject a second definition.
+  void finish(const std::set<std::string> &TextureNames,
+              const std::map<std::string, std::string> &Other, graph::SignatureMap &Out,
+              std::map<std::string, std::set<std::string>> &Reachable);
+
+private:
+  std::optional<graph::ValueType> paramType(clang::QualType T) const;
+  std::optional<graph::BaseType> valueType(clang::QualType T) const;
+  std::set<std::string> reachableFrom(const std::string &Renamed) const;
+  std::string writtenType(clang::SourceRange Range, clang::QualType T) const;
+  FileContext &FC;
+};
+
+/// What a texture may not do: write to __global memory, recurse, call a function the file
+/// does not define.
+class Restrictions : public MatchFinder::MatchCallback {
+public:
+  explicit Restrictions(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+  /// Checks that need the whole file: recursion, undefined callees.
+  void finish();
+
+private:
+  void reportCycles();
+  FileContext &FC;
+};
+
+} // namespace texcc::frontend
+
+#endif

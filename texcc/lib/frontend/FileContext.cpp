@@ -1,0 +1,91 @@
+#include "FileContext.h"
+
+#include "clang/Lex/Lexer.h"
+
+using namespace clang;
+
+namespace texcc::frontend {
+
+FileContext::FileContext(ASTContext &Ctx, std::string Path, std::string Prefix)
+    : Ctx(Ctx), SM(Ctx.getSourceManager()), Path(std::move(Path)), Prefix(std::move(Prefix)),
+      Edits(Ctx.getSourceManager(), Ctx.getLangOpts()) {}
+
+bool FileContext::isUserFunction(const FunctionDecl *FD) const {
+  if (!FD || FD->isImplicit() || FD->getBuiltinID() != 0)
+    return false;
+  SourceLocation Loc = SM.getExpansionLoc(FD->getLocation());
+  return Loc.isValid() && !SM.isInSystemHeader(Loc) && !SM.isWrittenInBuiltinFile(Loc) &&
+         !SM.isWrittenInCommandLineFile(Loc);
+}
+
+bool FileContext::isApiFunction(const FunctionDecl *FD, llvm::StringRef Name) const {
+  if (!FD || FD->getName() != Name)
+    return false;
+  SourceLocation Loc = SM.getExpansionLoc(FD->getLocation());
+  return SM.getFilename(Loc).endswith("texcc_prelude.h");
+}
+
+std::string FileContext::renamed(const FunctionDecl *FD) const {
+  return Prefix + FD->getName().str();
+}
+
+SourceLocation FileContext::spelled(SourceLocation Loc) const {
+  return SM.getSpellingLoc(Loc);
+}
+
+SourceLocation FileContext::lparenAfter(SourceLocation Loc) const {
+  llvm::Optional<Token> Next = Lexer::findNextToken(Loc, SM, Ctx.getLangOpts());
+  if (!Next || Next->isNot(tok::l_paren))
+    return {};
+  return Next->getLocation();
+}
+
+DiagnosticBuilder FileContext::report(SourceLocation Loc, Diag Kind) {
+  DiagnosticsEngine &DE = Ctx.getDiagnostics();
+  unsigned &Id = DiagIds[Kind];
+  if (!Id) {
+    constexpr auto E = DiagnosticsEngine::Error;
+    switch (Kind) {
+    case Diag::UnknownAttribute:
+      Id = DE.getCustomDiagID(E, "unknown attribute '%0'; expected one of %1");
+      break;
+    case Diag::UnknownSetting:
+      Id = DE.getCustomDiagID(E, "unknown setting '%0'; expected one of %1");
+      break;
+    case Diag::NonLiteralArgument:
+      Id = DE.getCustomDiagID(E, "argument to '%0' must be a string literal");
+      break;
+    case Diag::Recursion:
+      Id = DE.getCustomDiagID(E, "recursion is not allowed in texture code: %0");
+      break;
+    case Diag::GlobalWrite:
+      Id = DE.getCustomDiagID(
+          E, "cannot write through %0: __global memory is read-only in texture code");
+      break;
+    case Diag::BadReturnType:
+      Id = DE.getCustomDiagID(E, "texture '%0' returns unsupported type '%1'; a texture "
+                                 "returns float, float2, float3 or float4");
+      break;
+    case Diag::BadParamType:
+      Id = DE.getCustomDiagID(E, "parameter '%0' of texture '%1' has unsupported type '%2'; "
+                                 "allowed: float, float2, float3, float4, int, sam2D, "
+                                 "__global const T* (T: float, float2, float3, float4, int)");
+      break;
+    case Diag::UndefinedCallee:
+      Id = DE.getCustomDiagID(E, "function '%0' is called but not defined in '%1'; every "
+                                 "texture file must define the functions it calls");
+      break;
+    case Diag::MacroSplitCall:
+      Id = DE.getCustomDiagID(E, "cannot pass the hit context to '%0': its name and its '(' "
+                                 "come from different macro expansions");
+      break;
+    case Diag::DuplicateTexture:
+      Id = DE.getCustomDiagID(E, "texture '%0' is also defined in '%1'; a texture name must "
+                                 "be defined by one source only");
+      break;
+    }
+  }
+  return DE.Report(Loc, Id);
+}
+
+} // namespace texcc::frontend

@@ -1,0 +1,77 @@
+#ifndef TEXCC_LIB_FRONTEND_FILECONTEXT_H
+#define TEXCC_LIB_FRONTEND_FILECONTEXT_H
+
+// What the match callbacks of one user source share: the AST, the rename prefix, the edit set,
+// the facts they collect (calls, API reads), and texcc's diagnostics, which go through Clang's
+// DiagnosticsEngine so that they get file:line:col, the source line and a caret.
+
+#include "EditSet.h"
+
+#include "texcc/Frontend/Frontend.h"
+
+#include "clang/AST/ASTContext.h"
+#include "clang/AST/Decl.h"
+#include "clang/Basic/Diagnostic.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace texcc::frontend {
+
+/// The texcc diagnostics about user code (custom Clang diagnostic ids).
+enum class Diag {
+  UnknownAttribute,   // %0 name, %1 list
+  UnknownSetting,     // %0 name, %1 list
+  NonLiteralArgument, // %0 callee
+  Recursion,          // %0 cycle
+  GlobalWrite,        // %0 what
+  BadReturnType,      // %0 texture, %1 type
+  BadParamType,       // %0 param, %1 texture, %2 type
+  UndefinedCallee,    // %0 function, %1 file
+  MacroSplitCall,     // %0 function
+  DuplicateTexture,   // %0 texture, %1 other file
+};
+
+struct CallSite {
+  std::string Caller, Callee; // renamed names
+  clang::SourceLocation Loc;  // the callee token
+};
+
+class FileContext {
+public:
+  FileContext(clang::ASTContext &Ctx, std::string Path, std::string Prefix);
+
+  clang::ASTContext &Ctx;
+  clang::SourceManager &SM;
+  const std::string Path, Prefix;
+  EditSet Edits;
+
+  /// A function the user wrote (not a builtin, not in the prelude or a system header).
+  bool isUserFunction(const clang::FunctionDecl *FD) const;
+  /// A function of the embedded API declared by the prelude.
+  bool isApiFunction(const clang::FunctionDecl *FD, llvm::StringRef Name) const;
+  std::string renamed(const clang::FunctionDecl *FD) const;
+  /// The file location where the token at Loc is spelled (inside a macro body or argument
+  /// when Loc comes from a macro expansion).
+  clang::SourceLocation spelled(clang::SourceLocation Loc) const;
+  /// The '(' after the token at Loc (a spelled file location), or an invalid location.
+  clang::SourceLocation lparenAfter(clang::SourceLocation Loc) const;
+
+  clang::DiagnosticBuilder report(clang::SourceLocation Loc, Diag Kind);
+
+  // Facts collected by the callbacks.
+  std::map<std::string, const clang::FunctionDecl *> Definitions; // user name -> definition
+  std::vector<CallSite> Calls;
+  std::map<std::string, std::set<std::string>> AttributesRead, SettingsRead; // by renamed fn
+  /// User functions called somewhere (renamed name -> a call site), to check they are defined.
+  std::map<std::string, clang::SourceLocation> Called;
+
+private:
+  std::map<Diag, unsigned> DiagIds;
+};
+
+} // namespace texcc::frontend
+
+#endif
