@@ -480,8 +480,8 @@ def atrium(detail):
 
 def pedestal():
     """The plinth in the middle of the courtyard (the model stands on it)."""
-    m = box((-1.9, 0.0, -1.4), (1.9, 0.45, 1.4))
-    m.extend(box((-1.75, 0.45, -1.25), (1.75, 0.6, 1.25)))
+    m = box((-2.9, 0.0, -1.9), (2.9, 0.45, 1.9))
+    m.extend(box((-2.75, 0.45, -1.75), (2.75, 0.6, 1.75)))
     return m
 
 
@@ -517,7 +517,7 @@ def write_obj(path, mesh, what):
 
 def closeup_files(model):
     return [("model.obj", model, "two meshing gears (the inserted model)"),
-            ("ground.obj", ground(6.0), "ground slab")]
+            ("ground.obj", ground(20.0), "ground slab")]
 
 
 def main(argv):
@@ -534,11 +534,11 @@ def main(argv):
         "rust": closeup_files(model),
         "scratches": closeup_files(model),
         "image-multiply": [("shapes.obj", None, "UV sphere and UV cube"),
-                           ("ground.obj", ground(6.0), "ground slab")],
+                           ("ground.obj", ground(20.0), "ground slab")],
         "marble": [("shapes.obj", None, "UV sphere and UV cube"),
-                   ("ground.obj", ground(6.0), "ground slab")],
+                   ("ground.obj", ground(20.0), "ground slab")],
         "custom-node": [("shapes.obj", None, "UV sphere and UV cube"),
-                        ("ground.obj", ground(6.0), "ground slab")],
+                        ("ground.obj", ground(20.0), "ground slab")],
     }
     wanted = args.only or list(plan)
     for name in wanted:

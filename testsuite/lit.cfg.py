@@ -20,6 +20,7 @@ config.substitutions.append(("%python", sys.executable))
 config.substitutions.append(("texcc-cl-probe", os.path.join(tools, "texcc-cl-probe")))
 config.substitutions.append((r"(?<![\w/.-])texcc-fe(?![\w.-])", os.path.join(tools, "texcc-fe")))
 config.substitutions.append(("texrender", os.path.join(tools, "texrender")))
+config.substitutions.append((r"(?<![\w/.-])texcc-graph(?![\w.-])", os.path.join(tools, "texcc-graph")))
 # Tool names are matched as whole words: a substituted path (".../bin/texcc-fe") must not be
 # substituted again by a shorter name.
 config.substitutions.append((r"(?<![\w/.-])texcc(?![\w.-])", os.path.join(tools, "texcc")))

@@ -1,11 +1,25 @@
-// texcc: the thin driver. Parses options and drives the libraries; the work lives in texcc/lib.
+// texcc: the thin driver. Parses options and drives the libraries; the work lives in texcc/lib:
+// graph.json -> parseGraph -> runFrontend (user code) -> compileGraph -> codegen -> OUTDIR.
+#include "texcc/Codegen/Codegen.h"
 #include "texcc/Config.h"
+#include "texcc/Frontend/Frontend.h"
+#include "texcc/Graph/Compile.h"
+#include "texcc/Graph/Graph.h"
 #include "texcc/Version.h"
 
 #include "llvm/Support/CommandLine.h"
 #include "llvm/Support/raw_ostream.h"
 
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
 using namespace llvm;
+namespace fs = std::filesystem;
+namespace cg = texcc::codegen;
+namespace fe = texcc::frontend;
+namespace gr = texcc::graph;
 
 static cl::OptionCategory TexccCategory("texcc options");
 
@@ -15,9 +29,151 @@ static cl::opt<std::string> GraphPath("graph", cl::desc("Node graph (graph.json)
                                       cl::value_desc("graph.json"), cl::cat(TexccCategory));
 static cl::opt<std::string> OutDir("o", cl::desc("Output folder"), cl::value_desc("OUTDIR"),
                                    cl::cat(TexccCategory));
+static cl::opt<std::string>
+    ModeOpt("mode", cl::desc("Evaluation mode: interp (default), inline or wavefront"),
+            cl::value_desc("interp|inline|wavefront"), cl::init("interp"),
+            cl::cat(TexccCategory));
+static cl::opt<std::string>
+    TargetOpt("target", cl::desc("opencl (default): proctex.cl; host: C++ proctex.cpp"),
+              cl::value_desc("opencl|host"), cl::init("opencl"), cl::cat(TexccCategory));
+static cl::opt<unsigned> StackLimit(
+    "stack-limit",
+    cl::desc("Private value-stack cap in float4 slots; beyond it the interpreter spills to "
+             "global memory (default 32)"),
+    cl::value_desc("N"), cl::init(32), cl::cat(TexccCategory));
+static cl::list<std::string> IncludeDirs("I", cl::Prefix, cl::desc("Add an include directory"),
+                                         cl::value_desc("DIR"), cl::cat(TexccCategory));
+static cl::list<std::string> Defines("D", cl::Prefix, cl::desc("Define a macro for the sources"),
+                                     cl::value_desc("NAME[=V]"), cl::cat(TexccCategory));
+static cl::opt<bool> Verbose("v", cl::desc("Log what every graph pass does (stderr)"),
+                             cl::cat(TexccCategory));
+static cl::list<std::string> Dump("dump",
+                                  cl::desc("Also write OUTDIR/graph.dot (Graphviz) for 'graph'"),
+                                  cl::value_desc("graph"), cl::CommaSeparated,
+                                  cl::cat(TexccCategory));
+static cl::opt<std::string>
+    Emit("emit", cl::desc("user-code: run only the front end, print the rendered user code"),
+         cl::value_desc("user-code"), cl::Hidden, cl::cat(TexccCategory));
 
 static void printVersion(raw_ostream &OS) {
   OS << "texcc version " << texcc::versionString() << " (LLVM " << TEXCC_LLVM_VERSION << ")\n";
+}
+
+static int fail(const std::string &Message) {
+  errs() << "texcc: error: " << Message << "\n";
+  return 1;
+}
+
+static bool readFile(const std::string &Path, std::string &Text) {
+  std::ifstream IS(Path, std::ios::binary);
+  if (!IS)
+    return false;
+  std::ostringstream SS;
+  SS << IS.rdbuf();
+  Text = SS.str();
+  return true;
+}
+
+/// The sources to compile: the command line's, or graph.json's "sources" (relative to it).
+static std::vector<std::string> sourceList(const gr::Graph &G) {
+  if (!Sources.empty())
+    return {Sources.begin(), Sources.end()};
+  std::vector<std::string> List;
+  fs::path Dir = fs::path(GraphPath.getValue()).parent_path();
+  for (const std::string &S : G.Sources)
+    List.push_back(fs::path(S).is_absolute() ? S : (Dir / S).lexically_normal().string());
+  return List;
+}
+
+/// Renders every source with only the user functions the live nodes reach.
+static std::string renderReachableUserCode(const fe::FrontendResult &FR,
+                                           const gr::CompiledGraph &CG) {
+  std::set<std::string> Keep;
+  for (const std::string &Fn : CG.FunctionsById) {
+    Keep.insert(CG.Signatures.at(Fn).RenamedName);
+    auto It = FR.Reachable.find(Fn);
+    if (It != FR.Reachable.end())
+      Keep.insert(It->second.begin(), It->second.end());
+  }
+  if (Keep.empty())
+    Keep.insert("<no live texture>"); // an empty Keep would keep every function
+  std::string Code;
+  for (const fe::TranslatedSource &S : FR.Sources)
+    Code += S.render(Keep);
+  return Code;
+}
+
+static int run() {
+  if (GraphPath.empty())
+    return fail("no graph given (--graph graph.json)");
+  std::optional<cg::Mode> Mode = cg::parseMode(ModeOpt);
+  if (!Mode) {
+    if (ModeOpt == "shape")
+      return fail("--mode=shape is not implemented yet; use interp, inline or wavefront");
+    return fail("unknown mode '" + ModeOpt + "' (expected interp, inline or wavefront)");
+  }
+  std::optional<cg::Target> Target = cg::parseTarget(TargetOpt);
+  if (!Target)
+    return fail("unknown target '" + TargetOpt + "' (expected opencl or host)");
+  for (const std::string &D : Dump)
+    if (D != "graph")
+      return fail("unknown --dump value '" + D + "' (expected graph)");
+  const bool EmitUserCode = Emit == "user-code";
+  if (!Emit.empty() && !EmitUserCode)
+    return fail("unknown --emit value '" + Emit + "' (expected user-code)");
+  if (OutDir.empty() && !EmitUserCode)
+    return fail("no output folder given (-o OUTDIR)");
+
+  std::string GraphText;
+  if (!readFile(GraphPath, GraphText))
+    return fail("cannot read graph '" + GraphPath + "'");
+  gr::DiagnosticSink GraphDiags;
+  std::optional<gr::Graph> G = gr::parseGraph(GraphPath, GraphText, GraphDiags);
+  GraphDiags.print(std::cerr);
+  if (!G)
+    return 1;
+
+  std::set<std::string> TextureNames;
+  for (const gr::Node &N : G->Nodes)
+    TextureNames.insert(N.Fn);
+  fe::FrontendOptions FeOpts;
+  FeOpts.IncludeDirs.assign(IncludeDirs.begin(), IncludeDirs.end());
+  FeOpts.Defines.assign(Defines.begin(), Defines.end());
+  auto FR = fe::runFrontend(sourceList(*G), TextureNames, FeOpts, errs());
+  if (!FR)
+    return fail(toString(FR.takeError()));
+  if (EmitUserCode) {
+    for (const fe::TranslatedSource &S : FR->Sources)
+      outs() << S.render();
+    return 0;
+  }
+
+  gr::CompileOptions CompileOpts;
+  CompileOpts.StackLimit = StackLimit;
+  for (const fe::TranslatedSource &S : FR->Sources)
+    for (const auto &Fn : S.Functions)
+      CompileOpts.KnownFunctions.push_back(Fn.first);
+  if (Verbose)
+    CompileOpts.Log = &std::cerr;
+  gr::DiagnosticSink CompileDiags;
+  std::optional<gr::CompiledGraph> CG =
+      gr::compileGraph(*G, FR->Textures, CompileOpts, CompileDiags);
+  CompileDiags.print(std::cerr);
+  if (!CG)
+    return 1;
+
+  cg::CodegenOptions Opts;
+  Opts.EvalMode = *Mode;
+  Opts.Tgt = *Target;
+  Opts.GraphPath = fs::absolute(fs::path(GraphPath.getValue())).lexically_normal().string();
+  Opts.UserCode = renderReachableUserCode(*FR, *CG);
+  std::string Error;
+  if (!cg::writeOutputsAtomically(OutDir, cg::generateOutputs(*CG, Opts, !Dump.empty()), Error))
+    return fail(Error);
+  if (Verbose)
+    errs() << "texcc: wrote " << cg::kernelFileName(*Target) << ", layout.json, args.bin"
+           << (Dump.empty() ? "" : ", graph.dot") << " to " << OutDir << "\n";
+  return 0;
 }
 
 int main(int argc, char **argv) {
@@ -26,6 +182,5 @@ int main(int argc, char **argv) {
   cl::ParseCommandLineOptions(argc, argv,
                               "texcc: compiles procedural textures (OpenCL C) and a node graph "
                               "into an OpenCL kernel\n");
-  errs() << "texcc: error: compilation is not built yet\n";
-  return 1;
+  return run();
 }

@@ -13,8 +13,9 @@ namespace texcc::frontend {
 
 using clang::ast_matchers::MatchFinder;
 
-/// Renames every user function, at its declarations and at every reference (also where the
-/// name is spelled inside a user macro's body or argument), to Prefix + name.
+/// Renames every user function and program-scope variable, at its declarations and at every
+/// reference (also where the name is spelled inside a user macro's body or argument), to
+/// Prefix + name.
 class Renaming : public MatchFinder::MatchCallback {
 public:
   explicit Renaming(FileContext &FC) : FC(FC) {}
@@ -22,6 +23,7 @@ public:
   void run(const MatchFinder::MatchResult &Result) override;
 
 private:
+  bool isUserGlobal(const clang::VarDecl *VD) const;
   FileContext &FC;
 };
 

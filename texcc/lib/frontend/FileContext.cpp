@@ -83,6 +83,9 @@ DiagnosticBuilder FileContext::report(SourceLocation Loc, Diag Kind) {
       Id = DE.getCustomDiagID(E, "texture '%0' is also defined in '%1'; a texture name must "
                                  "be defined by one source only");
       break;
+    case Diag::InternalRewrite:
+      Id = DE.getCustomDiagID(E, "texcc cannot rewrite this file: %0");
+      break;
     }
   }
   return DE.Report(Loc, Id);

@@ -32,6 +32,7 @@ enum class Diag {
   UndefinedCallee,    // %0 function, %1 file
   MacroSplitCall,     // %0 function
   DuplicateTexture,   // %0 texture, %1 other file
+  InternalRewrite,    // %0 why the edits could not be applied
 };
 
 struct CallSite {

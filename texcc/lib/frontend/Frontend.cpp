@@ -36,30 +36,81 @@ struct SourceJob {
   bool Done = false;
 };
 
-/// Records the macros the user's file defines, so that render() can #undef them.
-class MacroRecorder : public PPCallbacks {
+/// Whether Loc lies in a file the user wrote (the source or one of its own headers).
+bool isUserFile(const SourceManager &SM, SourceLocation Loc) {
+  Loc = SM.getExpansionLoc(Loc);
+  return Loc.isValid() && !SM.isInSystemHeader(Loc) && SM.getFileEntryForID(SM.getFileID(Loc));
+}
+
+/// A user #include of a user header: the directive's text range, and the file it entered
+/// (invalid when the preprocessor skipped it, e.g. for an include guard).
+struct IncludeSite {
+  FileID Includer;
+  unsigned HashOffset = 0, EndOffset = 0, Line = 0;
+  FileID Entered;
+};
+
+/// Records the macros the user's files define (render() #undef's them) and the user headers
+/// they include (spliced into the rendered text, so the kernel needs no include path).
+class PreprocessorRecorder : public PPCallbacks {
 public:
-  MacroRecorder(const SourceManager &SM, std::vector<std::string> &Names) : SM(SM), Names(Names) {}
+  PreprocessorRecorder(const SourceManager &SM, std::vector<std::string> &Macros,
+                       std::vector<IncludeSite> &Includes)
+      : SM(SM), Macros(Macros), Includes(Includes) {}
+
   void MacroDefined(const Token &Name, const MacroDirective *) override {
-    if (SM.getFileID(SM.getExpansionLoc(Name.getLocation())) != SM.getMainFileID())
+    if (!isUserFile(SM, Name.getLocation()))
       return;
     std::string N = Name.getIdentifierInfo()->getName().str();
-    if (std::find(Names.begin(), Names.end(), N) == Names.end())
-      Names.push_back(N);
+    if (std::find(Macros.begin(), Macros.end(), N) == Macros.end())
+      Macros.push_back(N);
+  }
+
+  void InclusionDirective(SourceLocation HashLoc, const Token &, StringRef, bool,
+                          CharSourceRange FilenameRange, Optional<FileEntryRef> File, StringRef,
+                          StringRef, const Module *, SrcMgr::CharacteristicKind Kind) override {
+    Pending = false;
+    if (!File || Kind != SrcMgr::C_User || !isUserFile(SM, HashLoc) || HashLoc.isMacroID())
+      return;
+    IncludeSite Site;
+    Site.Includer = SM.getFileID(HashLoc);
+    Site.HashOffset = SM.getFileOffset(HashLoc);
+    StringRef Buffer = SM.getBufferData(Site.Includer);
+    size_t End = Buffer.find('\n', SM.getFileOffset(FilenameRange.getEnd()));
+    Site.EndOffset = End == StringRef::npos ? Buffer.size() : End;
+    Site.Line = SM.getSpellingLineNumber(HashLoc);
+    Includes.push_back(Site);
+    Pending = true;
+  }
+
+  void FileChanged(SourceLocation Loc, FileChangeReason Reason, SrcMgr::CharacteristicKind,
+                   FileID) override {
+    if (Reason != EnterFile || !Pending)
+      return;
+    Pending = false;
+    Includes.back().Entered = SM.getFileID(Loc);
+  }
+
+  void FileSkipped(const FileEntryRef &, const Token &, SrcMgr::CharacteristicKind) override {
+    Pending = false;
   }
 
 private:
   const SourceManager &SM;
-  std::vector<std::string> &Names;
+  std::vector<std::string> &Macros;
+  std::vector<IncludeSite> &Includes;
+  bool Pending = false;
 };
 
 class TexccConsumer : public ASTConsumer {
 public:
   explicit TexccConsumer(SourceJob &Job) : Job(Job) {}
   void HandleTranslationUnit(ASTContext &Ctx) override;
+  std::vector<IncludeSite> Includes;
 
 private:
   void buildOutput(FileContext &FC);
+  llvm::Expected<tooling::Replacements> replacementsWithIncludes(FileContext &FC, FileID File);
   SourceJob &Job;
 };
 
@@ -82,19 +133,62 @@ void TexccConsumer::HandleTranslationUnit(ASTContext &Ctx) {
   buildOutput(FC);
 }
 
+static std::string lineDirective(unsigned Line, StringRef Path) {
+  std::string Out = "#line " + std::to_string(Line) + " \"";
+  for (char C : Path) {
+    if (C == '"' || C == '\\')
+      Out += '\\';
+    Out += C;
+  }
+  return Out + "\"";
+}
+
+/// The edits of File plus, for each user header it includes, the header's own rewritten text
+/// in place of the #include line, framed by #line directives.
+llvm::Expected<tooling::Replacements>
+TexccConsumer::replacementsWithIncludes(FileContext &FC, FileID File) {
+  auto Repl = FC.Edits.replacementsFor(File);
+  if (!Repl)
+    return Repl.takeError();
+  const SourceManager &SM = FC.SM;
+  StringRef Path = SM.getFileEntryForID(File)->getName();
+  for (const IncludeSite &Site : Includes) {
+    if (Site.Includer != File)
+      continue;
+    std::string Splice;
+    if (Site.Entered.isValid() && SM.getFileEntryForID(Site.Entered)) {
+      auto Inner = replacementsWithIncludes(FC, Site.Entered);
+      if (!Inner)
+        return Inner.takeError();
+      auto Text = tooling::applyAllReplacements(SM.getBufferData(Site.Entered), *Inner);
+      if (!Text)
+        return Text.takeError();
+      if (!Text->empty() && Text->back() != '\n')
+        *Text += '\n';
+      Splice = lineDirective(1, SM.getFileEntryForID(Site.Entered)->getName()) + "\n" + *Text +
+               lineDirective(Site.Line + 1, File == SM.getMainFileID() ? FC.Path : Path);
+    }
+    if (llvm::Error E = Repl->add(tooling::Replacement(
+            Path, Site.HashOffset, Site.EndOffset - Site.HashOffset, Splice)))
+      return std::move(E);
+  }
+  return Repl;
+}
+
 void TexccConsumer::buildOutput(FileContext &FC) {
   const SourceManager &SM = FC.SM;
   FileID Main = SM.getMainFileID();
-  auto Repl = FC.Edits.replacementsFor(Main);
+  auto Repl = replacementsWithIncludes(FC, Main);
   if (!Repl) {
-    FC.report(SM.getLocForStartOfFile(Main), Diag::MacroSplitCall)
+    FC.report(SM.getLocForStartOfFile(Main), Diag::InternalRewrite)
         << llvm::toString(Repl.takeError());
     return;
   }
   StringRef Code = SM.getBufferData(Main);
   auto Text = tooling::applyAllReplacements(Code, *Repl);
   if (!Text) {
-    llvm::consumeError(Text.takeError());
+    FC.report(SM.getLocForStartOfFile(Main), Diag::InternalRewrite)
+        << llvm::toString(Text.takeError());
     return;
   }
   TranslatedSource &Out = Job.Out;
@@ -130,9 +224,10 @@ protected:
     // mean, so say nothing.
     CI.getDiagnostics().setSeverity(diag::warn_double_const_requires_fp64,
                                     diag::Severity::Ignored, SourceLocation());
-    CI.getPreprocessor().addPPCallbacks(
-        std::make_unique<MacroRecorder>(CI.getSourceManager(), Job.Out.DefinedMacros));
-    return std::make_unique<TexccConsumer>(Job);
+    auto Consumer = std::make_unique<TexccConsumer>(Job);
+    CI.getPreprocessor().addPPCallbacks(std::make_unique<PreprocessorRecorder>(
+        CI.getSourceManager(), Job.Out.DefinedMacros, Consumer->Includes));
+    return Consumer;
   }
 
 private:

@@ -133,7 +133,7 @@ void SignatureCollector::finish(const std::set<std::string> &TextureNames,
     for (const ParmVarDecl *P : FD->parameters()) {
       auto T = paramType(P->getType());
       if (!T) {
-        FC.report(P->getTypeSpecStartLoc(), Diag::BadParamType)
+        FC.report(P->getBeginLoc(), Diag::BadParamType)
             << P->getName() << Name
             << writtenType({P->getBeginLoc(), P->getTypeSourceInfo()->getTypeLoc().getEndLoc()},
                            P->getType());

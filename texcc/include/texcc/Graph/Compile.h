@@ -58,11 +58,17 @@ struct CompiledNode {
   uint32_t RecordOffset = 0;       // byte offset of the argument record in args.bin
   uint32_t RecordSize = 0;
   SourceLoc Loc;
+  /// Further copies of the record, for materials whose stack slots for this node's node
+  /// arguments differ from the first material's (the source words differ; the parameter
+  /// blocks are identical). Instruction::RecordOffset says which one an instruction uses.
+  std::vector<uint32_t> RecordCopies;
 };
 
 struct Instruction {
   unsigned Node = 0;          // index into CompiledGraph::Nodes
-  unsigned ResultSlot = 0;    // value-stack slot that receives the result
+  unsigned ResultSlot = 0;    // value-stack slot that receives the result; may be a slot the
+                              // instruction's own arguments read (they are read first)
+  uint32_t RecordOffset = 0;  // the argument record it uses (the node's, or one of its copies)
 };
 
 /// A BSDF input after compilation: a constant, or a texture output of the material.
@@ -117,6 +123,11 @@ struct CompiledGraph {
   /// The index of the node with this id (also a merged-away id), or -1.
   int findNode(const std::string &Id) const;
 };
+
+/// Only the validation of compileGraph(): true when there is no error (warnings may be
+/// reported).
+bool validateGraph(const Graph &G, const SignatureMap &Sigs, const CompileOptions &Opts,
+                   DiagnosticSink &Diags);
 
 /// Validates against the signatures (unknown function or argument, missing argument, type
 /// mismatch, cycle, dangling reference, unknown image/attribute; unused nodes warn), then runs

@@ -31,6 +31,7 @@ struct ArgValue {
   std::string Ref;                          // NodeRef / AttrRef / ImageRef target
   SourceLoc Loc;                            // where the value starts
   std::string JsonPath;                     // e.g. "/nodes/1/args/stops"
+  SourceLoc KeyLoc;                         // where its key ("stops") starts
 };
 
 struct Node {
@@ -39,6 +40,8 @@ struct Node {
   std::vector<std::pair<std::string, ArgValue>> Args;  // in file order
   SourceLoc Loc;
   std::string JsonPath;                     // "/nodes/3"
+  SourceLoc IdLoc;                          // the "id" value
+  SourceLoc FnLoc;                          // the "fn" value
 };
 
 /// A BSDF tree node: "diffuse" {color}, "glossy" {color, roughness}, "mirror" {color},
@@ -54,7 +57,7 @@ struct Bsdf {
 struct Material {
   std::string Name;
   Bsdf Root;
-  SourceLoc Loc;
+  SourceLoc Loc;                             // the material's key in "materials"
 };
 
 struct Graph {
@@ -65,7 +68,19 @@ struct Graph {
   std::vector<Material> Materials;           // file order
 
   const Node *findNode(const std::string &Id) const;
+  Node *findNode(const std::string &Id);
 };
+
+/// The inputs each BSDF type takes, in canonical order ("blend": mask, a, b). Empty for an
+/// unknown type.
+const std::vector<std::string> &bsdfInputs(const std::string &Type);
+/// Every BSDF type: diffuse, glossy, mirror, emission, blend.
+const std::vector<std::string> &bsdfTypes();
+
+/// Parses one argument value written as JSON text ("0.5", "[1,0,0]", "[[0,1],[1,2]]",
+/// "{\"node\": \"n\"}"), as the live-edit API receives it. Reports errors against File.
+std::optional<ArgValue> parseArgValue(const std::string &File, const std::string &Text,
+                                      DiagnosticSink &Diags);
 
 /// Parses graph.json text. Reports malformed JSON (with line:col), wrong value kinds, unknown
 /// keys, duplicate ids, unknown BSDF types and inputs. Returns std::nullopt on any error.

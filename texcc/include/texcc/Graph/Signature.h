@@ -4,6 +4,7 @@
 // What the graph library needs to know of a user texture function. The front end fills these
 // from the user's code; the runtime reads them back from layout.json for live edits.
 
+#include "texcc/Graph/Diagnostics.h"
 #include "texcc/Graph/Types.h"
 
 #include <map>
@@ -35,6 +36,12 @@ const std::vector<std::pair<std::string, BaseType>> &attributeTable();
 int attributeId(const std::string &Name);
 /// The settings of DESIGN.md: name and type.
 const std::vector<std::pair<std::string, BaseType>> &settingTable();
+
+/// Reads a signatures file: a JSON list of {name, renamed, file, return, params: [{name,
+/// type}], attributes, settings}, types spelled as spelling() writes them (texcc-graph's
+/// --signatures, and tests). Errors go to Diags with line:col; false on any.
+bool readSignaturesJson(const std::string &Path, const std::string &Text, SignatureMap &Sigs,
+                        DiagnosticSink &Diags);
 
 } // namespace texcc::graph
 

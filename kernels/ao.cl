@@ -1,0 +1,44 @@
+/* ao.cl: ambient occlusion as two kernels. ao_trace runs numActive * aoSamples work-items in one
+ * launch (work-item k traces AO ray k % aoSamples of hit k / aoSamples: cosine-weighted around
+ * the shading normal, any-hit, up to aoDistance); ao_reduce averages each hit's rays into
+ * TexccHitAttrs.uvAO.z (1 = unoccluded) and counts the AO rays traced. */
+#include "rt_bvh.h"
+#include "rt_surface.h"
+
+__kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tris,
+                       __global const RtTriAttr *triAttrs, __global const RtPath *paths,
+                       __global const int *active, int numActive, __global const RtHit *hits,
+                       int aoSamples, float aoDistance, float eps, uint seed,
+                       __global uchar *occluded) {
+  int k = get_global_id(0);
+  if (k >= numActive * aoSamples)
+    return;
+  int i = k / aoSamples;
+  int j = k % aoSamples;
+  RtHit h = hits[i];
+  if (h.tri < 0) {
+    occluded[k] = 0;
+    return;
+  }
+  __global const RtPath *p = &paths[active[i]];
+  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
+  uint rng = rt_seed(p->rng, (uint)j, seed ^ 0xA0A0A0A0u);
+  float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
+  float3 dir = rt_to_world(rt_sample_cosine(u1, u2), s.ns);
+  float3 o = rt_offset(s, dir, eps);
+  RtHit ah = rt_trace(nodes, tris, o, dir, 0.0f, aoDistance, 1);
+  occluded[k] = ah.tri >= 0 ? 1 : 0;
+}
+
+__kernel void ao_reduce(__global const uchar *occluded, __global const RtHit *hits,
+                        int numActive, int aoSamples, __global TexccHitAttrs *attrs,
+                        __global uint *counters) {
+  int i = get_global_id(0);
+  if (i >= numActive || hits[i].tri < 0)
+    return;
+  atomic_add(&counters[RT_COUNT_AO_RAYS], (uint)aoSamples);
+  int n = 0;
+  for (int j = 0; j < aoSamples; ++j)
+    n += occluded[i * aoSamples + j];
+  attrs[i].uvAO.z = 1.0f - (float)n / (float)aoSamples;
+}

@@ -1,0 +1,90 @@
+/* rt_bsdf.h: the fixed BSDFs (diffuse, GGX glossy, mirror) in world space around the shading
+ * normal n. eval returns f (without the cosine) and the solid-angle pdf of sampling wi;
+ * sample returns wi and the weight f * cos / pdf. OpenCL C 1.2. */
+#ifndef RT_BSDF_H
+#define RT_BSDF_H
+
+#include "rt_sampling.h"
+#include "rt_types.h"
+
+/* roughness is perceptual: alpha = roughness^2, kept away from 0 (use `mirror` for a delta). */
+inline float rt_ggx_alpha(float roughness) {
+  float r = clamp(roughness, 0.0f, 1.0f);
+  return fmax(r * r, 1e-3f);
+}
+
+inline float rt_ggx_d(float cosH, float a2) {
+  float c2 = cosH * cosH;
+  float den = c2 * (a2 - 1.0f) + 1.0f;
+  return a2 / (RT_PI * den * den);
+}
+
+inline float rt_ggx_g1(float cosV, float a2) {
+  return 2.0f * cosV / (cosV + sqrt(a2 + (1.0f - a2) * cosV * cosV));
+}
+
+inline float3 rt_schlick(float3 f0, float cosD) {
+  float m = 1.0f - clamp(cosD, 0.0f, 1.0f);
+  float m5 = m * m * m * m * m;
+  return f0 + (1.0f - f0) * m5;
+}
+
+/* f and pdf of a non-delta leaf (diffuse or glossy). */
+inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float3 n, float3 wo,
+                           float3 wi, float *pdf) {
+  float cosI = dot(wi, n), cosO = dot(wo, n);
+  *pdf = 0.0f;
+  if (cosI <= 0.0f || cosO <= 0.0f)
+    return (float3)(0.0f);
+  if (type == RT_BSDF_DIFFUSE) {
+    *pdf = cosI * RT_INV_PI;
+    return color * RT_INV_PI;
+  }
+  if (type == RT_BSDF_GLOSSY) {
+    float a2 = rt_ggx_alpha(roughness);
+    a2 *= a2;
+    float3 h = normalize(wi + wo);
+    float cosH = dot(h, n), cosD = dot(wi, h);
+    if (cosH <= 0.0f || cosD <= 0.0f)
+      return (float3)(0.0f);
+    float d = rt_ggx_d(cosH, a2);
+    *pdf = d * cosH / (4.0f * cosD);
+    float g = rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2);
+    return rt_schlick(color, cosD) * (d * g / (4.0f * cosI * cosO));
+  }
+  return (float3)(0.0f);
+}
+
+/* Samples wi for a leaf; returns the weight f*cos/pdf (0 when the sample is invalid). */
+inline float3 rt_bsdf_sample(int type, float3 color, float roughness, float3 n, float3 wo,
+                             float u1, float u2, float3 *wi, float *pdf, int *delta) {
+  *delta = 0;
+  if (type == RT_BSDF_MIRROR) {
+    *delta = 1;
+    *pdf = 1.0f;
+    *wi = 2.0f * dot(wo, n) * n - wo;
+    return dot(*wi, n) > 0.0f ? color : (float3)(0.0f);
+  }
+  if (type == RT_BSDF_DIFFUSE) {
+    *wi = rt_to_world(rt_sample_cosine(u1, u2), n);
+    *pdf = dot(*wi, n) * RT_INV_PI;
+    return *pdf > 0.0f ? color : (float3)(0.0f);
+  }
+  if (type == RT_BSDF_GLOSSY) {
+    float a = rt_ggx_alpha(roughness);
+    float a2 = a * a;
+    float cos2 = (1.0f - u1) / (1.0f + u1 * (a2 - 1.0f));
+    float cosT = sqrt(fmax(cos2, 0.0f)), sinT = sqrt(fmax(0.0f, 1.0f - cos2));
+    float phi = 2.0f * RT_PI * u2;
+    float3 h = rt_to_world((float3)(sinT * cos(phi), sinT * sin(phi), cosT), n);
+    *wi = 2.0f * dot(wo, h) * h - wo;
+    float3 f = rt_bsdf_eval(type, color, roughness, n, wo, *wi, pdf);
+    if (*pdf <= 0.0f)
+      return (float3)(0.0f);
+    return f * dot(*wi, n) / *pdf;
+  }
+  *pdf = 0.0f;
+  return (float3)(0.0f);
+}
+
+#endif

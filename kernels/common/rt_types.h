@@ -1,0 +1,165 @@
+/* rt_types.h: the structs shared by texrender's host code (C++) and its fixed OpenCL kernels.
+ * Every struct is built from 16-byte vectors and 4-byte scalars in groups of four, so that the
+ * host and device layouts agree without packing pragmas. See docs/runtime.md. */
+#ifndef RT_TYPES_H
+#define RT_TYPES_H
+
+#include "texcc_abi.h"
+
+#ifdef __OPENCL_VERSION__
+#define RT_F4 float4
+#define RT_UINT uint
+#else
+#define RT_F4 cl_float4
+#define RT_UINT cl_uint
+#endif
+
+/* BSDF node types (a material is a small tree of these). */
+#define RT_BSDF_DIFFUSE 0
+#define RT_BSDF_GLOSSY 1
+#define RT_BSDF_MIRROR 2
+#define RT_BSDF_EMISSION 3
+#define RT_BSDF_BLEND 4
+
+/* Light types. */
+#define RT_LIGHT_TRIANGLE 0
+#define RT_LIGHT_SUN 1
+#define RT_LIGHT_SKY 2
+
+/* Path flags. */
+#define RT_PATH_ALIVE 1
+#define RT_PATH_SPECULAR 2 /* the last bounce was a delta lobe (or the camera): MIS weight 1 */
+
+/* The traversal stack depth; the host builder keeps the BVH shallower than this. */
+#define RT_BVH_STACK 64
+
+/* Counters in the device statistics buffer. */
+#define RT_COUNT_SHADOW_RAYS 0
+#define RT_COUNT_AO_RAYS 1
+#define RT_COUNT_SLOTS 4
+
+/* A flattened BVH node: an inner node's children are at leftFirst and leftFirst+1; a leaf
+ * (count > 0) holds triangles [leftFirst, leftFirst+count) of the reordered triangle array. */
+typedef struct RtBvhNode {
+  float bmin[3];
+  int leftFirst;
+  float bmax[3];
+  int count;
+} RtBvhNode;
+
+/* A triangle for intersection (Moeller-Trumbore): v0 and the two edges, in BVH order (the
+ * same order as RtTriAttr). */
+typedef struct RtTri {
+  RT_F4 v0;
+  RT_F4 e1;
+  RT_F4 e2;
+} RtTri;
+
+/* Per-triangle shading data, in the same (BVH) order as RtTri. */
+typedef struct RtTriAttr {
+  RT_F4 n0, n1, n2;    /* shading normals (world space); w of n0: 1 when the mesh had normals */
+  RT_F4 uv01;          /* xy = uv of v0, zw = uv of v1 */
+  RT_F4 uv2;           /* xy = uv of v2 */
+  int mesh;            /* index into the mesh table */
+  int light;           /* index into the light table, or -1 */
+  int pad0;
+  int pad1;
+} RtTriAttr;
+
+/* A mesh instance: its material (layout.json index), emission, and world-to-object matrix. */
+typedef struct RtMesh {
+  RT_F4 worldToObject[3]; /* rows of a 3x4 affine matrix */
+  RT_F4 emission;         /* xyz: radiance of its front side (scene.json "emission") */
+  int material;
+  int pad0;
+  int pad1;
+  int pad2;
+} RtMesh;
+
+/* An input of a BSDF node: a constant, or texture output `output` of the material. */
+typedef struct RtBsdfInput {
+  RT_F4 value;
+  int output;     /* -1: constant */
+  int components; /* of the texture output: 1 (a float, broadcast to rgb) .. 4 */
+  int pad1;
+  int pad2;
+} RtBsdfInput;
+
+/* One node of a material's BSDF tree. in[0]: color (blend: mask); in[1]: roughness (glossy)
+ * or strength (emission). Blend children are node indices a and b. */
+typedef struct RtBsdfNode {
+  int type;
+  int a;
+  int b;
+  int pad;
+  RtBsdfInput in[2];
+} RtBsdfNode;
+
+typedef struct RtMaterial {
+  int root;       /* index of its root RtBsdfNode */
+  int numOutputs; /* texture outputs; 0: the texture kernel does nothing for it */
+  int pad0;
+  int pad1;
+} RtMaterial;
+
+/* A light for next-event estimation; chosen with probability `select` (the CDF is a separate
+ * float array). Triangle: tri = BVH-order triangle index. Sun: dir.xyz towards the sun,
+ * dir.w = cos(angular radius). */
+typedef struct RtLight {
+  int type;
+  int tri;
+  float select;
+  float area;
+  RT_F4 radiance;
+  RT_F4 dir;
+} RtLight;
+
+/* The pinhole camera: rays through pixel (x, y) go along forward + (2u-1)*right - (2v-1)*up,
+ * with right and up already scaled by tan(fov/2) and the aspect ratio. */
+typedef struct RtCamera {
+  RT_F4 position;
+  RT_F4 forward;
+  RT_F4 right;
+  RT_F4 up;
+} RtCamera;
+
+/* One path of the wavefront. dir.w: the solid-angle pdf of the BSDF sample that produced the
+ * ray (for MIS); origin.w: unused. */
+typedef struct RtPath {
+  RT_F4 origin;
+  RT_F4 dir;
+  RT_F4 throughput;
+  RT_F4 radiance;
+  RT_UINT pixel;
+  RT_UINT rng;
+  int depth; /* segments traced so far (the camera ray is segment 1) */
+  int flags;
+} RtPath;
+
+typedef struct RtHit {
+  float t;
+  int tri; /* -1: miss */
+  float u;
+  float v;
+} RtHit;
+
+/* A shadow ray with the radiance it carries when unoccluded (contrib.w > 0: valid). */
+typedef struct RtShadowRay {
+  RT_F4 origin;
+  RT_F4 dir; /* w = tmax */
+  RT_F4 contrib;
+} RtShadowRay;
+
+/* Render parameters of the shading kernel. */
+typedef struct RtShadeParams {
+  int maxDepth; /* Mitsuba's max_depth; -1 = unlimited */
+  int rrDepth;  /* Russian roulette from this depth on */
+  int numLights;
+  int skyLight; /* index of the sky in the light table, or -1 */
+  int sunLight; /* index of the sun, or -1 */
+  float epsilon; /* relative ray-origin offset */
+  float pad1;
+  float pad2;
+} RtShadeParams;
+
+#endif

@@ -1,0 +1,64 @@
+/* hit_attributes.cl: fills TexccHitAttrs for each active hit, computing only the attributes in
+ * attrMask (bit k = TEXCC_ATTR_k, from layout.json "attributes"); the others stay zero. Also
+ * sets hitMaterial (the texture kernel's material index, -1 for a miss or a material without
+ * texture outputs). AO (bit TEXCC_ATTR_AO) is filled later by ao_reduce. WorldPos.w is 1 on a
+ * hit; ViewDir is also set for a miss (the tests recover the ray from it). */
+#include "rt_surface.h"
+
+__kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
+                             __global const RtMesh *meshes, __global const RtMaterial *materials,
+                             __global const RtPath *paths, __global const int *active,
+                             int numActive, __global const RtHit *hits, uint attrMask,
+                             __global TexccHitAttrs *out, __global int *hitMaterial) {
+  int i = get_global_id(0);
+  if (i >= numActive)
+    return;
+  RtHit h = hits[i];
+  TexccHitAttrs a;
+  a.worldPos = a.objectPos = a.normal = a.geomNormal = (float4)(0.0f);
+  a.tangent = a.viewDir = a.uvAO = (float4)(0.0f);
+  a.uvAO.z = 1.0f;
+  __global const RtPath *p = &paths[active[i]];
+  float3 d = p->dir.xyz;
+  if (attrMask & (1u << TEXCC_ATTR_VIEWDIR))
+    a.viewDir = (float4)(-d, 0.0f);
+  if (h.tri < 0) {
+    out[i] = a;
+    hitMaterial[i] = -1;
+    return;
+  }
+  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, d, h);
+  RtMesh mesh = meshes[triAttrs[h.tri].mesh];
+  RtMaterial m = materials[mesh.material];
+  hitMaterial[i] = m.numOutputs > 0 ? mesh.material : -1;
+  if (attrMask & (1u << TEXCC_ATTR_WORLDPOS))
+    a.worldPos = (float4)(s.p, 1.0f);
+  if (attrMask & (1u << TEXCC_ATTR_OBJECTPOS)) {
+    float4 wp = (float4)(s.p, 1.0f);
+    a.objectPos = (float4)(dot(mesh.worldToObject[0], wp), dot(mesh.worldToObject[1], wp),
+                           dot(mesh.worldToObject[2], wp), 1.0f);
+  }
+  if (attrMask & (1u << TEXCC_ATTR_NORMAL))
+    a.normal = (float4)(s.ns, 0.0f);
+  if (attrMask & (1u << TEXCC_ATTR_GEOMNORMAL))
+    a.geomNormal = (float4)(s.ng, 0.0f);
+  if (attrMask & (1u << TEXCC_ATTR_TANGENT)) {
+    /* dP/du from the triangle's uv parametrisation, projected onto the shading plane; any
+     * orthogonal vector when the uvs are degenerate. */
+    __global const RtTriAttr *ta = &triAttrs[h.tri];
+    float2 duv1 = ta->uv01.zw - ta->uv01.xy, duv2 = ta->uv2.xy - ta->uv01.xy;
+    float det = duv1.x * duv2.y - duv1.y * duv2.x;
+    float3 t = (float3)(0.0f);
+    if (fabs(det) > 1e-12f)
+      t = (duv2.y * tris[h.tri].e1.xyz - duv1.y * tris[h.tri].e2.xyz) / det;
+    t -= dot(t, s.ns) * s.ns;
+    if (length(t) < 1e-12f) {
+      float3 b;
+      rt_frame(s.ns, &t, &b);
+    }
+    a.tangent = (float4)(normalize(t), 0.0f);
+  }
+  if (attrMask & (1u << TEXCC_ATTR_TEXCOORD0))
+    a.uvAO.xy = s.uv;
+  out[i] = a;
+}

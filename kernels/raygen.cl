@@ -1,0 +1,33 @@
+/* raygen.cl: one camera ray per path. Path i of a pass samples pixel i / sppPerPass with the
+ * sample index passStart + i % sppPerPass; the pixel position is uniform in the pixel (box
+ * filter, as Mitsuba's `box` rfilter). */
+#include "rt_sampling.h"
+#include "rt_types.h"
+
+__kernel void raygen(__global RtPath *paths, __global int *active, __global const RtCamera *camera,
+                     int width, int height, int sppPerPass, int passStart, uint seed,
+                     int numPaths) {
+  int i = get_global_id(0);
+  if (i >= numPaths)
+    return;
+  int pixel = i / sppPerPass;
+  int sample = passStart + i % sppPerPass;
+  uint rng = rt_seed((uint)pixel, (uint)sample, seed);
+  float px = (float)(pixel % width) + rt_rand(&rng);
+  float py = (float)(pixel / width) + rt_rand(&rng);
+  float sx = 2.0f * px / (float)width - 1.0f;
+  float sy = 1.0f - 2.0f * py / (float)height;
+  RtCamera cam = *camera;
+  float3 d = normalize(cam.forward.xyz + sx * cam.right.xyz + sy * cam.up.xyz);
+  RtPath p;
+  p.origin = (float4)(cam.position.xyz, 0.0f);
+  p.dir = (float4)(d, 0.0f);
+  p.throughput = (float4)(1.0f, 1.0f, 1.0f, 0.0f);
+  p.radiance = (float4)(0.0f);
+  p.pixel = (uint)pixel;
+  p.rng = rng;
+  p.depth = 1;
+  p.flags = RT_PATH_ALIVE | RT_PATH_SPECULAR;
+  paths[i] = p;
+  active[i] = i;
+}

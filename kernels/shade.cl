@@ -1,0 +1,190 @@
+/* shade.cl: one path vertex per active hit. Adds emission (area lights with MIS against light
+ * sampling; sky and sun on a miss), picks a BSDF leaf of the material's tree (a blend chooses
+ * `b` with probability mask), makes one next-event-estimation shadow ray (light chosen by the
+ * light CDF; MIS, power heuristic), samples the next direction, applies Russian roulette and
+ * writes the next ray. Path length follows Mitsuba's max_depth. */
+#include "rt_bsdf.h"
+#include "rt_surface.h"
+
+inline float4 rt_input(RtBsdfInput in, __global const float4 *outputs, int base) {
+  if (in.output < 0)
+    return in.value;
+  float4 v = outputs[base + in.output];
+  return in.components == 1 ? (float4)(v.x) : v;
+}
+
+inline int rt_pick_light(__global const float *cdf, int n, float u) {
+  int lo = 0, hi = n - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (u < cdf[mid])
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  return lo;
+}
+
+/* Radiance arriving from the environment (sky and sun) along d, MIS-weighted against the pdf
+ * with which next-event estimation would have chosen d. */
+inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, float3 d,
+                             float bsdfPdf, int specular) {
+  float3 le = (float3)(0.0f);
+  if (prm.skyLight >= 0) {
+    RtLight l = lights[prm.skyLight];
+    float lp = l.select / (4.0f * RT_PI);
+    le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp));
+  }
+  if (prm.sunLight >= 0) {
+    RtLight l = lights[prm.sunLight];
+    if (dot(d, l.dir.xyz) >= l.dir.w) {
+      float lp = l.select / (2.0f * RT_PI * (1.0f - l.dir.w));
+      le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp));
+    }
+  }
+  return le;
+}
+
+/* Samples a light from the surface point; returns the direction, the distance limit, the
+ * emitted radiance and the solid-angle pdf (0: no contribution). */
+inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
+                             __global const RtTri *tris, RtShadeParams prm, float3 p,
+                             uint *rng, float3 *wi, float *tmax, float3 *le) {
+  int li = rt_pick_light(cdf, prm.numLights, rt_rand(rng));
+  RtLight l = lights[li];
+  float u1 = rt_rand(rng), u2 = rt_rand(rng);
+  *le = l.radiance.xyz;
+  if (l.type == RT_LIGHT_TRIANGLE) {
+    __global const RtTri *t = &tris[l.tri];
+    float2 b = rt_sample_triangle(u1, u2);
+    float3 q = t->v0.xyz + b.x * t->e1.xyz + b.y * t->e2.xyz;
+    float3 nl = normalize(cross(t->e1.xyz, t->e2.xyz));
+    float3 v = q - p;
+    float dist2 = dot(v, v);
+    float dist = sqrt(dist2);
+    *wi = v / dist;
+    float cosL = -dot(nl, *wi);
+    if (cosL <= 0.0f || dist <= 0.0f)
+      return 0.0f;
+    *tmax = dist * (1.0f - 1e-3f);
+    return l.select * dist2 / (l.area * cosL);
+  }
+  *tmax = INFINITY;
+  if (l.type == RT_LIGHT_SUN) {
+    *wi = rt_to_world(rt_sample_cone(u1, u2, l.dir.w), l.dir.xyz);
+    return l.select / (2.0f * RT_PI * (1.0f - l.dir.w));
+  }
+  *wi = rt_sample_sphere(u1, u2);
+  return l.select / (4.0f * RT_PI);
+}
+
+__kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
+                    __global const RtMesh *meshes, __global const RtMaterial *materials,
+                    __global const RtBsdfNode *bsdfs, __global const RtLight *lights,
+                    __global const float *lightCdf, __global const RtShadeParams *params,
+                    __global RtPath *paths, __global const int *active, int numActive,
+                    __global const RtHit *hits, __global const float4 *outputs, int maxOutputs,
+                    __global RtShadowRay *shadowRays, __global uint *counters) {
+  int i = get_global_id(0);
+  if (i >= numActive)
+    return;
+  RtShadeParams prm = *params;
+  int pid = active[i];
+  RtPath p = paths[pid];
+  RtHit h = hits[i];
+  float3 d = p.dir.xyz;
+  float bsdfPdf = p.dir.w;
+  int specular = (p.flags & RT_PATH_SPECULAR) != 0;
+  float3 thr = p.throughput.xyz;
+  shadowRays[i].contrib = (float4)(0.0f);
+  p.flags &= ~RT_PATH_ALIVE;
+
+  if (h.tri < 0) {
+    p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, specular);
+    paths[pid] = p;
+    return;
+  }
+  RtSurface s = rt_surface(tris, triAttrs, p.origin.xyz, d, h);
+  RtTriAttr ta = triAttrs[h.tri];
+  RtMesh mesh = meshes[ta.mesh];
+  if (s.front && rt_max3(mesh.emission.xyz) > 0.0f) {
+    float w = 1.0f;
+    if (!specular && ta.light >= 0) {
+      RtLight l = lights[ta.light];
+      float cosL = -dot(s.ng, d);
+      float lp = l.select * h.t * h.t / (l.area * fmax(cosL, 1e-8f));
+      w = rt_mis(bsdfPdf, lp);
+    }
+    p.radiance.xyz += thr * mesh.emission.xyz * w;
+  }
+
+  /* Choose a leaf of the BSDF tree. */
+  uint rng = p.rng;
+  int base = i * maxOutputs;
+  int node = materials[mesh.material].root;
+  for (int guard = 0; guard < 32 && bsdfs[node].type == RT_BSDF_BLEND; ++guard) {
+    float m = clamp(rt_input(bsdfs[node].in[0], outputs, base).x, 0.0f, 1.0f);
+    node = rt_rand(&rng) < m ? bsdfs[node].b : bsdfs[node].a;
+  }
+  RtBsdfNode leaf = bsdfs[node];
+  float3 color = fmax(rt_input(leaf.in[0], outputs, base).xyz, (float3)(0.0f));
+  float param = rt_input(leaf.in[1], outputs, base).x;
+  if (leaf.type == RT_BSDF_EMISSION) {
+    p.radiance.xyz += thr * color * param;
+    p.rng = rng;
+    paths[pid] = p;
+    return;
+  }
+  float3 wo = -d;
+  int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
+
+  /* Next-event estimation. */
+  if (canExtend && prm.numLights > 0 && leaf.type != RT_BSDF_MIRROR) {
+    float3 wi, le;
+    float tmax;
+    float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, &rng, &wi, &tmax, &le);
+    if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
+      float bp;
+      float3 f = rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
+      float cosI = dot(wi, s.ns);
+      float3 c = thr * f * le * (cosI * rt_mis(lp, bp) / lp);
+      if (rt_max3(c) > 0.0f) {
+        RtShadowRay r;
+        r.origin = (float4)(rt_offset(s, wi, prm.epsilon), 0.0f);
+        r.dir = (float4)(wi, tmax);
+        r.contrib = (float4)(c, 1.0f);
+        shadowRays[i] = r;
+        atomic_inc(&counters[RT_COUNT_SHADOW_RAYS]);
+      }
+    }
+  }
+
+  /* The next direction. */
+  if (canExtend) {
+    float3 wi;
+    float pdf;
+    int delta;
+    float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
+    float3 wgt = rt_bsdf_sample(leaf.type, color, param, s.ns, wo, u1, u2, &wi, &pdf, &delta);
+    if (rt_max3(wgt) > 0.0f && dot(wi, s.ng) > 0.0f) {
+      thr *= wgt;
+      int alive = 1;
+      if (p.depth >= prm.rrDepth) {
+        float q = fmin(rt_max3(thr), 0.95f);
+        if (rt_rand(&rng) >= q)
+          alive = 0;
+        else
+          thr /= q;
+      }
+      if (alive) {
+        p.origin = (float4)(rt_offset(s, wi, prm.epsilon), 0.0f);
+        p.dir = (float4)(wi, delta ? -1.0f : pdf);
+        p.throughput = (float4)(thr, 0.0f);
+        p.flags = RT_PATH_ALIVE | (delta ? RT_PATH_SPECULAR : 0);
+        p.depth += 1;
+      }
+    }
+  }
+  p.rng = rng;
+  paths[pid] = p;
+}

@@ -1,0 +1,105 @@
+#ifndef TEXRENDER_CLCONTEXT_H
+#define TEXRENDER_CLCONTEXT_H
+
+// The OpenCL host layer: device selection, an in-order profiling queue, a program cache keyed
+// by source hash + build options + device (program binaries on disk), checked launches whose
+// profiling events are summed per kernel name, and a tally of the memory allocated.
+
+#ifndef CL_HPP_TARGET_OPENCL_VERSION
+#define CL_HPP_TARGET_OPENCL_VERSION 120
+#define CL_HPP_MINIMUM_OPENCL_VERSION 120
+#endif
+#ifndef CL_HPP_ENABLE_EXCEPTIONS
+#define CL_HPP_ENABLE_EXCEPTIONS
+#endif
+#include <CL/opencl.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace texrender {
+
+/// Time and count of one kernel's launches (from CL_PROFILING_COMMAND_START/END).
+struct KernelTiming {
+  unsigned Launches = 0;
+  double Seconds = 0.0;
+  uint64_t WorkItems = 0;
+};
+
+/// Every OpenCL device of every platform, in discovery order ("N: name (platform)").
+std::vector<std::string> listDevices();
+
+class ClContext {
+public:
+  /// Opens device DeviceIndex (the order of listDevices()). CacheDir: where program binaries
+  /// are kept ("" = no disk cache).
+  ClContext(int DeviceIndex, std::string CacheDir);
+
+  /// Builds (or loads from the cache) a program. Name is used in messages (the file);
+  /// KeyExtra joins the cache key (e.g. the text of the headers the source includes). Throws
+  /// Error with the device, the options and the build log on failure.
+  cl::Program buildProgram(const std::string &Name, const std::string &Source,
+                           const std::string &Options, const std::string &KeyExtra = "");
+
+  /// Creates a buffer of Bytes (at least 1) and counts it under Label in the memory tally.
+  cl::Buffer allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags);
+  /// Same, with initial contents copied from Data.
+  cl::Buffer allocateWith(const std::string &Label, const void *Data, size_t Bytes,
+                          cl_mem_flags Flags);
+  void write(const cl::Buffer &B, const void *Data, size_t Bytes, size_t Offset = 0);
+  void read(const cl::Buffer &B, void *Data, size_t Bytes, size_t Offset = 0);
+
+  /// Enqueues K over GlobalSize work-items (rounded up to the work-group multiple) and records
+  /// its profiling event under TimingName. A zero size enqueues nothing.
+  void launch(cl::Kernel &K, size_t GlobalSize, const std::string &TimingName);
+  /// Waits for the queue and adds the profiling times of the pending launches.
+  void finish();
+
+  const std::string &deviceName() const { return DeviceName; }
+  cl::Context &context() { return Ctx; }
+  cl::CommandQueue &queue() { return Queue; }
+
+  unsigned kernelBuilds() const { return Builds; }
+  unsigned cacheHits() const { return CacheHits; }
+  const std::map<std::string, KernelTiming> &timings() const { return Timings; }
+  void resetTimings() { Timings.clear(); }
+  const std::map<std::string, size_t> &memory() const { return Memory; }
+  size_t memoryTotal() const;
+
+private:
+  struct Pending {
+    cl::Event Ev;
+    std::string Name;
+    size_t WorkItems;
+  };
+  std::string cachePath(const std::string &Key) const;
+
+  cl::Device Device;
+  cl::Context Ctx;
+  cl::CommandQueue Queue;
+  std::string DeviceName;
+  std::string DeviceKey;
+  std::string CacheDir;
+  unsigned Builds = 0;
+  unsigned CacheHits = 0;
+  std::vector<Pending> PendingEvents;
+  std::map<std::string, KernelTiming> Timings;
+  std::map<std::string, size_t> Memory;
+};
+
+/// The default program-cache folder: $TEXRENDER_CACHE_DIR, else $XDG_CACHE_HOME/texcc, else
+/// $HOME/.cache/texcc, else "" (no disk cache).
+std::string defaultCacheDir();
+
+/// 64-bit FNV-1a, as 16 hex digits.
+std::string hashHex(const std::string &Data);
+
+/// Runs F and turns a cl::Error into texrender::Error naming the call and the error code.
+std::string clErrorName(cl_int Code);
+
+} // namespace texrender
+
+#endif

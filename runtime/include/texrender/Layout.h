@@ -1,0 +1,69 @@
+#ifndef TEXRENDER_LAYOUT_H
+#define TEXRENDER_LAYOUT_H
+
+// What the runtime reads from texcc's output folder (docs/abi.md): layout.json, args.bin and
+// the generated kernel's source.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace texrender {
+
+/// A BSDF input: a constant or a texture output of the material.
+struct LayoutInput {
+  bool IsOutput = false;
+  int Output = -1;
+  std::vector<float> Constant; // 1..4 values
+};
+
+struct LayoutBsdf {
+  std::string Type; // diffuse | glossy | mirror | emission | blend
+  std::vector<std::pair<std::string, LayoutInput>> Inputs;
+  std::vector<std::pair<std::string, LayoutBsdf>> Children; // blend: a, b
+  const LayoutInput *input(const std::string &Name) const;
+};
+
+struct LayoutMaterial {
+  std::string Name;
+  int Index = 0;
+  std::vector<int> OutputComponents; // per texture output: 1..4
+  LayoutBsdf Bsdf;
+};
+
+struct LayoutImage {
+  std::string Name;
+  std::string Path; // resolved
+};
+
+struct Layout {
+  std::string Dir;        // the texcc output folder
+  std::string Mode;       // interp | inline | wavefront | shape
+  std::string GraphPath;  // graph.json the kernel was made from
+  std::string KernelSource; // resolved path of proctex.cl
+  std::string Entry;
+  std::vector<std::string> WavefrontLaunches; // kernel names, in order
+  unsigned StackSlots = 0;
+  unsigned StackLimit = 32;
+  bool Spill = false;
+  unsigned MaxOutputs = 1;
+  unsigned ScratchFloat4PerHit = 0;
+  std::vector<std::string> Attributes;
+  std::vector<std::string> Settings;
+  std::vector<LayoutImage> Images;
+  std::vector<LayoutMaterial> Materials;
+  std::string Text;              // layout.json as read (for the graph library)
+  std::vector<uint8_t> ArgsBin;  // args.bin
+
+  /// Index of the material called Name, or -1.
+  int findMaterial(const std::string &Name) const;
+  /// "white, red, green" (for messages).
+  std::string materialNames() const;
+};
+
+/// Reads OUTDIR/layout.json and OUTDIR/args.bin. Errors name the file and the JSON path.
+Layout loadLayout(const std::string &OutDir);
+
+} // namespace texrender
+
+#endif

@@ -1,0 +1,110 @@
+#ifndef TEXRENDER_RENDERER_H
+#define TEXRENDER_RENDERER_H
+
+// The wavefront path tracer: separate kernels per stage (kernels/*.cl), launched per bounce
+// over the compacted list of active paths:
+//   raygen -> [closest_hit -> hit_attributes -> ao_trace/ao_reduce -> proctex -> shade ->
+//   shadow -> compact]* -> accumulate
+// hit_attributes, AO and the texture kernel run only when the layout needs them.
+
+#include "texrender/ClContext.h"
+#include "texrender/Layout.h"
+#include "texrender/Scene.h"
+#include "texrender/SceneData.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace texrender {
+
+struct RendererOptions {
+  int Device = 0;
+  std::string CacheDir = defaultCacheDir();
+  std::string KernelDir;        // "" = kernelDirectory()
+  bool Progress = false;        // a progress bar on stderr (after one second)
+  size_t MaxPathsPerPass = 1u << 18;
+};
+
+/// Counts of one frame.
+struct FrameStats {
+  double Seconds = 0;           // wall clock of render()
+  uint64_t PrimaryRays = 0;
+  uint64_t BounceRays = 0;      // closest-hit rays after the first segment
+  uint64_t ShadowRays = 0;
+  uint64_t AoRays = 0;
+  uint64_t AoWorkItemsPerLaunchMax = 0;
+  unsigned Passes = 0;
+  unsigned Bounces = 0;         // bounce iterations summed over passes
+  std::map<std::string, KernelTiming> Kernels;
+};
+
+/// Where the fixed kernels are: $TEXRENDER_KERNELS, else <executable>/../kernels, else
+/// <executable>/kernels.
+std::string kernelDirectory();
+
+/// The hit-attributes mask (bit 1 << TEXCC_ATTR_*) of layout.json "attributes".
+uint32_t attributeMaskOf(const Layout &L);
+
+class Renderer {
+public:
+  Renderer(const Scene &S, const Layout &L, const RendererOptions &Opts);
+
+  /// Renders S.Render (size, spp, depth) and returns linear RGB (3 floats per pixel, row 0
+  /// at the top), averaged over the samples. Variance (optional): the estimated variance of
+  /// each pixel's value, per channel.
+  std::vector<float> render(FrameStats &Stats, std::vector<float> *Variance = nullptr);
+
+  /// Replaces the fake stack and the attributes the textures read (a live edit in
+  /// interp/wavefront/shape mode): an upload, no build.
+  void applyArguments(const std::vector<uint8_t> &ArgsBin, const std::vector<std::string> &Attributes);
+  /// Replaces the texture kernel and its layout (a regenerated proctex.cl): a build unless the
+  /// program cache has it.
+  void setLayout(const Layout &L);
+
+  /// For tests: one jittered camera ray per pixel, the hit attributes of the first hits
+  /// (Mask: bits 1 << TEXCC_ATTR_*), with AO computed when the mask has the AO bit.
+  std::vector<TexccHitAttrs> primaryHitAttributes(uint32_t Mask, FrameStats &Stats);
+
+  ClContext &cl() { return *Cl; }
+  const SceneData &sceneData() const { return Data; }
+  RenderSettings &settings() { return Settings; }
+  uint32_t attributeMask() const { return AttrMask; }
+  bool runsAo() const { return (AttrMask >> TEXCC_ATTR_AO) & 1u; }
+  bool runsTextures() const { return HasTextureWork; }
+
+private:
+  void buildFixedKernels();
+  void uploadScene();
+  void allocateWorkBuffers(size_t MaxPaths);
+  void uploadLayoutData();
+  void buildTextureKernel();
+  int traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes);
+  void runTextures(int NumActive);
+  void setSceneArgs();
+  std::string programOptions() const;
+
+  std::unique_ptr<ClContext> Cl;
+  Scene SceneDesc;
+  Layout Lay;
+  RendererOptions Opts;
+  RenderSettings Settings;
+  SceneData Data;
+  std::string KernelDir;
+  uint32_t AttrMask = 0;
+  bool HasTextureWork = false;
+
+  std::map<std::string, cl::Kernel> K;      // fixed kernels by name
+  std::vector<cl::Kernel> TextureKernels;   // proctex (one, or the wavefront launches + outputs)
+  std::vector<std::string> TextureKernelNames;
+
+  std::map<std::string, cl::Buffer> B;      // device buffers by name
+  size_t Capacity = 0;                      // paths the work buffers hold
+  int CapacityAo = 0;
+};
+
+} // namespace texrender
+
+#endif

@@ -1,0 +1,75 @@
+#ifndef TEXRENDER_SCENE_H
+#define TEXRENDER_SCENE_H
+
+// scene.json (docs/scene.md) and its OBJ meshes, loaded into plain host data. Errors name the
+// file, the JSON path and the reason.
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace texrender {
+
+using Vec3 = std::array<float, 3>;
+using Vec2 = std::array<float, 2>;
+
+/// A triangle mesh as loaded from OBJ: three corners per triangle.
+struct TriangleMesh {
+  std::vector<Vec3> Positions; // 3 per triangle
+  std::vector<Vec3> Normals;   // 3 per triangle, empty when the file had none
+  std::vector<Vec2> UVs;       // 3 per triangle, zeros when the file had none
+  size_t triangleCount() const { return Positions.size() / 3; }
+};
+
+/// Loads an OBJ (or gzip-compressed .obj.gz): triangulated; normals are kept when every
+/// face has them and otherwise generated (area-weighted, per vertex position).
+TriangleMesh loadObj(const std::string &Path);
+
+struct Camera {
+  Vec3 Position{0, 0, 1};
+  Vec3 Target{0, 0, 0};
+  Vec3 Up{0, 1, 0};
+  float FovDegrees = 40.0f;
+  std::string FovAxis = "smaller"; // x | y | smaller
+};
+
+struct Light {
+  std::string Type; // sky | sun
+  Vec3 Radiance{0, 0, 0};
+  Vec3 Direction{0, 1, 0};
+  float AngularRadiusDegrees = 0.27f;
+};
+
+struct MeshInstance {
+  std::string ObjPath;  // resolved
+  std::string Material;
+  Vec3 Emission{0, 0, 0};
+  bool Emissive = false;
+  std::array<float, 16> Transform; // row-major object-to-world
+  std::string JsonPath;            // "/meshes/2" (for messages)
+};
+
+struct RenderSettings {
+  int Width = 256, Height = 256;
+  int Spp = 16;
+  int MaxDepth = 8;
+  int AoSamples = 8;
+  float AoDistance = 0.5f;
+  unsigned Seed = 1;
+};
+
+struct Scene {
+  std::string Path;         // scene.json
+  std::string TexturesDir;  // resolved texcc output folder ("" when none given)
+  Camera Cam;
+  RenderSettings Render;
+  std::vector<Light> Lights;
+  std::vector<MeshInstance> Meshes;
+};
+
+/// Parses scene.json; paths in it become relative to its folder. Does not load the OBJs.
+Scene loadScene(const std::string &Path);
+
+} // namespace texrender
+
+#endif

@@ -1,0 +1,235 @@
+#include "texrender/ClContext.h"
+#include "texrender/Error.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace texrender {
+
+std::string clErrorName(cl_int Code) {
+  switch (Code) {
+  case CL_DEVICE_NOT_FOUND: return "CL_DEVICE_NOT_FOUND";
+  case CL_OUT_OF_RESOURCES: return "CL_OUT_OF_RESOURCES";
+  case CL_OUT_OF_HOST_MEMORY: return "CL_OUT_OF_HOST_MEMORY";
+  case CL_MEM_OBJECT_ALLOCATION_FAILURE: return "CL_MEM_OBJECT_ALLOCATION_FAILURE";
+  case CL_BUILD_PROGRAM_FAILURE: return "CL_BUILD_PROGRAM_FAILURE";
+  case CL_INVALID_VALUE: return "CL_INVALID_VALUE";
+  case CL_INVALID_BINARY: return "CL_INVALID_BINARY";
+  case CL_INVALID_BUILD_OPTIONS: return "CL_INVALID_BUILD_OPTIONS";
+  case CL_INVALID_KERNEL_NAME: return "CL_INVALID_KERNEL_NAME";
+  case CL_INVALID_ARG_INDEX: return "CL_INVALID_ARG_INDEX";
+  case CL_INVALID_ARG_VALUE: return "CL_INVALID_ARG_VALUE";
+  case CL_INVALID_ARG_SIZE: return "CL_INVALID_ARG_SIZE";
+  case CL_INVALID_KERNEL_ARGS: return "CL_INVALID_KERNEL_ARGS";
+  case CL_INVALID_WORK_GROUP_SIZE: return "CL_INVALID_WORK_GROUP_SIZE";
+  case CL_INVALID_BUFFER_SIZE: return "CL_INVALID_BUFFER_SIZE";
+  case CL_INVALID_MEM_OBJECT: return "CL_INVALID_MEM_OBJECT";
+  case CL_PLATFORM_NOT_FOUND_KHR: return "CL_PLATFORM_NOT_FOUND_KHR";
+  default: return "OpenCL error " + std::to_string(Code);
+  }
+}
+
+std::string hashHex(const std::string &Data) {
+  uint64_t H = 1469598103934665603ull;
+  for (unsigned char C : Data) {
+    H ^= C;
+    H *= 1099511628211ull;
+  }
+  char Buf[17];
+  std::snprintf(Buf, sizeof Buf, "%016llx", static_cast<unsigned long long>(H));
+  return Buf;
+}
+
+std::string defaultCacheDir() {
+  if (const char *D = std::getenv("TEXRENDER_CACHE_DIR"))
+    return D;
+  if (const char *X = std::getenv("XDG_CACHE_HOME"); X && *X)
+    return std::string(X) + "/texcc";
+  if (const char *H = std::getenv("HOME"); H && *H)
+    return std::string(H) + "/.cache/texcc";
+  return "";
+}
+
+static std::vector<std::pair<cl::Device, std::string>> allDevices() {
+  std::vector<std::pair<cl::Device, std::string>> Out;
+  std::vector<cl::Platform> Platforms;
+  try {
+    cl::Platform::get(&Platforms);
+  } catch (const cl::Error &) {
+    return Out;
+  }
+  for (auto &P : Platforms) {
+    std::vector<cl::Device> Devs;
+    try {
+      P.getDevices(CL_DEVICE_TYPE_ALL, &Devs);
+    } catch (const cl::Error &) {
+      continue;
+    }
+    for (auto &D : Devs)
+      Out.push_back({D, D.getInfo<CL_DEVICE_NAME>() + " (" + P.getInfo<CL_PLATFORM_NAME>() + ")"});
+  }
+  return Out;
+}
+
+std::vector<std::string> listDevices() {
+  std::vector<std::string> Names;
+  for (auto &D : allDevices())
+    Names.push_back(std::to_string(Names.size()) + ": " + D.second);
+  return Names;
+}
+
+ClContext::ClContext(int DeviceIndex, std::string CacheDirIn) : CacheDir(std::move(CacheDirIn)) {
+  auto Devs = allDevices();
+  if (Devs.empty())
+    throw Error("no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
+  if (DeviceIndex < 0 || DeviceIndex >= static_cast<int>(Devs.size()))
+    throw Error("--device " + std::to_string(DeviceIndex) + ": no such OpenCL device (" +
+                std::to_string(Devs.size()) + " found; use 0.." +
+                std::to_string(Devs.size() - 1) + ")");
+  Device = Devs[DeviceIndex].first;
+  DeviceName = Devs[DeviceIndex].second;
+  try {
+    Ctx = cl::Context(Device);
+    Queue = cl::CommandQueue(Ctx, Device, CL_QUEUE_PROFILING_ENABLE);
+    DeviceKey = DeviceName + "|" + Device.getInfo<CL_DRIVER_VERSION>() + "|" +
+                Device.getInfo<CL_DEVICE_VERSION>();
+  } catch (const cl::Error &E) {
+    throw Error(std::string("cannot open OpenCL device '") + DeviceName + "': " + E.what() +
+                " failed with " + clErrorName(E.err()));
+  }
+}
+
+std::string ClContext::cachePath(const std::string &Key) const {
+  if (CacheDir.empty())
+    return "";
+  return CacheDir + "/programs/" + Key + ".bin";
+}
+
+static std::string buildLog(const cl::Program &P, const cl::Device &D) {
+  try {
+    return P.getBuildInfo<CL_PROGRAM_BUILD_LOG>(D);
+  } catch (const cl::Error &) {
+    return "(no build log)";
+  }
+}
+
+cl::Program ClContext::buildProgram(const std::string &Name, const std::string &Source,
+                                    const std::string &Options, const std::string &KeyExtra) {
+  std::string Key = hashHex(Source + '\0' + Options + '\0' + DeviceKey + '\0' + KeyExtra);
+  std::string Path = cachePath(Key);
+  if (!Path.empty() && fs::exists(Path)) {
+    std::ifstream In(Path, std::ios::binary);
+    std::vector<unsigned char> Bin((std::istreambuf_iterator<char>(In)),
+                                   std::istreambuf_iterator<char>());
+    try {
+      cl::Program::Binaries Bins{Bin};
+      cl::Program P(Ctx, {Device}, Bins);
+      P.build({Device}, Options.c_str());
+      ++CacheHits;
+      return P;
+    } catch (const cl::Error &) {
+      // A stale or foreign binary: fall through to a build from source.
+    }
+  }
+  cl::Program P;
+  try {
+    P = cl::Program(Ctx, Source);
+    ++Builds;
+    P.build({Device}, Options.c_str());
+  } catch (const cl::Error &E) {
+    std::string Log = buildLog(P, Device);
+    throw Error("kernel build failed: " + Name + " on '" + DeviceName + "' with options '" +
+                Options + "' (" + clErrorName(E.err()) + ")\n" + Log);
+  }
+  if (!Path.empty()) {
+    try {
+      auto Bins = P.getInfo<CL_PROGRAM_BINARIES>();
+      if (!Bins.empty() && !Bins[0].empty()) {
+        std::error_code EC;
+        fs::create_directories(fs::path(Path).parent_path(), EC);
+        std::string Tmp = Path + ".tmp" + std::to_string(::getpid());
+        std::ofstream Out(Tmp, std::ios::binary);
+        Out.write(reinterpret_cast<const char *>(Bins[0].data()), Bins[0].size());
+        Out.close();
+        fs::rename(Tmp, Path, EC);
+      }
+    } catch (const cl::Error &) {
+      // The cache is an optimisation: a device without binaries still renders.
+    }
+  }
+  return P;
+}
+
+cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags) {
+  Bytes = Bytes ? Bytes : 16;
+  try {
+    cl::Buffer B(Ctx, Flags, Bytes);
+    Memory[Label] = Bytes;
+    return B;
+  } catch (const cl::Error &E) {
+    throw Error("cannot allocate " + std::to_string(Bytes) + " bytes for " + Label + " on '" +
+                DeviceName + "': " + clErrorName(E.err()));
+  }
+}
+
+cl::Buffer ClContext::allocateWith(const std::string &Label, const void *Data, size_t Bytes,
+                                   cl_mem_flags Flags) {
+  cl::Buffer B = allocate(Label, Bytes, Flags);
+  if (Bytes)
+    write(B, Data, Bytes);
+  return B;
+}
+
+void ClContext::write(const cl::Buffer &B, const void *Data, size_t Bytes, size_t Offset) {
+  if (Bytes)
+    Queue.enqueueWriteBuffer(B, CL_TRUE, Offset, Bytes, Data);
+}
+
+void ClContext::read(const cl::Buffer &B, void *Data, size_t Bytes, size_t Offset) {
+  if (Bytes)
+    Queue.enqueueReadBuffer(B, CL_TRUE, Offset, Bytes, Data);
+}
+
+void ClContext::launch(cl::Kernel &K, size_t GlobalSize, const std::string &TimingName) {
+  if (GlobalSize == 0)
+    return;
+  const size_t Group = 64;
+  size_t Rounded = (GlobalSize + Group - 1) / Group * Group;
+  cl::Event Ev;
+  try {
+    Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(Rounded), cl::NDRange(Group),
+                               nullptr, &Ev);
+  } catch (const cl::Error &E) {
+    throw Error("launching kernel '" + TimingName + "' failed: " + clErrorName(E.err()));
+  }
+  PendingEvents.push_back({Ev, TimingName, GlobalSize});
+  if (PendingEvents.size() > 256)
+    finish();
+}
+
+void ClContext::finish() {
+  Queue.finish();
+  for (auto &P : PendingEvents) {
+    cl_ulong Start = P.Ev.getProfilingInfo<CL_PROFILING_COMMAND_START>();
+    cl_ulong End = P.Ev.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+    KernelTiming &T = Timings[P.Name];
+    T.Launches += 1;
+    T.Seconds += (End - Start) * 1e-9;
+    T.WorkItems += P.WorkItems;
+  }
+  PendingEvents.clear();
+}
+
+size_t ClContext::memoryTotal() const {
+  size_t T = 0;
+  for (auto &M : Memory)
+    T += M.second;
+  return T;
+}
+
+} // namespace texrender

@@ -1,0 +1,95 @@
+#include "texrender/Image.h"
+#include "texrender/Error.h"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_FAILURE_USERMSG
+#include <stb_image.h>
+#include <stb_image_write.h>
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+namespace texrender {
+
+float srgbToLinear(float V) {
+  return V <= 0.04045f ? V / 12.92f : std::pow((V + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float V) {
+  V = std::clamp(V, 0.0f, 1.0f);
+  return V <= 0.0031308f ? 12.92f * V : 1.055f * std::pow(V, 1.0f / 2.4f) - 0.055f;
+}
+
+ImageRGBA loadTexture(const std::string &Path) {
+  ImageRGBA Img;
+  int N = 0;
+  if (stbi_is_hdr(Path.c_str())) {
+    float *D = stbi_loadf(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
+    if (!D)
+      throw Error(Path + ": cannot load image: " + stbi_failure_reason());
+    Img.Pixels.assign(D, D + size_t(Img.Width) * Img.Height * 4);
+    stbi_image_free(D);
+    return Img;
+  }
+  unsigned char *D = stbi_load(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
+  if (!D)
+    throw Error(Path + ": cannot load image: " + stbi_failure_reason());
+  // A lookup table: 256 pow() calls instead of one per texel.
+  float Lut[256];
+  for (int I = 0; I < 256; ++I)
+    Lut[I] = srgbToLinear(I / 255.0f);
+  size_t Count = size_t(Img.Width) * Img.Height;
+  Img.Pixels.resize(Count * 4);
+  for (size_t I = 0; I < Count; ++I) {
+    for (int C = 0; C < 3; ++C)
+      Img.Pixels[4 * I + C] = Lut[D[4 * I + C]];
+    Img.Pixels[4 * I + 3] = D[4 * I + 3] / 255.0f;
+  }
+  stbi_image_free(D);
+  return Img;
+}
+
+ImageRGBA loadExr(const std::string &Path) {
+  ImageRGBA Img;
+  float *D = nullptr;
+  const char *Err = nullptr;
+  if (LoadEXR(&D, &Img.Width, &Img.Height, Path.c_str(), &Err) != TINYEXR_SUCCESS) {
+    std::string Why = Err ? Err : "unknown error";
+    if (Err)
+      FreeEXRErrorMessage(Err);
+    throw Error(Path + ": cannot load EXR: " + Why);
+  }
+  Img.Pixels.assign(D, D + size_t(Img.Width) * Img.Height * 4);
+  std::free(D);
+  return Img;
+}
+
+void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
+  std::string Ext = std::filesystem::path(Path).extension().string();
+  std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
+  if (Ext == ".exr") {
+    const char *Err = nullptr;
+    if (SaveEXR(RGB.data(), Width, Height, 3, 0, Path.c_str(), &Err) != TINYEXR_SUCCESS) {
+      std::string Why = Err ? Err : "unknown error";
+      if (Err)
+        FreeEXRErrorMessage(Err);
+      throw Error(Path + ": cannot write EXR: " + Why);
+    }
+    return;
+  }
+  if (Ext == ".png") {
+    std::vector<unsigned char> Bytes(RGB.size());
+    for (size_t I = 0; I < RGB.size(); ++I)
+      Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
+    if (!stbi_write_png(Path.c_str(), Width, Height, 3, Bytes.data(), Width * 3))
+      throw Error(Path + ": cannot write PNG");
+    return;
+  }
+  throw Error(Path + ": unknown image format '" + Ext + "' (expected .png or .exr)");
+}
+
+} // namespace texrender

@@ -1,0 +1,168 @@
+#include "texrender/Layout.h"
+#include "texrender/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace texrender {
+
+const LayoutInput *LayoutBsdf::input(const std::string &Name) const {
+  for (auto &I : Inputs)
+    if (I.first == Name)
+      return &I.second;
+  return nullptr;
+}
+
+int Layout::findMaterial(const std::string &Name) const {
+  for (auto &M : Materials)
+    if (M.Name == Name)
+      return M.Index;
+  return -1;
+}
+
+std::string Layout::materialNames() const {
+  std::string S;
+  for (auto &M : Materials)
+    S += (S.empty() ? "" : ", ") + M.Name;
+  return S.empty() ? "(none)" : S;
+}
+
+namespace {
+
+std::string readFile(const std::string &Path, bool Binary = false) {
+  std::ifstream In(Path, Binary ? std::ios::binary : std::ios::in);
+  if (!In)
+    throw Error(Path + ": cannot open (is --textures the texcc output folder?)");
+  std::stringstream SS;
+  SS << In.rdbuf();
+  return SS.str();
+}
+
+unsigned componentsOf(const std::string &Type) {
+  if (Type == "float2") return 2;
+  if (Type == "float3") return 3;
+  if (Type == "float4") return 4;
+  return 1;
+}
+
+struct LayoutReader {
+  std::string File;
+  [[noreturn]] void fail(const std::string &Path, const std::string &Why) const {
+    throw Error(File + ": " + Path + ": " + Why);
+  }
+  const json &get(const json &J, const char *Key, const std::string &Path) const {
+    if (!J.is_object() || !J.contains(Key))
+      fail(Path, std::string("missing \"") + Key + "\"");
+    return J[Key];
+  }
+
+  LayoutInput input(const json &J, const std::string &Path) const {
+    LayoutInput In;
+    if (J.is_object() && J.contains("output")) {
+      In.IsOutput = true;
+      In.Output = J["output"].get<int>();
+    } else if (J.is_object() && J.contains("const")) {
+      const json &C = J["const"];
+      if (C.is_number())
+        In.Constant = {C.get<float>()};
+      else if (C.is_array())
+        for (auto &V : C)
+          In.Constant.push_back(V.get<float>());
+      if (In.Constant.empty() || In.Constant.size() > 4)
+        fail(Path, "expected 1 to 4 numbers in \"const\"");
+    } else if (J.is_number()) {
+      In.Constant = {J.get<float>()};
+    } else {
+      fail(Path, "expected {\"const\": ...} or {\"output\": k}");
+    }
+    return In;
+  }
+
+  LayoutBsdf bsdf(const json &J, const std::string &Path) const {
+    LayoutBsdf B;
+    B.Type = get(J, "type", Path).get<std::string>();
+    for (auto &[K, V] : J.items()) {
+      if (K == "type")
+        continue;
+      if (K == "a" || K == "b")
+        B.Children.push_back({K, bsdf(V, Path + "/" + K)});
+      else
+        B.Inputs.push_back({K, input(V, Path + "/" + K)});
+    }
+    return B;
+  }
+};
+
+} // namespace
+
+Layout loadLayout(const std::string &OutDir) {
+  Layout L;
+  L.Dir = OutDir;
+  std::string File = (fs::path(OutDir) / "layout.json").string();
+  L.Text = readFile(File);
+  LayoutReader R{File};
+  json J;
+  try {
+    J = json::parse(L.Text);
+  } catch (const json::parse_error &E) {
+    throw Error(File + ": invalid JSON: " + E.what());
+  }
+  try {
+    if (!J.contains("texcc") || J["texcc"] != 1)
+      R.fail("/texcc", "expected layout version 1");
+    L.Mode = R.get(J, "mode", "").get<std::string>();
+    if (L.Mode != "interp" && L.Mode != "inline" && L.Mode != "wavefront" && L.Mode != "shape")
+      R.fail("/mode", "unknown mode '" + L.Mode + "'");
+    if (J.contains("target") && J["target"] != "opencl")
+      R.fail("/target", "texrender runs OpenCL output only (texcc --target=opencl)");
+    L.GraphPath = J.value("graph", "");
+    if (!L.GraphPath.empty() && fs::path(L.GraphPath).is_relative())
+      L.GraphPath = (fs::path(OutDir) / L.GraphPath).lexically_normal().string();
+    const json &K = R.get(J, "kernel", "");
+    L.KernelSource = (fs::path(OutDir) / K.value("source", "proctex.cl")).string();
+    L.Entry = K.value("entry", "texcc_proctex");
+    if (K.contains("launches"))
+      for (auto &La : K["launches"])
+        L.WavefrontLaunches.push_back(La.at("kernel").get<std::string>());
+    L.StackSlots = J.value("stackSlots", 0u);
+    L.StackLimit = J.value("stackLimit", 32u);
+    L.Spill = J.value("spill", false);
+    L.MaxOutputs = std::max(1u, J.value("maxOutputs", 1u));
+    L.ScratchFloat4PerHit = J.value("scratchFloat4PerHit", 0u);
+    if (J.contains("attributes"))
+      L.Attributes = J["attributes"].get<std::vector<std::string>>();
+    if (J.contains("settings"))
+      L.Settings = J["settings"].get<std::vector<std::string>>();
+    if (J.contains("images"))
+      for (auto &I : J["images"]) {
+        fs::path P(I.at("path").get<std::string>());
+        L.Images.push_back(
+            {I.at("name").get<std::string>(), (P.is_absolute() ? P : fs::path(OutDir) / P).string()});
+      }
+    const json &Ms = R.get(J, "materials", "");
+    for (size_t I = 0; I < Ms.size(); ++I) {
+      std::string P = "/materials/" + std::to_string(I);
+      LayoutMaterial M;
+      M.Name = R.get(Ms[I], "name", P).get<std::string>();
+      M.Index = Ms[I].value("index", static_cast<int>(I));
+      if (Ms[I].contains("outputs"))
+        for (auto &O : Ms[I]["outputs"])
+          M.OutputComponents.push_back(componentsOf(O.value("type", "float")));
+      M.Bsdf = R.bsdf(R.get(Ms[I], "bsdf", P), P + "/bsdf");
+      L.Materials.push_back(M);
+    }
+  } catch (const json::exception &E) {
+    throw Error(File + ": malformed layout: " + E.what());
+  }
+  std::string Args = readFile((fs::path(OutDir) / "args.bin").string(), true);
+  L.ArgsBin.assign(Args.begin(), Args.end());
+  return L;
+}
+
+} // namespace texrender

@@ -1,0 +1,140 @@
+// OBJ loading through tinyobjloader, with gzip support (zlib) and generated normals.
+#include "texrender/Error.h"
+#include "texrender/Scene.h"
+
+#include <tiny_obj_loader.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace texrender {
+
+namespace {
+
+std::string readMaybeGzipped(const std::string &Path) {
+  gzFile F = gzopen(Path.c_str(), "rb"); // reads plain files unchanged too
+  if (!F)
+    throw Error(Path + ": cannot open OBJ file (missing or unreadable)");
+  std::string Out;
+  char Buf[1 << 16];
+  int N;
+  while ((N = gzread(F, Buf, sizeof Buf)) > 0)
+    Out.append(Buf, N);
+  int Err = 0;
+  const char *Msg = gzerror(F, &Err);
+  bool Failed = N < 0 || (Err != Z_OK && Err != Z_STREAM_END);
+  std::string Why = Failed ? Msg : "";
+  gzclose(F);
+  if (Failed)
+    throw Error(Path + ": cannot decompress OBJ file: " + Why);
+  return Out;
+}
+
+Vec3 sub(const Vec3 &A, const Vec3 &B) { return {A[0] - B[0], A[1] - B[1], A[2] - B[2]}; }
+Vec3 cross(const Vec3 &A, const Vec3 &B) {
+  return {A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
+}
+float dot(const Vec3 &A, const Vec3 &B) { return A[0] * B[0] + A[1] * B[1] + A[2] * B[2]; }
+Vec3 normalized(const Vec3 &V) {
+  float L = std::sqrt(dot(V, V));
+  return L > 0 ? Vec3{V[0] / L, V[1] / L, V[2] / L} : Vec3{0, 0, 0};
+}
+
+/// Smooth normals for the triangles whose file gave none: the area-weighted average of the
+/// normals of the faces sharing the corner's position within 60 degrees (creases stay sharp).
+void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
+                     const std::vector<bool> &HasNormals) {
+  size_t NT = M.triangleCount();
+  std::vector<Vec3> FaceN(NT); // area-weighted
+  std::map<int, std::vector<size_t>> Adj;
+  for (size_t T = 0; T < NT; ++T) {
+    FaceN[T] = cross(sub(M.Positions[3 * T + 1], M.Positions[3 * T]),
+                     sub(M.Positions[3 * T + 2], M.Positions[3 * T]));
+    for (int C = 0; C < 3; ++C)
+      Adj[PosIndex[3 * T + C]].push_back(T);
+  }
+  const float CosCrease = 0.5f;
+  for (size_t T = 0; T < NT; ++T) {
+    if (HasNormals[T])
+      continue;
+    Vec3 Own = normalized(FaceN[T]);
+    for (int C = 0; C < 3; ++C) {
+      Vec3 Sum{0, 0, 0};
+      for (size_t O : Adj[PosIndex[3 * T + C]])
+        if (dot(normalized(FaceN[O]), Own) >= CosCrease)
+          for (int K = 0; K < 3; ++K)
+            Sum[K] += FaceN[O][K];
+      Vec3 N = normalized(Sum);
+      M.Normals[3 * T + C] = dot(N, N) > 0 ? N : Own;
+    }
+  }
+}
+
+} // namespace
+
+TriangleMesh loadObj(const std::string &Path) {
+  std::string Text = readMaybeGzipped(Path);
+  tinyobj::ObjReaderConfig Cfg;
+  Cfg.triangulate = true;
+  Cfg.vertex_color = false;
+  tinyobj::ObjReader Reader;
+  if (!Reader.ParseFromString(Text, "", Cfg)) {
+    std::string E = Reader.Error();
+    while (!E.empty() && E.back() == '\n')
+      E.pop_back();
+    throw Error(Path + ": invalid OBJ: " + E);
+  }
+  const auto &A = Reader.GetAttrib();
+  TriangleMesh M;
+  std::vector<int> PosIndex;
+  std::vector<bool> HasNormals;
+  for (const auto &Shape : Reader.GetShapes()) {
+    const auto &Idx = Shape.mesh.indices;
+    for (size_t F = 0; F + 2 < Idx.size(); F += 3) {
+      bool FileNormals = true;
+      Vec3 P[3], N[3];
+      Vec2 UV[3];
+      for (int C = 0; C < 3; ++C) {
+        const auto &I = Idx[F + C];
+        if (I.vertex_index < 0 || 3 * size_t(I.vertex_index) + 2 >= A.vertices.size())
+          throw Error(Path + ": invalid OBJ: vertex index out of range");
+        P[C] = {A.vertices[3 * I.vertex_index], A.vertices[3 * I.vertex_index + 1],
+                A.vertices[3 * I.vertex_index + 2]};
+        if (I.normal_index >= 0 && 3 * size_t(I.normal_index) + 2 < A.normals.size())
+          N[C] = normalized({A.normals[3 * I.normal_index], A.normals[3 * I.normal_index + 1],
+                             A.normals[3 * I.normal_index + 2]});
+        else
+          FileNormals = false;
+        UV[C] = {0, 0};
+        if (I.texcoord_index >= 0 && 2 * size_t(I.texcoord_index) + 1 < A.texcoords.size())
+          UV[C] = {A.texcoords[2 * I.texcoord_index], A.texcoords[2 * I.texcoord_index + 1]};
+      }
+      int Order[3] = {0, 1, 2};
+      if (FileNormals) {
+        // The winding defines the front (the emitting side of an area light); make it agree
+        // with the normals the file gives.
+        Vec3 Fn = cross(sub(P[1], P[0]), sub(P[2], P[0]));
+        Vec3 Sum = {N[0][0] + N[1][0] + N[2][0], N[0][1] + N[1][1] + N[2][1],
+                    N[0][2] + N[1][2] + N[2][2]};
+        if (dot(Fn, Sum) < 0)
+          Order[1] = 2, Order[2] = 1;
+      }
+      for (int C : Order) {
+        M.Positions.push_back(P[C]);
+        M.Normals.push_back(FileNormals ? N[C] : Vec3{0, 0, 0});
+        M.UVs.push_back(UV[C]);
+        PosIndex.push_back(Idx[F + C].vertex_index);
+      }
+      HasNormals.push_back(FileNormals);
+    }
+  }
+  if (M.Positions.empty())
+    throw Error(Path + ": OBJ file has no faces");
+  generateNormals(M, PosIndex, HasNormals);
+  return M;
+}
+
+} // namespace texrender

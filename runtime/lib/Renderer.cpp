@@ -1,0 +1,431 @@
+#include "texrender/Renderer.h"
+#include "texrender/Error.h"
+#include "texrender/Image.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace texrender {
+
+namespace {
+
+std::string readText(const std::string &Path) {
+  std::ifstream In(Path);
+  if (!In)
+    throw Error(Path + ": cannot open kernel source");
+  std::stringstream SS;
+  SS << In.rdbuf();
+  return SS.str();
+}
+
+/// The text of every shared header: part of the program-cache key of every kernel.
+std::string headersDigest(const std::string &Dir) {
+  std::vector<fs::path> Files;
+  for (auto &E : fs::directory_iterator(fs::path(Dir) / "common"))
+    if (E.path().extension() == ".h")
+      Files.push_back(E.path());
+  std::sort(Files.begin(), Files.end());
+  std::string All;
+  for (auto &F : Files)
+    All += readText(F.string());
+  return All;
+}
+
+struct KernelFile {
+  const char *File;
+  std::vector<const char *> Kernels;
+};
+
+const std::vector<KernelFile> &fixedKernels() {
+  static const std::vector<KernelFile> Files = {
+      {"raygen.cl", {"raygen"}},       {"closest_hit.cl", {"closest_hit"}},
+      {"hit_attributes.cl", {"hit_attributes"}}, {"ao.cl", {"ao_trace", "ao_reduce"}},
+      {"shade.cl", {"shade"}},         {"shadow.cl", {"shadow"}},
+      {"compact.cl", {"compact"}},     {"accumulate.cl", {"accumulate"}}};
+  return Files;
+}
+
+template <typename T> size_t bytes(const std::vector<T> &V) { return V.size() * sizeof(T); }
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+} // namespace
+
+uint32_t attributeMaskOf(const Layout &L) {
+  static const char *Names[TEXCC_ATTR_COUNT] = {"WorldPos", "ObjectPos", "Normal", "GeomNormal",
+                                                "Tangent", "TexCoord0", "AO", "ViewDir"};
+  uint32_t Mask = 0;
+  for (const std::string &A : L.Attributes) {
+    auto It = std::find_if(std::begin(Names), std::end(Names), [&](const char *N) { return A == N; });
+    if (It == std::end(Names))
+      throw Error(L.Dir + "/layout.json: /attributes: unknown attribute '" + A + "'");
+    Mask |= 1u << (It - std::begin(Names));
+  }
+  return Mask;
+}
+
+std::string kernelDirectory() {
+  if (const char *E = std::getenv("TEXRENDER_KERNELS"); E && *E)
+    return E;
+  std::error_code EC;
+  fs::path Exe = fs::read_symlink("/proc/self/exe", EC);
+  if (!EC) {
+    for (fs::path C : {Exe.parent_path().parent_path() / "kernels", Exe.parent_path() / "kernels"})
+      if (fs::exists(C / "raygen.cl"))
+        return C.string();
+  }
+  throw Error("cannot find texrender's kernels (raygen.cl ...) next to the executable; set "
+              "TEXRENDER_KERNELS to the kernels folder");
+}
+
+Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
+    : SceneDesc(S), Lay(L), Opts(O), Settings(S.Render) {
+  KernelDir = Opts.KernelDir.empty() ? kernelDirectory() : Opts.KernelDir;
+  Data = buildSceneData(S, L);
+  Cl = std::make_unique<ClContext>(Opts.Device, Opts.CacheDir);
+  try {
+    buildFixedKernels();
+    uploadScene();
+    uploadLayoutData();
+    buildTextureKernel();
+  } catch (const cl::Error &E) {
+    throw Error(std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err()));
+  }
+}
+
+std::string Renderer::programOptions() const {
+  return "-cl-std=CL1.2 -I " + (fs::path(KernelDir) / "common").string();
+}
+
+void Renderer::buildFixedKernels() {
+  std::string Digest = headersDigest(KernelDir);
+  for (const KernelFile &F : fixedKernels()) {
+    std::string Path = (fs::path(KernelDir) / F.File).string();
+    cl::Program P = Cl->buildProgram(Path, readText(Path), programOptions(), Digest);
+    for (const char *Name : F.Kernels)
+      K[Name] = cl::Kernel(P, Name);
+  }
+}
+
+void Renderer::uploadScene() {
+  const cl_mem_flags RO = CL_MEM_READ_ONLY;
+  B["bvhNodes"] = Cl->allocateWith("bvhNodes", Data.Tree.Nodes.data(), bytes(Data.Tree.Nodes), RO);
+  B["triangles"] = Cl->allocateWith("triangles", Data.Tris.data(), bytes(Data.Tris), RO);
+  B["triangleAttributes"] =
+      Cl->allocateWith("triangleAttributes", Data.TriAttrs.data(), bytes(Data.TriAttrs), RO);
+  B["meshes"] = Cl->allocateWith("meshes", Data.Meshes.data(), bytes(Data.Meshes), RO);
+  B["lights"] = Cl->allocateWith("lights", Data.Lights.data(), bytes(Data.Lights), RO);
+  B["lightCdf"] = Cl->allocateWith("lightCdf", Data.LightCdf.data(), bytes(Data.LightCdf), RO);
+  B["camera"] = Cl->allocate("camera", sizeof(RtCamera), RO);
+  B["shadeParams"] = Cl->allocate("shadeParams", sizeof(RtShadeParams), RO);
+  B["counters"] = Cl->allocate("counters", RT_COUNT_SLOTS * sizeof(cl_uint), CL_MEM_READ_WRITE);
+  B["activeCount"] = Cl->allocate("activeCount", sizeof(cl_int), CL_MEM_READ_WRITE);
+}
+
+void Renderer::uploadLayoutData() {
+  buildMaterials(Lay, Data.Materials, Data.BsdfNodes);
+  const cl_mem_flags RO = CL_MEM_READ_ONLY;
+  B["materials"] = Cl->allocateWith("materials", Data.Materials.data(), bytes(Data.Materials), RO);
+  B["bsdfNodes"] = Cl->allocateWith("bsdfNodes", Data.BsdfNodes.data(), bytes(Data.BsdfNodes), RO);
+  B["fakeStack"] = Cl->allocateWith("fakeStack", Lay.ArgsBin.data(), Lay.ArgsBin.size(), RO);
+  // Images: every bound image, concatenated, linear RGBA.
+  std::vector<cl_float4> Texels;
+  std::vector<TexccImageInfo> Infos;
+  for (const LayoutImage &I : Lay.Images) {
+    ImageRGBA Img = loadTexture(I.Path);
+    TexccImageInfo Info{int(Texels.size()), Img.Width, Img.Height, 0};
+    Infos.push_back(Info);
+    for (size_t P = 0; P < Img.Pixels.size(); P += 4)
+      Texels.push_back({{Img.Pixels[P], Img.Pixels[P + 1], Img.Pixels[P + 2], Img.Pixels[P + 3]}});
+  }
+  if (Texels.empty())
+    Texels.push_back({{0, 0, 0, 0}});
+  if (Infos.empty())
+    Infos.push_back({0, 0, 0, 0});
+  B["texels"] = Cl->allocateWith("texels", Texels.data(), bytes(Texels), RO);
+  B["images"] = Cl->allocateWith("images", Infos.data(), bytes(Infos), RO);
+  TexccSettings Set{};
+  Set.cameraPos = {{SceneDesc.Cam.Position[0], SceneDesc.Cam.Position[1], SceneDesc.Cam.Position[2], 0}};
+  B["settings"] = Cl->allocateWith("settings", &Set, sizeof Set, RO);
+  AttrMask = attributeMaskOf(Lay);
+  HasTextureWork = std::any_of(Data.Materials.begin(), Data.Materials.end(),
+                               [](const RtMaterial &M) { return M.numOutputs > 0; });
+  Capacity = 0; // the outputs and scratch buffers depend on the layout
+}
+
+void Renderer::buildTextureKernel() {
+  TextureKernels.clear();
+  TextureKernelNames.clear();
+  if (!HasTextureWork)
+    return;
+  std::string Source = readText(Lay.KernelSource);
+  cl::Program P = Cl->buildProgram(Lay.KernelSource, Source, programOptions());
+  if (Lay.Mode == "wavefront") {
+    for (const std::string &N : Lay.WavefrontLaunches)
+      TextureKernelNames.push_back(N);
+    TextureKernelNames.push_back("texcc_wf_outputs");
+  } else {
+    TextureKernelNames.push_back(Lay.Entry);
+  }
+  for (const std::string &N : TextureKernelNames) {
+    try {
+      TextureKernels.push_back(cl::Kernel(P, N.c_str()));
+    } catch (const cl::Error &E) {
+      throw Error(Lay.KernelSource + ": no kernel '" + N + "' in the texture program (" +
+                  clErrorName(E.err()) + ")");
+    }
+  }
+}
+
+void Renderer::applyArguments(const std::vector<uint8_t> &ArgsBin,
+                              const std::vector<std::string> &Attributes) {
+  if (Attributes != Lay.Attributes) {
+    Lay.Attributes = Attributes;
+    AttrMask = attributeMaskOf(Lay);
+    Capacity = 0; // the AO buffer may now be needed
+  }
+  Lay.ArgsBin = ArgsBin;
+  size_t Have = Cl->memory().count("fakeStack") ? Cl->memory().at("fakeStack") : 0;
+  if (ArgsBin.size() > Have)
+    B["fakeStack"] = Cl->allocate("fakeStack", ArgsBin.size(), CL_MEM_READ_ONLY);
+  Cl->write(B["fakeStack"], ArgsBin.data(), ArgsBin.size());
+}
+
+void Renderer::setLayout(const Layout &L) {
+  Lay = L;
+  uploadLayoutData();
+  buildTextureKernel();
+}
+
+void Renderer::allocateWorkBuffers(size_t N) {
+  const cl_mem_flags RW = CL_MEM_READ_WRITE;
+  B["paths"] = Cl->allocate("paths", N * sizeof(RtPath), RW);
+  B["activeA"] = Cl->allocate("activeA", N * sizeof(cl_int), RW);
+  B["activeB"] = Cl->allocate("activeB", N * sizeof(cl_int), RW);
+  B["hits"] = Cl->allocate("hits", N * sizeof(RtHit), RW);
+  B["shadowRays"] = Cl->allocate("shadowRays", N * sizeof(RtShadowRay), RW);
+  B["hitAttributes"] = Cl->allocate("hitAttributes", N * sizeof(TexccHitAttrs), RW);
+  B["hitMaterial"] = Cl->allocate("hitMaterial", N * sizeof(cl_int), RW);
+  B["textureOutputs"] = Cl->allocate("textureOutputs", N * Lay.MaxOutputs * sizeof(cl_float4), RW);
+  size_t ScratchPerHit = Lay.Mode == "wavefront" ? Lay.ScratchFloat4PerHit
+                         : Lay.Spill             ? Lay.StackSlots
+                                                 : 0;
+  B["textureScratch"] = Cl->allocate("textureScratch", std::max<size_t>(1, N * ScratchPerHit) * sizeof(cl_float4), RW);
+  if (runsAo())
+    B["aoOccluded"] = Cl->allocate("aoOccluded", N * Settings.AoSamples, RW);
+  Capacity = N;
+  CapacityAo = Settings.AoSamples;
+}
+
+void Renderer::runTextures(int NumActive) {
+  for (size_t I = 0; I < TextureKernels.size(); ++I) {
+    cl::Kernel &T = TextureKernels[I];
+    T.setArg(0, B["hitAttributes"]);
+    T.setArg(1, B["hitMaterial"]);
+    T.setArg(2, cl_int(NumActive));
+    T.setArg(3, B["fakeStack"]);
+    T.setArg(4, B["settings"]);
+    T.setArg(5, B["texels"]);
+    T.setArg(6, B["images"]);
+    T.setArg(7, B["textureOutputs"]);
+    T.setArg(8, B["textureScratch"]);
+    Cl->launch(T, NumActive, "proctex");
+  }
+}
+
+/// Runs the bounce loop over NumPaths fresh paths (in activeA). Returns the bounces done.
+int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes) {
+  cl::Buffer Cur = B["activeA"], Next = B["activeB"];
+  int Count = NumPaths;
+  int Depth = 1;
+  int Bounces = 0;
+  const bool Attrs = AttrMask != 0 || HasTextureWork;
+  while (Count > 0 && (Settings.MaxDepth < 0 || Depth <= Settings.MaxDepth) && Depth < 4096) {
+    cl::Kernel &CH = K["closest_hit"];
+    CH.setArg(0, B["bvhNodes"]), CH.setArg(1, B["triangles"]), CH.setArg(2, B["paths"]);
+    CH.setArg(3, Cur), CH.setArg(4, cl_int(Count)), CH.setArg(5, B["hits"]);
+    Cl->launch(CH, Count, Depth == 1 ? "closest_hit_primary" : "closest_hit_bounce");
+    (Depth == 1 ? Stats.PrimaryRays : Stats.BounceRays) += Count;
+    if (Attrs) {
+      cl::Kernel &HA = K["hit_attributes"];
+      HA.setArg(0, B["triangles"]), HA.setArg(1, B["triangleAttributes"]);
+      HA.setArg(2, B["meshes"]), HA.setArg(3, B["materials"]), HA.setArg(4, B["paths"]);
+      HA.setArg(5, Cur), HA.setArg(6, cl_int(Count)), HA.setArg(7, B["hits"]);
+      HA.setArg(8, cl_uint(AttrMask)), HA.setArg(9, B["hitAttributes"]);
+      HA.setArg(10, B["hitMaterial"]);
+      Cl->launch(HA, Count, "hit_attributes");
+    }
+    if (runsAo()) {
+      cl::Kernel &AT = K["ao_trace"];
+      AT.setArg(0, B["bvhNodes"]), AT.setArg(1, B["triangles"]);
+      AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Cur);
+      AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, cl_int(Settings.AoSamples));
+      AT.setArg(8, cl_float(Settings.AoDistance)), AT.setArg(9, cl_float(1e-4f));
+      AT.setArg(10, cl_uint(Settings.Seed)), AT.setArg(11, B["aoOccluded"]);
+      Cl->launch(AT, size_t(Count) * Settings.AoSamples, "ao_trace");
+      Stats.AoWorkItemsPerLaunchMax =
+          std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, uint64_t(Count) * Settings.AoSamples);
+      cl::Kernel &AR = K["ao_reduce"];
+      AR.setArg(0, B["aoOccluded"]), AR.setArg(1, B["hits"]), AR.setArg(2, cl_int(Count));
+      AR.setArg(3, cl_int(Settings.AoSamples)), AR.setArg(4, B["hitAttributes"]);
+      AR.setArg(5, B["counters"]);
+      Cl->launch(AR, Count, "ao_reduce");
+    }
+    if (StopAfterAttributes)
+      return 1;
+    if (HasTextureWork)
+      runTextures(Count);
+    cl::Kernel &SH = K["shade"];
+    SH.setArg(0, B["triangles"]), SH.setArg(1, B["triangleAttributes"]), SH.setArg(2, B["meshes"]);
+    SH.setArg(3, B["materials"]), SH.setArg(4, B["bsdfNodes"]), SH.setArg(5, B["lights"]);
+    SH.setArg(6, B["lightCdf"]), SH.setArg(7, B["shadeParams"]), SH.setArg(8, B["paths"]);
+    SH.setArg(9, Cur), SH.setArg(10, cl_int(Count)), SH.setArg(11, B["hits"]);
+    SH.setArg(12, B["textureOutputs"]), SH.setArg(13, cl_int(Lay.MaxOutputs));
+    SH.setArg(14, B["shadowRays"]), SH.setArg(15, B["counters"]);
+    Cl->launch(SH, Count, "shade");
+    cl::Kernel &SD = K["shadow"];
+    SD.setArg(0, B["bvhNodes"]), SD.setArg(1, B["triangles"]), SD.setArg(2, B["shadowRays"]);
+    SD.setArg(3, B["paths"]), SD.setArg(4, Cur), SD.setArg(5, cl_int(Count));
+    Cl->launch(SD, Count, "shadow");
+    cl_int Zero = 0;
+    Cl->write(B["activeCount"], &Zero, sizeof Zero);
+    cl::Kernel &CP = K["compact"];
+    CP.setArg(0, B["paths"]), CP.setArg(1, Cur), CP.setArg(2, cl_int(Count));
+    CP.setArg(3, Next), CP.setArg(4, B["activeCount"]);
+    Cl->launch(CP, Count, "compact");
+    Cl->read(B["activeCount"], &Count, sizeof Count);
+    std::swap(Cur, Next);
+    ++Depth;
+    ++Bounces;
+  }
+  return Bounces;
+}
+
+std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Variance) {
+  double T0 = now();
+  Stats = FrameStats();
+  Cl->finish();
+  Cl->resetTimings();
+  const int W = Settings.Width, H = Settings.Height, Spp = Settings.Spp;
+  const size_t NumPixels = size_t(W) * H;
+  int SppPerPass = int(std::clamp<size_t>(Opts.MaxPathsPerPass / NumPixels, 1, size_t(Spp)));
+  size_t Need = NumPixels * SppPerPass;
+  try {
+    if (Need > Capacity || Settings.AoSamples != CapacityAo)
+      allocateWorkBuffers(std::max(Need, Capacity));
+    RtCamera Cam = makeCamera(SceneDesc.Cam, W, H);
+    Cl->write(B["camera"], &Cam, sizeof Cam);
+    RtShadeParams Prm{};
+    Prm.maxDepth = Settings.MaxDepth;
+    Prm.rrDepth = 5;
+    Prm.numLights = int(Data.Lights.size());
+    Prm.skyLight = Data.SkyLight;
+    Prm.sunLight = Data.SunLight;
+    Prm.epsilon = 1e-4f;
+    Cl->write(B["shadeParams"], &Prm, sizeof Prm);
+    cl_uint Counters[RT_COUNT_SLOTS] = {};
+    Cl->write(B["counters"], Counters, sizeof Counters);
+    if (!Cl->memory().count("sums") || Cl->memory().at("sums") != NumPixels * sizeof(cl_float4)) {
+      B["sums"] = Cl->allocate("sums", NumPixels * sizeof(cl_float4), CL_MEM_READ_WRITE);
+      B["sumsSquared"] = Cl->allocate("sumsSquared", NumPixels * sizeof(cl_float4), CL_MEM_READ_WRITE);
+    }
+    std::vector<cl_float4> Zeros(NumPixels, cl_float4{{0, 0, 0, 0}});
+    Cl->write(B["sums"], Zeros.data(), bytes(Zeros));
+    Cl->write(B["sumsSquared"], Zeros.data(), bytes(Zeros));
+    bool Drew = false;
+    for (int Done = 0; Done < Spp;) {
+      int Now = std::min(SppPerPass, Spp - Done);
+      int N = int(NumPixels) * Now;
+      cl::Kernel &RG = K["raygen"];
+      RG.setArg(0, B["paths"]), RG.setArg(1, B["activeA"]), RG.setArg(2, B["camera"]);
+      RG.setArg(3, cl_int(W)), RG.setArg(4, cl_int(H)), RG.setArg(5, cl_int(Now));
+      RG.setArg(6, cl_int(Done)), RG.setArg(7, cl_uint(Settings.Seed)), RG.setArg(8, cl_int(N));
+      Cl->launch(RG, N, "raygen");
+      Stats.Bounces += traceBounces(N, Stats, false);
+      cl::Kernel &AC = K["accumulate"];
+      AC.setArg(0, B["paths"]), AC.setArg(1, cl_int(NumPixels)), AC.setArg(2, cl_int(Now));
+      AC.setArg(3, B["sums"]), AC.setArg(4, B["sumsSquared"]);
+      Cl->launch(AC, NumPixels, "accumulate");
+      Done += Now;
+      ++Stats.Passes;
+      if (Opts.Progress && now() - T0 > 1.0) {
+        Cl->finish();
+        int Width = 40, Fill = int(Width * double(Done) / Spp);
+        std::fprintf(stderr, "\rtexrender: [%s%s] %3d%% (%d/%d spp)", std::string(Fill, '#').c_str(),
+                     std::string(Width - Fill, ' ').c_str(), int(100.0 * Done / Spp), Done, Spp);
+        std::fflush(stderr);
+        Drew = true;
+      }
+    }
+    Cl->finish();
+    if (Drew)
+      std::fprintf(stderr, "\n");
+    std::vector<cl_float4> Sums(NumPixels);
+    Cl->read(B["sums"], Sums.data(), bytes(Sums));
+    Cl->read(B["counters"], Counters, sizeof Counters);
+    Stats.ShadowRays = Counters[RT_COUNT_SHADOW_RAYS];
+    Stats.AoRays = Counters[RT_COUNT_AO_RAYS];
+    Stats.Kernels = Cl->timings();
+    std::vector<float> RGB(NumPixels * 3);
+    for (size_t P = 0; P < NumPixels; ++P)
+      for (int C = 0; C < 3; ++C)
+        RGB[3 * P + C] = Sums[P].s[C] / float(Spp);
+    if (Variance) {
+      // The variance of each pixel's mean: the sample variance over its samples / spp.
+      std::vector<cl_float4> Sq(NumPixels);
+      Cl->read(B["sumsSquared"], Sq.data(), bytes(Sq));
+      Variance->assign(NumPixels * 3, 0.0f);
+      for (size_t P = 0; P < NumPixels && Spp > 1; ++P)
+        for (int C = 0; C < 3; ++C) {
+          double M = RGB[3 * P + C];
+          double S2 = (double(Sq[P].s[C]) - Spp * M * M) / (Spp - 1);
+          (*Variance)[3 * P + C] = float(std::max(0.0, S2) / Spp);
+        }
+    }
+    Stats.Seconds = now() - T0;
+    return RGB;
+  } catch (const cl::Error &E) {
+    throw Error(std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err()));
+  }
+}
+
+std::vector<TexccHitAttrs> Renderer::primaryHitAttributes(uint32_t Mask, FrameStats &Stats) {
+  Stats = FrameStats();
+  Cl->finish();
+  Cl->resetTimings();
+  uint32_t Saved = AttrMask;
+  AttrMask |= Mask;
+  size_t N = size_t(Settings.Width) * Settings.Height;
+  allocateWorkBuffers(std::max(N, Capacity));
+  RtCamera Cam = makeCamera(SceneDesc.Cam, Settings.Width, Settings.Height);
+  Cl->write(B["camera"], &Cam, sizeof Cam);
+  cl_uint Counters[RT_COUNT_SLOTS] = {};
+  Cl->write(B["counters"], Counters, sizeof Counters);
+  cl::Kernel &RG = K["raygen"];
+  RG.setArg(0, B["paths"]), RG.setArg(1, B["activeA"]), RG.setArg(2, B["camera"]);
+  RG.setArg(3, cl_int(Settings.Width)), RG.setArg(4, cl_int(Settings.Height)), RG.setArg(5, cl_int(1));
+  RG.setArg(6, cl_int(0)), RG.setArg(7, cl_uint(Settings.Seed)), RG.setArg(8, cl_int(N));
+  Cl->launch(RG, N, "raygen");
+  traceBounces(int(N), Stats, true);
+  Cl->finish();
+  std::vector<TexccHitAttrs> Out(N);
+  Cl->read(B["hitAttributes"], Out.data(), bytes(Out));
+  Cl->read(B["counters"], Counters, sizeof Counters);
+  Stats.AoRays = Counters[RT_COUNT_AO_RAYS];
+  Stats.Kernels = Cl->timings();
+  AttrMask = Saved;
+  Capacity = 0; // the AO buffer may be missing for the normal mask
+  return Out;
+}
+
+} // namespace texrender

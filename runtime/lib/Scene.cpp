@@ -1,0 +1,252 @@
+#include "texrender/Scene.h"
+#include "texrender/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace texrender {
+
+namespace {
+
+/// Reads typed values out of scene.json, reporting "file: /json/path: reason".
+class Reader {
+public:
+  explicit Reader(std::string File) : File(std::move(File)) {}
+
+  [[noreturn]] void fail(const std::string &Path, const std::string &Why) const {
+    throw Error(File + ": " + (Path.empty() ? "/" : Path) + ": " + Why);
+  }
+
+  void checkKeys(const json &J, const std::string &Path, std::set<std::string> Allowed) const {
+    if (!J.is_object())
+      fail(Path, "expected an object");
+    for (auto &[K, V] : J.items()) {
+      (void)V;
+      if (!Allowed.count(K)) {
+        std::string List;
+        for (auto &A : Allowed)
+          List += (List.empty() ? "" : ", ") + A;
+        fail(Path + "/" + K, "unknown key '" + K + "' (expected one of: " + List + ")");
+      }
+    }
+  }
+
+  float number(const json &J, const std::string &Path) const {
+    if (!J.is_number())
+      fail(Path, "expected a number, got " + std::string(J.type_name()));
+    return J.get<float>();
+  }
+
+  int integer(const json &J, const std::string &Path) const {
+    if (!J.is_number_integer())
+      fail(Path, "expected an integer, got " + J.dump());
+    return J.get<int>();
+  }
+
+  Vec3 vec3(const json &J, const std::string &Path) const {
+    if (!J.is_array() || J.size() != 3)
+      fail(Path, "expected an array of 3 numbers, got " + J.dump());
+    return {number(J[0], Path + "/0"), number(J[1], Path + "/1"), number(J[2], Path + "/2")};
+  }
+
+  std::string string(const json &J, const std::string &Path) const {
+    if (!J.is_string())
+      fail(Path, "expected a string, got " + std::string(J.type_name()));
+    return J.get<std::string>();
+  }
+
+  std::string File;
+};
+
+using Mat4 = std::array<float, 16>;
+
+Mat4 identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
+
+Mat4 multiply(const Mat4 &A, const Mat4 &B) {
+  Mat4 C{};
+  for (int R = 0; R < 4; ++R)
+    for (int K = 0; K < 4; ++K)
+      for (int Col = 0; Col < 4; ++Col)
+        C[R * 4 + Col] += A[R * 4 + K] * B[K * 4 + Col];
+  return C;
+}
+
+Mat4 parseTransform(const Reader &R, const json &J, const std::string &Path) {
+  R.checkKeys(J, Path, {"matrix", "scale", "rotateY", "translate"});
+  if (J.contains("matrix")) {
+    if (J.size() != 1)
+      R.fail(Path, "'matrix' cannot be combined with scale/rotateY/translate");
+    const json &M = J["matrix"];
+    if (!M.is_array() || M.size() != 4)
+      R.fail(Path + "/matrix", "expected 4 rows of 4 numbers");
+    Mat4 Out{};
+    for (int Row = 0; Row < 4; ++Row) {
+      if (!M[Row].is_array() || M[Row].size() != 4)
+        R.fail(Path + "/matrix/" + std::to_string(Row), "expected 4 numbers");
+      for (int C = 0; C < 4; ++C)
+        Out[Row * 4 + C] = R.number(M[Row][C], Path + "/matrix/" + std::to_string(Row));
+    }
+    return Out;
+  }
+  Mat4 T = identity();
+  if (J.contains("scale")) {
+    Vec3 S = R.vec3(J["scale"], Path + "/scale");
+    Mat4 M = identity();
+    M[0] = S[0], M[5] = S[1], M[10] = S[2];
+    T = multiply(M, T);
+  }
+  if (J.contains("rotateY")) {
+    float A = R.number(J["rotateY"], Path + "/rotateY") * float(M_PI) / 180.0f;
+    Mat4 M = identity();
+    M[0] = std::cos(A), M[2] = std::sin(A), M[8] = -std::sin(A), M[10] = std::cos(A);
+    T = multiply(M, T);
+  }
+  if (J.contains("translate")) {
+    Vec3 V = R.vec3(J["translate"], Path + "/translate");
+    Mat4 M = identity();
+    M[3] = V[0], M[7] = V[1], M[11] = V[2];
+    T = multiply(M, T);
+  }
+  return T;
+}
+
+std::string resolve(const fs::path &Dir, const std::string &P) {
+  fs::path Q(P);
+  return (Q.is_absolute() ? Q : Dir / Q).lexically_normal().string();
+}
+
+void parseCamera(const Reader &R, const json &J, Camera &C) {
+  R.checkKeys(J, "/camera", {"position", "target", "up", "fov", "fovAxis"});
+  if (J.contains("position")) C.Position = R.vec3(J["position"], "/camera/position");
+  if (J.contains("target")) C.Target = R.vec3(J["target"], "/camera/target");
+  if (J.contains("up")) C.Up = R.vec3(J["up"], "/camera/up");
+  if (J.contains("fov")) {
+    C.FovDegrees = R.number(J["fov"], "/camera/fov");
+    if (C.FovDegrees <= 0 || C.FovDegrees >= 180)
+      R.fail("/camera/fov", "expected degrees in (0, 180)");
+  }
+  if (J.contains("fovAxis")) {
+    C.FovAxis = R.string(J["fovAxis"], "/camera/fovAxis");
+    if (C.FovAxis != "x" && C.FovAxis != "y" && C.FovAxis != "smaller")
+      R.fail("/camera/fovAxis", "unknown axis '" + C.FovAxis + "' (expected x, y or smaller)");
+  }
+}
+
+void parseRender(const Reader &R, const json &J, RenderSettings &S) {
+  R.checkKeys(J, "/render", {"spp", "maxDepth", "aoSamples", "aoDistance", "seed"});
+  if (J.contains("spp")) S.Spp = R.integer(J["spp"], "/render/spp");
+  if (J.contains("maxDepth")) S.MaxDepth = R.integer(J["maxDepth"], "/render/maxDepth");
+  if (J.contains("aoSamples")) S.AoSamples = R.integer(J["aoSamples"], "/render/aoSamples");
+  if (J.contains("aoDistance")) S.AoDistance = R.number(J["aoDistance"], "/render/aoDistance");
+  if (J.contains("seed")) S.Seed = static_cast<unsigned>(R.integer(J["seed"], "/render/seed"));
+  if (S.Spp < 1) R.fail("/render/spp", "expected at least 1");
+  if (S.MaxDepth < -1) R.fail("/render/maxDepth", "expected -1 (unlimited) or >= 0");
+  if (S.AoSamples < 1) R.fail("/render/aoSamples", "expected at least 1");
+}
+
+Light parseLight(const Reader &R, const json &J, const std::string &Path) {
+  if (!J.is_object() || !J.contains("type"))
+    R.fail(Path, "a light needs a \"type\" (sky or sun)");
+  Light L;
+  L.Type = R.string(J["type"], Path + "/type");
+  if (L.Type == "sky") {
+    R.checkKeys(J, Path, {"type", "radiance"});
+  } else if (L.Type == "sun") {
+    R.checkKeys(J, Path, {"type", "radiance", "direction", "angularRadius"});
+    if (!J.contains("direction"))
+      R.fail(Path, "a sun needs a \"direction\"");
+    L.Direction = R.vec3(J["direction"], Path + "/direction");
+    if (J.contains("angularRadius"))
+      L.AngularRadiusDegrees = R.number(J["angularRadius"], Path + "/angularRadius");
+    if (L.AngularRadiusDegrees <= 0 || L.AngularRadiusDegrees >= 90)
+      R.fail(Path + "/angularRadius", "expected degrees in (0, 90)");
+  } else {
+    R.fail(Path + "/type", "unknown light type '" + L.Type +
+                               "' (expected sky or sun; area lights are meshes with \"emission\")");
+  }
+  if (!J.contains("radiance"))
+    R.fail(Path, "a " + L.Type + " needs a \"radiance\"");
+  L.Radiance = R.vec3(J["radiance"], Path + "/radiance");
+  return L;
+}
+
+} // namespace
+
+Scene loadScene(const std::string &Path) {
+  std::ifstream In(Path);
+  if (!In)
+    throw Error(Path + ": cannot open scene file");
+  std::stringstream SS;
+  SS << In.rdbuf();
+  std::string Text = SS.str();
+  json J;
+  try {
+    J = json::parse(Text);
+  } catch (const json::parse_error &E) {
+    size_t Line = 1, Col = 1;
+    for (size_t I = 0; I + 1 < E.byte && I < Text.size(); ++I, ++Col)
+      if (Text[I] == '\n')
+        ++Line, Col = 0;
+    throw Error(Path + ":" + std::to_string(Line) + ":" + std::to_string(Col) +
+                ": invalid JSON: " + std::string(E.what()).substr(std::string(E.what()).find(']') + 2));
+  }
+  Reader R(Path);
+  R.checkKeys(J, "", {"texrender", "textures", "camera", "film", "render", "lights", "meshes"});
+  if (!J.contains("texrender") || !J["texrender"].is_number_integer() || J["texrender"] != 1)
+    R.fail("/texrender", "expected \"texrender\": 1 (the scene format version)");
+  fs::path Dir = fs::path(Path).parent_path();
+  Scene S;
+  S.Path = Path;
+  if (J.contains("textures"))
+    S.TexturesDir = resolve(Dir, R.string(J["textures"], "/textures"));
+  if (J.contains("camera"))
+    parseCamera(R, J["camera"], S.Cam);
+  if (J.contains("film")) {
+    R.checkKeys(J["film"], "/film", {"width", "height"});
+    if (J["film"].contains("width")) S.Render.Width = R.integer(J["film"]["width"], "/film/width");
+    if (J["film"].contains("height")) S.Render.Height = R.integer(J["film"]["height"], "/film/height");
+    if (S.Render.Width < 1 || S.Render.Height < 1)
+      R.fail("/film", "width and height must be at least 1");
+  }
+  if (J.contains("render"))
+    parseRender(R, J["render"], S.Render);
+  if (J.contains("lights")) {
+    if (!J["lights"].is_array())
+      R.fail("/lights", "expected an array");
+    for (size_t I = 0; I < J["lights"].size(); ++I)
+      S.Lights.push_back(parseLight(R, J["lights"][I], "/lights/" + std::to_string(I)));
+  }
+  if (!J.contains("meshes") || !J["meshes"].is_array() || J["meshes"].empty())
+    R.fail("/meshes", "expected a non-empty array of meshes");
+  for (size_t I = 0; I < J["meshes"].size(); ++I) {
+    std::string P = "/meshes/" + std::to_string(I);
+    const json &M = J["meshes"][I];
+    R.checkKeys(M, P, {"obj", "material", "emission", "transform"});
+    MeshInstance Mi;
+    Mi.JsonPath = P;
+    if (!M.contains("obj"))
+      R.fail(P, "a mesh needs \"obj\" (an OBJ file)");
+    if (!M.contains("material"))
+      R.fail(P, "a mesh needs \"material\" (a material name of the texcc output)");
+    Mi.ObjPath = resolve(Dir, R.string(M["obj"], P + "/obj"));
+    Mi.Material = R.string(M["material"], P + "/material");
+    if (M.contains("emission")) {
+      Mi.Emission = R.vec3(M["emission"], P + "/emission");
+      Mi.Emissive = Mi.Emission[0] > 0 || Mi.Emission[1] > 0 || Mi.Emission[2] > 0;
+    }
+    Mi.Transform = M.contains("transform") ? parseTransform(R, M["transform"], P + "/transform")
+                                           : identity();
+    S.Meshes.push_back(Mi);
+  }
+  return S;
+}
+
+} // namespace texrender

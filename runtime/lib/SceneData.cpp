@@ -1,0 +1,265 @@
+#include "texrender/SceneData.h"
+#include "texrender/Error.h"
+
+#include <cmath>
+#include <filesystem>
+
+namespace texrender {
+
+namespace {
+
+cl_float4 f4(float X, float Y, float Z, float W = 0) {
+  cl_float4 V;
+  V.s[0] = X, V.s[1] = Y, V.s[2] = Z, V.s[3] = W;
+  return V;
+}
+cl_float4 f4(const Vec3 &V, float W = 0) { return f4(V[0], V[1], V[2], W); }
+
+Vec3 transformPoint(const std::array<float, 16> &M, const Vec3 &P) {
+  Vec3 R;
+  for (int I = 0; I < 3; ++I)
+    R[I] = M[4 * I] * P[0] + M[4 * I + 1] * P[1] + M[4 * I + 2] * P[2] + M[4 * I + 3];
+  return R;
+}
+
+/// Inverse of the upper-left 3x3 and the full affine inverse (rows of a 3x4 matrix).
+bool invertAffine(const std::array<float, 16> &M, double Inv[3][4]) {
+  double A[3][3];
+  for (int I = 0; I < 3; ++I)
+    for (int J = 0; J < 3; ++J)
+      A[I][J] = M[4 * I + J];
+  double Det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+               A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+               A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+  if (std::fabs(Det) < 1e-20)
+    return false;
+  for (int I = 0; I < 3; ++I)
+    for (int J = 0; J < 3; ++J) {
+      int I1 = (J + 1) % 3, I2 = (J + 2) % 3, J1 = (I + 1) % 3, J2 = (I + 2) % 3;
+      Inv[I][J] = (A[I1][J1] * A[I2][J2] - A[I1][J2] * A[I2][J1]) / Det;
+    }
+  for (int I = 0; I < 3; ++I)
+    Inv[I][3] = -(Inv[I][0] * M[3] + Inv[I][1] * M[7] + Inv[I][2] * M[11]);
+  return true;
+}
+
+Vec3 normalize(Vec3 V) {
+  float L = std::sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2]);
+  return L > 0 ? Vec3{V[0] / L, V[1] / L, V[2] / L} : V;
+}
+Vec3 cross(const Vec3 &A, const Vec3 &B) {
+  return {A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
+}
+Vec3 sub(const Vec3 &A, const Vec3 &B) { return {A[0] - B[0], A[1] - B[1], A[2] - B[2]}; }
+float luminance(const Vec3 &C) { return 0.2126f * C[0] + 0.7152f * C[1] + 0.0722f * C[2]; }
+
+RtBsdfInput makeInput(const LayoutInput *In, const LayoutMaterial &M, float Default) {
+  RtBsdfInput R{};
+  R.output = -1;
+  R.value = f4(Default, Default, Default, Default);
+  if (!In)
+    return R;
+  if (In->IsOutput) {
+    R.output = In->Output;
+    R.components = In->Output >= 0 && In->Output < int(M.OutputComponents.size())
+                       ? M.OutputComponents[In->Output]
+                       : 4;
+    return R;
+  }
+  const auto &C = In->Constant;
+  if (C.size() == 1)
+    R.value = f4(C[0], C[0], C[0], C[0]);
+  else
+    R.value = f4(C[0], C.size() > 1 ? C[1] : 0, C.size() > 2 ? C[2] : 0, C.size() > 3 ? C[3] : 1);
+  return R;
+}
+
+int flattenBsdf(const LayoutBsdf &B, const LayoutMaterial &M, std::vector<RtBsdfNode> &Nodes) {
+  int Idx = int(Nodes.size());
+  Nodes.push_back({});
+  RtBsdfNode N{};
+  N.a = N.b = -1;
+  if (B.Type == "diffuse" || B.Type == "glossy" || B.Type == "mirror" || B.Type == "emission") {
+    N.type = B.Type == "diffuse"  ? RT_BSDF_DIFFUSE
+             : B.Type == "glossy" ? RT_BSDF_GLOSSY
+             : B.Type == "mirror" ? RT_BSDF_MIRROR
+                                  : RT_BSDF_EMISSION;
+    N.in[0] = makeInput(B.input("color"), M, B.Type == "emission" ? 1.0f : 0.8f);
+    N.in[1] = makeInput(B.input(B.Type == "emission" ? "strength" : "roughness"), M,
+                        B.Type == "emission" ? 1.0f : 0.5f);
+  } else if (B.Type == "blend") {
+    N.type = RT_BSDF_BLEND;
+    N.in[0] = makeInput(B.input("mask"), M, 0.5f);
+    N.in[1] = makeInput(nullptr, M, 0.0f);
+    const LayoutBsdf *A = nullptr, *Bb = nullptr;
+    for (auto &C : B.Children)
+      (C.first == "a" ? A : Bb) = &C.second;
+    if (!A || !Bb)
+      throw Error("layout.json: material '" + M.Name + "': a blend needs \"a\" and \"b\"");
+    N.a = flattenBsdf(*A, M, Nodes);
+    N.b = flattenBsdf(*Bb, M, Nodes);
+  } else {
+    throw Error("layout.json: material '" + M.Name + "': unknown BSDF type '" + B.Type +
+                "' (expected diffuse, glossy, mirror, emission or blend)");
+  }
+  Nodes[Idx] = N;
+  return Idx;
+}
+
+struct GatheredMesh {
+  std::vector<Vec3> P, N;
+  std::vector<Vec2> UV;
+  std::vector<int> Mesh;
+};
+
+void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G) {
+  for (size_t MI = 0; MI < S.Meshes.size(); ++MI) {
+    const MeshInstance &Mi = S.Meshes[MI];
+    int Mat = L.findMaterial(Mi.Material);
+    if (Mat < 0)
+      throw Error(S.Path + ": " + Mi.JsonPath + "/material: unknown material '" + Mi.Material +
+                  "' (known materials in " + L.Dir + "/layout.json: " + L.materialNames() + ")");
+    if (!std::filesystem::exists(Mi.ObjPath))
+      throw Error(S.Path + ": " + Mi.JsonPath + "/obj: OBJ file not found: " + Mi.ObjPath);
+    TriangleMesh TM = loadObj(Mi.ObjPath);
+    double Inv[3][4];
+    if (!invertAffine(Mi.Transform, Inv))
+      throw Error(S.Path + ": " + Mi.JsonPath + "/transform: the matrix is singular");
+    RtMesh M{};
+    for (int R = 0; R < 3; ++R)
+      M.worldToObject[R] = f4(float(Inv[R][0]), float(Inv[R][1]), float(Inv[R][2]), float(Inv[R][3]));
+    M.emission = f4(Mi.Emission);
+    M.material = Mat;
+    D.Meshes.push_back(M);
+    for (size_t K = 0; K < TM.Positions.size(); ++K) {
+      G.P.push_back(transformPoint(Mi.Transform, TM.Positions[K]));
+      // Normals transform with the inverse transpose.
+      const Vec3 &N = TM.Normals[K];
+      G.N.push_back(normalize({float(Inv[0][0] * N[0] + Inv[1][0] * N[1] + Inv[2][0] * N[2]),
+                               float(Inv[0][1] * N[0] + Inv[1][1] * N[1] + Inv[2][1] * N[2]),
+                               float(Inv[0][2] * N[0] + Inv[1][2] * N[1] + Inv[2][2] * N[2])}));
+      G.UV.push_back(TM.UVs[K]);
+    }
+    for (size_t T = 0; T < TM.triangleCount(); ++T)
+      G.Mesh.push_back(int(MI));
+  }
+}
+
+void buildLights(const Scene &S, SceneData &D) {
+  std::vector<float> Weights;
+  for (size_t T = 0; T < D.TriAttrs.size(); ++T) {
+    const RtMesh &M = D.Meshes[D.TriAttrs[T].mesh];
+    Vec3 E{M.emission.s[0], M.emission.s[1], M.emission.s[2]};
+    if (!(E[0] > 0 || E[1] > 0 || E[2] > 0))
+      continue;
+    Vec3 C = cross(sub(D.Positions[3 * T + 1], D.Positions[3 * T]),
+                   sub(D.Positions[3 * T + 2], D.Positions[3 * T]));
+    float Area = 0.5f * std::sqrt(C[0] * C[0] + C[1] * C[1] + C[2] * C[2]);
+    if (Area <= 0)
+      continue;
+    RtLight L{};
+    L.type = RT_LIGHT_TRIANGLE;
+    L.tri = int(T);
+    L.area = Area;
+    L.radiance = M.emission;
+    D.TriAttrs[T].light = int(D.Lights.size());
+    D.Lights.push_back(L);
+    Weights.push_back(Area * std::max(luminance(E), 1e-6f) * float(M_PI));
+  }
+  float Cross = float(M_PI) * D.SceneRadius * D.SceneRadius;
+  for (const Light &Li : S.Lights) {
+    RtLight L{};
+    L.tri = -1;
+    L.radiance = f4(Li.Radiance);
+    float Lum = std::max(luminance(Li.Radiance), 1e-6f);
+    if (Li.Type == "sky") {
+      L.type = RT_LIGHT_SKY;
+      D.SkyLight = int(D.Lights.size());
+      Weights.push_back(Lum * float(M_PI) * Cross);
+    } else {
+      L.type = RT_LIGHT_SUN;
+      float CosMax = std::cos(Li.AngularRadiusDegrees * float(M_PI) / 180.0f);
+      L.dir = f4(normalize(Li.Direction), CosMax);
+      D.SunLight = int(D.Lights.size());
+      Weights.push_back(Lum * 2.0f * float(M_PI) * (1.0f - CosMax) * Cross);
+    }
+    D.Lights.push_back(L);
+  }
+  double Total = 0;
+  for (float W : Weights)
+    Total += W;
+  double Acc = 0;
+  for (size_t I = 0; I < D.Lights.size(); ++I) {
+    D.Lights[I].select = float(Weights[I] / Total);
+    Acc += Weights[I];
+    D.LightCdf.push_back(I + 1 == D.Lights.size() ? 1.0f : float(Acc / Total));
+  }
+}
+
+} // namespace
+
+void buildMaterials(const Layout &L, std::vector<RtMaterial> &Materials,
+                    std::vector<RtBsdfNode> &Nodes) {
+  Materials.assign(L.Materials.size(), RtMaterial{});
+  Nodes.clear();
+  for (const LayoutMaterial &M : L.Materials) {
+    if (M.Index < 0 || M.Index >= int(Materials.size()))
+      throw Error(L.Dir + "/layout.json: material '" + M.Name + "' has an out-of-range index");
+    RtMaterial &R = Materials[M.Index];
+    R.root = flattenBsdf(M.Bsdf, M, Nodes);
+    R.numOutputs = int(M.OutputComponents.size());
+  }
+}
+
+SceneData buildSceneData(const Scene &S, const Layout &L) {
+  SceneData D;
+  GatheredMesh G;
+  gatherMeshes(S, L, D, G);
+  Vec3 Lo{INFINITY, INFINITY, INFINITY}, Hi{-INFINITY, -INFINITY, -INFINITY};
+  for (auto &P : G.P)
+    for (int A = 0; A < 3; ++A)
+      Lo[A] = std::min(Lo[A], P[A]), Hi[A] = std::max(Hi[A], P[A]);
+  Vec3 Ext = sub(Hi, Lo);
+  D.SceneRadius = std::max(1e-3f, 0.5f * std::sqrt(Ext[0] * Ext[0] + Ext[1] * Ext[1] + Ext[2] * Ext[2]));
+  D.Tree = buildBvh(G.P);
+  size_t NT = D.Tree.Order.size();
+  D.Tris.resize(NT);
+  D.TriAttrs.resize(NT);
+  D.Positions.resize(3 * NT);
+  for (size_t K = 0; K < NT; ++K) {
+    size_t T = D.Tree.Order[K];
+    const Vec3 &A = G.P[3 * T], &B = G.P[3 * T + 1], &C = G.P[3 * T + 2];
+    D.Positions[3 * K] = A, D.Positions[3 * K + 1] = B, D.Positions[3 * K + 2] = C;
+    D.Tris[K] = {f4(A), f4(sub(B, A)), f4(sub(C, A))};
+    RtTriAttr &At = D.TriAttrs[K];
+    At = RtTriAttr{};
+    At.n0 = f4(G.N[3 * T], 1.0f);
+    At.n1 = f4(G.N[3 * T + 1]);
+    At.n2 = f4(G.N[3 * T + 2]);
+    At.uv01 = f4(G.UV[3 * T][0], G.UV[3 * T][1], G.UV[3 * T + 1][0], G.UV[3 * T + 1][1]);
+    At.uv2 = f4(G.UV[3 * T + 2][0], G.UV[3 * T + 2][1], 0);
+    At.mesh = G.Mesh[T];
+    At.light = -1;
+  }
+  buildMaterials(L, D.Materials, D.BsdfNodes);
+  buildLights(S, D);
+  return D;
+}
+
+RtCamera makeCamera(const Camera &C, int Width, int Height) {
+  Vec3 F = normalize(sub(C.Target, C.Position));
+  Vec3 R = normalize(cross(F, C.Up));
+  Vec3 U = cross(R, F);
+  float T = std::tan(C.FovDegrees * float(M_PI) / 360.0f);
+  float Aspect = float(Width) / float(Height);
+  bool OnX = C.FovAxis == "x" || (C.FovAxis == "smaller" && Width <= Height);
+  float TX = OnX ? T : T * Aspect, TY = OnX ? T / Aspect : T;
+  RtCamera Cam;
+  Cam.position = f4(C.Position);
+  Cam.forward = f4(F);
+  Cam.right = f4(R[0] * TX, R[1] * TX, R[2] * TX);
+  Cam.up = f4(U[0] * TY, U[1] * TY, U[2] * TY);
+  return Cam;
+}
+
+} // namespace texrender

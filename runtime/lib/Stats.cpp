@@ -1,0 +1,96 @@
+#include "texrender/Stats.h"
+
+namespace texrender {
+
+using nlohmann::json;
+
+json rayJson(uint64_t Count, double Seconds) {
+  return {{"count", Count},
+          {"seconds", Seconds},
+          {"perSecond", Seconds > 0 ? double(Count) / Seconds : 0.0}};
+}
+
+namespace {
+
+double kernelSeconds(const FrameStats &F, const std::string &Name) {
+  auto It = F.Kernels.find(Name);
+  return It == F.Kernels.end() ? 0.0 : It->second.Seconds;
+}
+
+json frameJson(const FrameStats &F) {
+  json Kernels = json::object();
+  double Sum = 0;
+  for (auto &[Name, T] : F.Kernels) {
+    Kernels[Name] = {{"launches", T.Launches}, {"seconds", T.Seconds}, {"workItems", T.WorkItems}};
+    Sum += T.Seconds;
+  }
+  json J;
+  J["renderSeconds"] = F.Seconds;
+  J["kernelSeconds"] = Sum;
+  J["passes"] = F.Passes;
+  J["bounces"] = F.Bounces;
+  J["kernels"] = Kernels;
+  J["rays"] = {
+      {"primary", rayJson(F.PrimaryRays, kernelSeconds(F, "closest_hit_primary"))},
+      {"bounce", rayJson(F.BounceRays, kernelSeconds(F, "closest_hit_bounce"))},
+      {"shadow", rayJson(F.ShadowRays, kernelSeconds(F, "shadow"))},
+      {"ao", rayJson(F.AoRays, kernelSeconds(F, "ao_trace"))}};
+  auto AO = F.Kernels.find("ao_trace");
+  J["ao"] = {{"launches", AO == F.Kernels.end() ? 0u : AO->second.Launches},
+             {"workItems", AO == F.Kernels.end() ? 0ull : (unsigned long long)AO->second.WorkItems},
+             {"maxWorkItemsPerLaunch", F.AoWorkItemsPerLaunchMax}};
+  return J;
+}
+
+} // namespace
+
+json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Frames,
+               double TotalSeconds) {
+  json J;
+  J["texrender"] = 1;
+  J["device"] = R.cl().deviceName();
+  J["mode"] = L.Mode;
+  const RenderSettings &S = R.settings();
+  J["image"] = {{"width", S.Width}, {"height", S.Height}, {"spp", S.Spp}, {"maxDepth", S.MaxDepth}};
+  J["triangles"] = R.sceneData().Tris.size();
+  J["bvhNodes"] = R.sceneData().Tree.Nodes.size();
+  J["lights"] = R.sceneData().Lights.size();
+  std::vector<std::string> Attrs;
+  static const char *Names[TEXCC_ATTR_COUNT] = {"WorldPos", "ObjectPos", "Normal", "GeomNormal",
+                                                "Tangent", "TexCoord0", "AO", "ViewDir"};
+  for (int I = 0; I < TEXCC_ATTR_COUNT; ++I)
+    if (R.attributeMask() & (1u << I))
+      Attrs.push_back(Names[I]);
+  J["attributesComputed"] = Attrs;
+  J["aoEnabled"] = R.runsAo();
+  J["aoSamples"] = S.AoSamples;
+  J["textureKernel"] = R.runsTextures();
+  J["kernelBuilds"] = R.cl().kernelBuilds();
+  J["programCacheHits"] = R.cl().cacheHits();
+  J["memoryBytes"] = R.cl().memoryTotal();
+  J["memory"] = R.cl().memory();
+  J["totalSeconds"] = TotalSeconds;
+  if (!Frames.empty()) {
+    json Last = frameJson(Frames.back().Frame);
+    for (auto &[K, V] : Last.items())
+      J[K] = V;
+  }
+  json Fs = json::array();
+  for (size_t I = 0; I < Frames.size(); ++I) {
+    const FrameRecord &F = Frames[I];
+    json Fj = {{"index", I},
+               {"edit", F.EditText.empty() ? json(nullptr) : json(F.EditText)},
+               {"kernelBuilds", F.KernelBuilds},
+               {"rebuilt", F.Rebuilt},
+               {"editSeconds", F.EditSeconds},
+               {"renderSeconds", F.Frame.Seconds},
+               {"editToFrameSeconds", F.EditText.empty() ? json(nullptr)
+                                                         : json(F.EditSeconds + F.Frame.Seconds)},
+               {"rays", frameJson(F.Frame)["rays"]}};
+    Fs.push_back(Fj);
+  }
+  J["frames"] = Fs;
+  return J;
+}
+
+} // namespace texrender

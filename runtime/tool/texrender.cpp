@@ -1,0 +1,290 @@
+// texrender: renders a scene with texcc's texture kernel (docs/runtime.md).
+//   texrender scene.json [--textures OUTDIR] [--spp N] [--size WxH] [--max-depth N]
+//             [--set NODE.ARG=VALUE]... [--edit-script FILE] [--device N]
+//             -o image.png|image.exr [--stats stats.json]
+// Exit 0 on success, 1 on any error, with a one-line reason first.
+#include "texrender/Error.h"
+#include "texrender/Image.h"
+#include "texrender/LiveEdit.h"
+#include "texrender/Renderer.h"
+#include "texrender/Stats.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace texrender;
+
+namespace {
+
+const char *Usage =
+    "usage: texrender scene.json -o image.png|image.exr [options]\n"
+    "  --textures DIR       texcc output folder (default: scene.json \"textures\")\n"
+    "  --spp N              samples per pixel\n"
+    "  --size WxH           image size\n"
+    "  --max-depth N        path length, Mitsuba's max_depth (1 = emitters, 2 = direct, -1 = unlimited)\n"
+    "  --ao-samples N       AO rays per hit      --ao-distance D   AO ray length\n"
+    "  --seed N             random seed\n"
+    "  --set NODE.ARG=VALUE live edit before rendering (repeatable)\n"
+    "  --edit-script FILE   render, then per line apply an edit (set NODE.ARG=VALUE |\n"
+    "                       rewire NODE.ARG=SOURCE) and render again; frame k is also\n"
+    "                       written as OUT.frameK.EXT\n"
+    "  --device N           OpenCL device (default 0; --list-devices lists them)\n"
+    "  --stats FILE         write stats.json\n"
+    "  --variance FILE.exr  write the per-pixel variance of the image (for statistical tests)\n"
+    "  --kernels DIR        fixed kernels folder (default: next to the executable)\n"
+    "  --cache-dir DIR      program-binary cache (default $XDG_CACHE_HOME/texcc); --no-cache\n"
+    "  --quiet              no progress bar\n";
+
+struct Options {
+  std::string Scene, Textures, Output, Stats, Variance, EditScript, KernelDir, CacheDir = defaultCacheDir();
+  std::optional<int> Spp, Width, Height, MaxDepth, AoSamples, Seed;
+  std::optional<float> AoDistance;
+  std::vector<std::string> Sets;
+  int Device = 0;
+  bool Quiet = false, ListDevices = false;
+};
+
+int toInt(const std::string &Opt, const std::string &V) {
+  try {
+    size_t Pos = 0;
+    int N = std::stoi(V, &Pos);
+    if (Pos == V.size())
+      return N;
+  } catch (...) {
+  }
+  throw Error(Opt + ": expected an integer, got '" + V + "'");
+}
+
+float toFloat(const std::string &Opt, const std::string &V) {
+  try {
+    size_t Pos = 0;
+    float F = std::stof(V, &Pos);
+    if (Pos == V.size())
+      return F;
+  } catch (...) {
+  }
+  throw Error(Opt + ": expected a number, got '" + V + "'");
+}
+
+Options parseArgs(int Argc, char **Argv) {
+  Options O;
+  for (int I = 1; I < Argc; ++I) {
+    std::string A = Argv[I], Value;
+    bool HasInline = false;
+    if (A.rfind("--", 0) == 0 && A.find('=') != std::string::npos && A.rfind("--set=", 0) != 0) {
+      Value = A.substr(A.find('=') + 1);
+      A = A.substr(0, A.find('='));
+      HasInline = true;
+    } else if (A.rfind("--set=", 0) == 0) {
+      Value = A.substr(6);
+      A = "--set";
+      HasInline = true;
+    }
+    auto Next = [&]() -> std::string {
+      if (HasInline)
+        return Value;
+      if (I + 1 >= Argc)
+        throw Error(A + ": missing value");
+      return Argv[++I];
+    };
+    if (A == "-h" || A == "--help") {
+      std::cout << Usage;
+      std::exit(0);
+    } else if (A == "--version") {
+      std::cout << "texrender 0.1.0\n";
+      std::exit(0);
+    } else if (A == "-o" || A == "--output") {
+      O.Output = Next();
+    } else if (A == "--textures") {
+      O.Textures = Next();
+    } else if (A == "--spp") {
+      O.Spp = toInt(A, Next());
+      if (*O.Spp < 1)
+        throw Error("--spp: expected at least 1");
+    } else if (A == "--size") {
+      std::string S = Next();
+      size_t X = S.find('x');
+      if (X == std::string::npos)
+        throw Error("--size: expected WxH, got '" + S + "'");
+      O.Width = toInt(A, S.substr(0, X));
+      O.Height = toInt(A, S.substr(X + 1));
+      if (*O.Width < 1 || *O.Height < 1)
+        throw Error("--size: width and height must be at least 1");
+    } else if (A == "--max-depth") {
+      O.MaxDepth = toInt(A, Next());
+    } else if (A == "--ao-samples") {
+      O.AoSamples = toInt(A, Next());
+      if (*O.AoSamples < 1)
+        throw Error("--ao-samples: expected at least 1");
+    } else if (A == "--ao-distance") {
+      O.AoDistance = toFloat(A, Next());
+    } else if (A == "--seed") {
+      O.Seed = toInt(A, Next());
+    } else if (A == "--set") {
+      O.Sets.push_back(Next());
+    } else if (A == "--edit-script") {
+      O.EditScript = Next();
+    } else if (A == "--device") {
+      O.Device = toInt(A, Next());
+    } else if (A == "--list-devices") {
+      O.ListDevices = true;
+    } else if (A == "--stats") {
+      O.Stats = Next();
+    } else if (A == "--variance") {
+      O.Variance = Next();
+      if (fs::path(O.Variance).extension() != ".exr")
+        throw Error("--variance " + O.Variance + ": expected an .exr file");
+    } else if (A == "--kernels") {
+      O.KernelDir = Next();
+    } else if (A == "--cache-dir") {
+      O.CacheDir = Next();
+    } else if (A == "--no-cache") {
+      O.CacheDir.clear();
+    } else if (A == "--quiet" || A == "-q") {
+      O.Quiet = true;
+    } else if (A.size() > 1 && A[0] == '-') {
+      throw Error("unknown option '" + A + "' (see --help)");
+    } else if (O.Scene.empty()) {
+      O.Scene = A;
+    } else {
+      throw Error("unexpected argument '" + A + "' (one scene file only)");
+    }
+  }
+  if (O.ListDevices)
+    return O;
+  if (O.Scene.empty())
+    throw Error("no scene file given (usage: texrender scene.json -o image.png)");
+  if (O.Output.empty())
+    throw Error("no output image given (-o image.png or -o image.exr)");
+  std::string Ext = fs::path(O.Output).extension().string();
+  if (Ext != ".png" && Ext != ".exr" && Ext != ".PNG" && Ext != ".EXR")
+    throw Error("-o " + O.Output + ": unknown image format (expected .png or .exr)");
+  return O;
+}
+
+std::vector<Edit> readEditScript(const std::string &Path) {
+  std::ifstream In(Path);
+  if (!In)
+    throw Error(Path + ": cannot open edit script");
+  std::vector<Edit> Edits;
+  std::string Line;
+  for (int N = 1; std::getline(In, Line); ++N) {
+    size_t B = Line.find_first_not_of(" \t\r");
+    if (B == std::string::npos || Line[B] == '#')
+      continue;
+    try {
+      Edits.push_back(parseEdit(Line));
+    } catch (const Error &E) {
+      throw Error(Path + ":" + std::to_string(N) + ": " + E.what());
+    }
+  }
+  return Edits;
+}
+
+std::string frameName(const std::string &Out, size_t K) {
+  fs::path P(Out);
+  return (P.parent_path() / (P.stem().string() + ".frame" + std::to_string(K) + P.extension().string()))
+      .string();
+}
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+int run(int Argc, char **Argv) {
+  double T0 = now();
+  Options O = parseArgs(Argc, Argv);
+  if (O.ListDevices) {
+    auto Devs = listDevices();
+    if (Devs.empty())
+      throw Error("no OpenCL device found");
+    for (auto &D : Devs)
+      std::cout << D << "\n";
+    return 0;
+  }
+  Scene S = loadScene(O.Scene);
+  if (O.Spp) S.Render.Spp = *O.Spp;
+  if (O.Width) S.Render.Width = *O.Width, S.Render.Height = *O.Height;
+  if (O.MaxDepth) S.Render.MaxDepth = *O.MaxDepth;
+  if (O.AoSamples) S.Render.AoSamples = *O.AoSamples;
+  if (O.AoDistance) S.Render.AoDistance = *O.AoDistance;
+  if (O.Seed) S.Render.Seed = unsigned(*O.Seed);
+  std::string TexDir = O.Textures.empty() ? S.TexturesDir : O.Textures;
+  if (TexDir.empty())
+    throw Error(O.Scene + ": no texture folder: give --textures OUTDIR or \"textures\" in the scene");
+  Layout L = loadLayout(TexDir);
+  std::vector<Edit> Script = O.EditScript.empty() ? std::vector<Edit>() : readEditScript(O.EditScript);
+  std::vector<Edit> Sets;
+  for (auto &Text : O.Sets)
+    Sets.push_back(parseEdit(Text));
+
+  RendererOptions RO;
+  RO.Device = O.Device;
+  RO.CacheDir = O.CacheDir;
+  RO.KernelDir = O.KernelDir;
+  RO.Progress = !O.Quiet && isatty(2);
+  Renderer R(S, L, RO);
+  std::unique_ptr<LiveEditor> Editor;
+  if (!Sets.empty() || !Script.empty())
+    Editor = std::make_unique<LiveEditor>(L);
+
+  std::vector<FrameRecord> Frames;
+  FrameRecord First;
+  for (auto &E : Sets) {
+    EditResult Res = Editor->apply(E, R);
+    First.EditSeconds += Res.Seconds;
+    First.Rebuilt |= Res.Rebuilt;
+  }
+  std::vector<float> Variance;
+  std::vector<float> Image = R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance);
+  if (!O.Variance.empty())
+    writeImage(O.Variance, S.Render.Width, S.Render.Height, Variance);
+  First.KernelBuilds = R.cl().kernelBuilds();
+  Frames.push_back(First);
+  unsigned BuildsSoFar = R.cl().kernelBuilds();
+  if (!Script.empty())
+    writeImage(frameName(O.Output, 0), S.Render.Width, S.Render.Height, Image);
+  for (size_t K = 0; K < Script.size(); ++K) {
+    FrameRecord F;
+    F.EditText = Script[K].Text;
+    EditResult Res = Editor->apply(Script[K], R);
+    F.EditSeconds = Res.Seconds;
+    F.Rebuilt = Res.Rebuilt;
+    Image = R.render(F.Frame);
+    F.KernelBuilds = R.cl().kernelBuilds() - BuildsSoFar;
+    BuildsSoFar = R.cl().kernelBuilds();
+    Frames.push_back(F);
+    writeImage(frameName(O.Output, K + 1), S.Render.Width, S.Render.Height, Image);
+  }
+  writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
+  if (!O.Stats.empty()) {
+    std::ofstream Out(O.Stats);
+    if (!Out)
+      throw Error(O.Stats + ": cannot write stats");
+    Out << statsJson(R, L, Frames, now() - T0).dump(2) << "\n";
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int Argc, char **Argv) {
+  try {
+    return run(Argc, Argv);
+  } catch (const Error &E) {
+    std::fprintf(stderr, "texrender: error: %s\n", E.what());
+  } catch (const cl::Error &E) {
+    std::fprintf(stderr, "texrender: error: OpenCL call %s failed: %s\n", E.what(),
+                 clErrorName(E.err()).c_str());
+  } catch (const std::exception &E) {
+    std::fprintf(stderr, "texrender: error: %s\n", E.what());
+  }
+  return 1;
+}

@@ -1,0 +1,180 @@
+// Device tests (skipped without an OpenCL device): the OpenCL BVH traversal against host brute
+// force, and the AO kernels (one launch of hits x N work-items) against a brute-force host AO.
+#include "texrender/Bvh.h"
+#include "texrender/Error.h"
+#include "texrender/Layout.h"
+#include "texrender/Renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace texrender;
+
+namespace {
+
+std::string sourceDir() {
+  if (const char *S = std::getenv("TEXCC_SRC"))
+    return S;
+  return TEXRENDER_SOURCE_DIR;
+}
+
+fs::path tempDir(const std::string &Name) {
+  fs::path D = fs::temp_directory_path() / ("texrender-dev-" + Name + "-" + std::to_string(::getpid()));
+  fs::create_directories(D);
+  return D;
+}
+
+/// A scene of one or more OBJ files with the hand-written cornell layout ("white" material).
+struct TestScene {
+  Scene S;
+  Layout L;
+};
+
+TestScene makeScene(const fs::path &Dir, const std::vector<std::string> &Objs, int Size) {
+  TestScene T;
+  T.L = loadLayout(sourceDir() + "/testsuite/Inputs/runtime/cornell-tex");
+  T.S.Path = (Dir / "scene.json").string();
+  T.S.Cam.Position = {0.0f, 1.5f, 3.0f};
+  T.S.Cam.Target = {0.0f, 0.0f, 0.0f};
+  T.S.Cam.FovDegrees = 50;
+  T.S.Render.Width = T.S.Render.Height = Size;
+  T.S.Render.Spp = 1;
+  for (size_t I = 0; I < Objs.size(); ++I) {
+    fs::path P = Dir / ("m" + std::to_string(I) + ".obj");
+    std::ofstream(P) << Objs[I];
+    MeshInstance M;
+    M.ObjPath = P.string();
+    M.Material = "white";
+    M.Transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    M.JsonPath = "/meshes/" + std::to_string(I);
+    T.S.Meshes.push_back(M);
+  }
+  return T;
+}
+
+bool haveDevice() { return !listDevices().empty(); }
+
+RendererOptions testOptions() {
+  RendererOptions O;
+  O.CacheDir = (fs::temp_directory_path() / "texrender-test-cache").string();
+  if (!std::getenv("TEXRENDER_KERNELS"))
+    O.KernelDir = TEXRENDER_KERNEL_DIR;
+  return O;
+}
+
+const char *FloorAndCube =
+    "v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nvn 0 1 0\nf 1//1 4//1 3//1 2//1\n"
+    "v -0.4 0 -0.4\nv 0.4 0 -0.4\nv 0.4 0 0.4\nv -0.4 0 0.4\n"
+    "v -0.4 0.8 -0.4\nv 0.4 0.8 -0.4\nv 0.4 0.8 0.4\nv -0.4 0.8 0.4\n"
+    "f 9 10 11 12\nf 5 6 10 9\nf 6 7 11 10\nf 7 8 12 11\nf 8 5 9 12\n";
+
+Vec3 v3(const cl_float4 &V) { return {V.s[0], V.s[1], V.s[2]}; }
+
+} // namespace
+
+TEST(Device, ClosestHitMatchesBruteForce) {
+  if (!haveDevice())
+    GTEST_SKIP() << "no OpenCL device";
+  std::mt19937 Rng(7);
+  std::uniform_real_distribution<float> U(-1.0f, 1.0f), S(0.02f, 0.3f);
+  std::string Obj;
+  for (int T = 0; T < 400; ++T) {
+    float Cx = U(Rng), Cy = U(Rng) * 0.5f + 0.5f, Cz = U(Rng);
+    for (int K = 0; K < 3; ++K)
+      Obj += "v " + std::to_string(Cx + U(Rng) * S(Rng)) + " " + std::to_string(Cy + U(Rng) * S(Rng)) +
+             " " + std::to_string(Cz + U(Rng) * S(Rng)) + "\n";
+    Obj += "f " + std::to_string(3 * T + 1) + " " + std::to_string(3 * T + 2) + " " +
+           std::to_string(3 * T + 3) + "\n";
+  }
+  TestScene T = makeScene(tempDir("bvh"), {Obj}, 48);
+  Renderer R(T.S, T.L, testOptions());
+  FrameStats Stats;
+  uint32_t Mask = (1u << TEXCC_ATTR_WORLDPOS) | (1u << TEXCC_ATTR_VIEWDIR);
+  auto Attrs = R.primaryHitAttributes(Mask, Stats);
+  const auto &P = R.sceneData().Positions;
+  int Hits = 0, Mismatch = 0;
+  for (auto &A : Attrs) {
+    Vec3 D = v3(A.viewDir);
+    D = {-D[0], -D[1], -D[2]};
+    HostHit Ref = traceBruteForce(P, T.S.Cam.Position, D, 0.0f, 1e30f);
+    bool DevHit = A.worldPos.s[3] == 1.0f;
+    if (DevHit != (Ref.Tri >= 0)) {
+      ++Mismatch;
+      continue;
+    }
+    if (!DevHit)
+      continue;
+    ++Hits;
+    for (int C = 0; C < 3; ++C)
+      EXPECT_NEAR(A.worldPos.s[C], T.S.Cam.Position[C] + Ref.T * D[C], 1e-3);
+  }
+  // Rays grazing a shared edge may legitimately differ; nothing else may.
+  EXPECT_LE(Mismatch, 2);
+  EXPECT_GT(Hits, 200);
+}
+
+TEST(Device, AmbientOcclusionOneLaunchMatchesBruteForce) {
+  if (!haveDevice())
+    GTEST_SKIP() << "no OpenCL device";
+  const int Size = 24, N = 64;
+  const float Dist = 0.5f;
+  TestScene T = makeScene(tempDir("ao"), {FloorAndCube}, Size);
+  T.S.Render.AoSamples = N;
+  T.S.Render.AoDistance = Dist;
+  Renderer R(T.S, T.L, testOptions());
+  FrameStats Stats;
+  uint32_t Mask = (1u << TEXCC_ATTR_WORLDPOS) | (1u << TEXCC_ATTR_NORMAL) |
+                  (1u << TEXCC_ATTR_GEOMNORMAL) | (1u << TEXCC_ATTR_AO);
+  auto Attrs = R.primaryHitAttributes(Mask, Stats);
+  // One AO launch of (hits incl. misses) x N work-items, then one reduction.
+  ASSERT_EQ(Stats.Kernels.count("ao_trace"), 1u);
+  EXPECT_EQ(Stats.Kernels.at("ao_trace").Launches, 1u);
+  EXPECT_EQ(Stats.Kernels.at("ao_trace").WorkItems, uint64_t(Size) * Size * N);
+  EXPECT_EQ(Stats.Kernels.at("ao_reduce").Launches, 1u);
+
+  const auto &P = R.sceneData().Positions;
+  std::mt19937 Rng(11);
+  std::uniform_real_distribution<float> U(0.0f, 1.0f);
+  int Hits = 0, Outliers = 0;
+  double SumDev = 0, SumHost = 0;
+  for (auto &A : Attrs) {
+    if (A.worldPos.s[3] != 1.0f)
+      continue;
+    ++Hits;
+    Vec3 Pos = v3(A.worldPos), Nrm = v3(A.normal), Ng = v3(A.geomNormal);
+    // Brute force: 1024 cosine-weighted rays against every triangle.
+    Vec3 Tn = std::fabs(Nrm[0]) > 0.5f ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+    Vec3 Bt = {Nrm[1] * Tn[2] - Nrm[2] * Tn[1], Nrm[2] * Tn[0] - Nrm[0] * Tn[2], Nrm[0] * Tn[1] - Nrm[1] * Tn[0]};
+    float L = std::sqrt(Bt[0] * Bt[0] + Bt[1] * Bt[1] + Bt[2] * Bt[2]);
+    for (auto &C : Bt) C /= L;
+    Tn = {Bt[1] * Nrm[2] - Bt[2] * Nrm[1], Bt[2] * Nrm[0] - Bt[0] * Nrm[2], Bt[0] * Nrm[1] - Bt[1] * Nrm[0]};
+    float Eps = 1e-4f * (1.0f + std::max({std::fabs(Pos[0]), std::fabs(Pos[1]), std::fabs(Pos[2])}));
+    Vec3 O = {Pos[0] + Eps * Ng[0], Pos[1] + Eps * Ng[1], Pos[2] + Eps * Ng[2]};
+    const int M = 1024;
+    int Occ = 0;
+    for (int K = 0; K < M; ++K) {
+      float R1 = U(Rng), Phi = 2 * float(M_PI) * U(Rng), Rr = std::sqrt(R1), Z = std::sqrt(1 - R1);
+      float X = Rr * std::cos(Phi), Y = Rr * std::sin(Phi);
+      Vec3 D = {X * Tn[0] + Y * Bt[0] + Z * Nrm[0], X * Tn[1] + Y * Bt[1] + Z * Nrm[1],
+                X * Tn[2] + Y * Bt[2] + Z * Nrm[2]};
+      Occ += traceBruteForce(P, O, D, 0.0f, Dist).Tri >= 0;
+    }
+    double Host = 1.0 - double(Occ) / M, Dev = A.uvAO.s[2];
+    double Sigma = std::sqrt(std::max(Host * (1 - Host), 1.0 / M) / N + Host * (1 - Host) / M);
+    if (std::fabs(Dev - Host) > 4.5 * Sigma + 1e-3)
+      ++Outliers;
+    SumDev += Dev, SumHost += Host;
+  }
+  ASSERT_GT(Hits, 100);
+  EXPECT_LE(Outliers, 2) << "of " << Hits << " hits";
+  EXPECT_NEAR(SumDev / Hits, SumHost / Hits, 0.01);
+  EXPECT_LT(SumHost / Hits, 0.97) << "the scene should have visible occlusion";
+  EXPECT_EQ(Stats.AoRays, uint64_t(Hits) * N);
+}

@@ -1,0 +1,88 @@
+#ifndef TEXCC_CODEGEN_CODEGEN_H
+#define TEXCC_CODEGEN_CODEGEN_H
+
+// Code generation: from a compiled graph and the rendered user code to the texture kernel of one
+// evaluation mode (proctex.cl), or to C++ for the host (proctex.cpp), plus layout.json and the
+// Graphviz dump. No LLVM: the generators work on graph::CompiledGraph and plain text. The kernel
+// ABI (entry points, arguments, args.bin) is docs/abi.md; the modes are docs/modes.md.
+
+#include "texcc/Graph/Compile.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace texcc::codegen {
+
+enum class Mode { Interp, Inline, Wavefront };
+enum class Target { OpenCL, Host };
+
+/// "interp" | "inline" | "wavefront"; std::nullopt for anything else ("shape" included).
+std::optional<Mode> parseMode(const std::string &S);
+std::optional<Target> parseTarget(const std::string &S);
+const char *modeName(Mode M);
+const char *targetName(Target T);
+
+struct CodegenOptions {
+  Mode EvalMode = Mode::Interp;
+  Target Tgt = Target::OpenCL;
+  /// Absolute path of graph.json (layout.json "graph", the kernel's header comment).
+  std::string GraphPath;
+  /// The user code, already renamed and lowered by the front end and restricted to the functions
+  /// reachable from live nodes (TranslatedSource::render(Keep) of every source, concatenated).
+  /// For Target::Host it is rewritten by rewriteVectorLiteralsForHost() here.
+  std::string UserCode;
+};
+
+/// The entry points every mode's kernel defines (docs/abi.md).
+constexpr const char *KernelEntry = "texcc_proctex";          // interp, inline
+constexpr const char *WavefrontOutputsEntry = "texcc_wf_outputs";
+constexpr const char *HostEntry = "texcc_host_evaluate";     // target host (extern "C")
+/// "texcc_wf_<NodeIndex>".
+std::string wavefrontKernelName(unsigned NodeIndex);
+
+/// "proctex.cl" or "proctex.cpp".
+std::string kernelFileName(Target T);
+
+/// The generated kernel text: header comment, TEXCC_* macros, the verbatim ABI and device
+/// headers (or the host prelude), the user code, then the mode's evaluation code and kernels.
+std::string generateKernel(const graph::CompiledGraph &CG, const CodegenOptions &Opts);
+
+/// layout.json: graph::layoutJson() plus "mode", "target", "graph" and "kernel" (the entry
+/// points and, for wavefront, the launch plan) and "scratchFloat4PerHit".
+std::string generateLayout(const graph::CompiledGraph &CG, const CodegenOptions &Opts);
+
+/// Graphviz dot of the compiled graph: nodes with their arguments (sources, record and parameter
+/// offsets), program order and result stack slot per material, material outputs.
+std::string generateGraphDot(const graph::CompiledGraph &CG);
+
+/// OpenCL vector literals `(float3)(a, b, c)` parse as a cast of a comma expression in C++;
+/// rewrites them (outside comments, strings and character literals) to constructor calls
+/// `float3(a, b, c)` for the host target. Everything else is left byte for byte.
+std::string rewriteVectorLiteralsForHost(const std::string &Code);
+
+/// The files of one texcc run, by name inside OUTDIR.
+struct OutputFile {
+  std::string Name;
+  std::string Contents;
+};
+
+/// proctex.cl|proctex.cpp, layout.json, args.bin, and graph.dot when DumpGraph.
+std::vector<OutputFile> generateOutputs(const graph::CompiledGraph &CG,
+                                        const CodegenOptions &Opts, bool DumpGraph);
+
+/// Writes every file to a temporary name inside Dir (created if missing), then renames them all
+/// into place. On any error the temporaries are removed, earlier outputs stay untouched, Error
+/// says why, and the result is false.
+bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile> &Files,
+                            std::string &Error);
+
+/// The verbatim texts embedded at build time (kernels/common/texcc_abi.h, texcc_device.h, and
+/// the host prelude HostPrelude.hpp).
+const std::string &abiHeaderText();
+const std::string &deviceHeaderText();
+const std::string &hostPreludeText();
+
+} // namespace texcc::codegen
+
+#endif

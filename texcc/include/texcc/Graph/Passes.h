@@ -1,0 +1,59 @@
+#ifndef TEXCC_GRAPH_PASSES_H
+#define TEXCC_GRAPH_PASSES_H
+
+// The steps of compileGraph(), exposed one by one so that each can be tested alone (as Cycles
+// tests its shader-graph passes): build a small graph, run one pass, look at the result. Each
+// pass writes one line per decision to Log when it is not null.
+
+#include "texcc/Graph/Compile.h"
+
+#include <optional>
+#include <ostream>
+
+namespace texcc::graph {
+
+/// Validation: resolves every node (file order, nothing removed) and material against the
+/// signatures. Nodes keep their graph.json order; material outputs are the distinct nodes the
+/// BSDF tree reads, in tree order. Programs, slots and layout are left empty.
+std::optional<CompiledGraph> resolveGraph(const Graph &G, const SignatureMap &Sigs,
+                                          const CompileOptions &Opts, DiagnosticSink &Diags);
+
+/// Removes nodes that no material output reaches.
+void removeUnreachableNodes(CompiledGraph &CG, std::ostream *Log);
+/// Merges nodes with the same function and the same arguments (after merging their children):
+/// the first in file order survives and records the others in MergedIds.
+void mergeIdenticalNodes(CompiledGraph &CG, std::ostream *Log);
+/// Function ids: Opts.FixedFunctionIds first, then the next free ids in node order. Also fills
+/// Signatures, FunctionsById, Attributes, Settings and MaxOutputs from the live nodes.
+void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const CompileOptions &Opts,
+                       std::ostream *Log);
+/// Slots a node's evaluation needs (Sethi-Ullman), by node index.
+std::vector<unsigned> slotNeeds(const CompiledGraph &CG);
+/// A DFS topological program per material, children first; among a node's children the one
+/// needing more slots is evaluated first.
+void orderPrograms(CompiledGraph &CG, std::ostream *Log);
+/// Liveness-based value-stack slots: a slot is free after its last reader; outputs stay live to
+/// the end. Sets ResultSlot, output slots, StackSlots (exact peak), StackLimit, Spill.
+void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Log);
+/// A topological order of all live nodes (the wavefront launch order).
+void computeWavefrontOrder(CompiledGraph &CG, std::ostream *Log);
+/// Parameter blocks (OpenCL alignment), records (16-aligned), record copies, array data,
+/// program word offsets.
+void layoutArguments(CompiledGraph &CG, std::ostream *Log);
+/// Writes ArgsBin from the layout (docs/abi.md).
+void encodeArgsBin(CompiledGraph &CG);
+
+/// Byte offsets of one parameter block: the offset of each parameter, and the block size
+/// (a multiple of 16).
+std::vector<uint32_t> parameterOffsets(const FunctionSignature &Sig, uint32_t &BlockSize);
+/// Where the parameter block of a record of N starts.
+uint32_t parameterBlockStart(const CompiledNode &N, uint32_t RecordOffset);
+/// Writes a constant argument's value into Bin: into the parameter block starting at
+/// BlockStart, and for an array its elements at ArrayByteOffset. Nothing for other sources.
+void encodeArgumentValue(std::vector<uint8_t> &Bin, uint32_t BlockStart, const CompiledArg &A);
+/// The source word of an argument (docs/abi.md), given the slot a node argument reads.
+uint32_t sourceWord(const CompiledArg &A, unsigned Slot);
+
+} // namespace texcc::graph
+
+#endif

@@ -1,0 +1,182 @@
+// Helpers shared by the generators of every mode (see Emit.h).
+#include "Emit.h"
+
+#include <cmath>
+#include <cstdio>
+
+using namespace texcc::graph;
+
+namespace texcc::codegen {
+
+std::string floatLiteral(double V) {
+  char Buf[64];
+  std::snprintf(Buf, sizeof(Buf), "%.9g", static_cast<double>(static_cast<float>(V)));
+  std::string S = Buf;
+  if (S.find_first_of(".eEn") == std::string::npos)
+    S += ".0";
+  return S + "f";
+}
+
+std::string intLiteral(double V) {
+  return std::to_string(static_cast<long long>(std::llround(V)));
+}
+
+std::string vectorCtor(BaseType B, Target T) {
+  std::string Name = spelling(B);
+  return T == Target::Host ? Name : "(" + Name + ")";
+}
+
+std::string constantLiteral(BaseType B, const double *Values, Target T) {
+  if (B == BaseType::Int || B == BaseType::Sampler)
+    return intLiteral(Values[0]);
+  unsigned N = componentCount(B);
+  if (N == 1)
+    return floatLiteral(Values[0]);
+  std::string S = vectorCtor(B, T) + "(";
+  for (unsigned I = 0; I < N; ++I)
+    S += (I ? ", " : "") + floatLiteral(Values[I]);
+  return S + ")";
+}
+
+std::string widenToFloat4(BaseType B, const std::string &Expr, Target T) {
+  std::string F4 = vectorCtor(BaseType::Float4, T);
+  switch (B) {
+  case BaseType::Float:
+    return F4 + "(" + Expr + ", 0.0f, 0.0f, 0.0f)";
+  case BaseType::Float2:
+    return F4 + "(" + Expr + ", 0.0f, 0.0f)";
+  case BaseType::Float3:
+    return F4 + "(" + Expr + ", 0.0f)";
+  default:
+    return Expr;
+  }
+}
+
+std::string narrowSwizzle(BaseType B) {
+  switch (B) {
+  case BaseType::Float:
+    return ".x";
+  case BaseType::Float2:
+    return ".xy";
+  case BaseType::Float3:
+    return ".xyz";
+  default:
+    return "";
+  }
+}
+
+std::string nodeLocalName(const CompiledNode &N, unsigned Index) {
+  std::string S = "v" + std::to_string(Index) + "_";
+  for (char C : N.Id) {
+    if (S.size() >= 32)
+      break;
+    bool Ok = (C >= 'a' && C <= 'z') || (C >= 'A' && C <= 'Z') || (C >= '0' && C <= '9');
+    S += Ok ? C : '_';
+  }
+  return S;
+}
+
+std::string kernelParameterList() {
+  return "    __global const TexccHitAttrs *hits,\n"
+         "    __global const int *hitMaterial,\n"
+         "    int numHits,\n"
+         "    __global const uint *fakeStack,\n"
+         "    __global const TexccSettings *settings,\n"
+         "    __global const float4 *texels,\n"
+         "    __global const TexccImageInfo *images,\n"
+         "    __global float4 *outputs,\n"
+         "    __global float4 *scratch";
+}
+
+void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard) {
+  OS << "  const int gid = (int)get_global_id(0);\n"
+     << "  if (gid >= numHits)\n"
+     << "    return;\n"
+     << "  const int mat = hitMaterial[gid];\n"
+     << "  if (mat < 0 || mat >= TEXCC_NUM_MATERIALS" << Guard << ")\n"
+     << "    return;\n"
+     << "  TexccCtx ctx;\n"
+     << "  ctx.hit = hits[gid];\n"
+     << "  ctx.settings = settings;\n"
+     << "  ctx.texels = texels;\n"
+     << "  ctx.images = images;\n"
+     << "  const TexccCtx *texcc_ctx = &ctx;\n";
+}
+
+std::string signatureComment(const FunctionSignature &Sig) {
+  std::string S = spelling(Sig.Return) + " " + Sig.Name + "(";
+  for (size_t I = 0; I < Sig.Params.size(); ++I)
+    S += (I ? ", " : "") + spelling(Sig.Params[I].Type) + " " + Sig.Params[I].Name;
+  return S + ")";
+}
+
+uint32_t constantWord(const CompiledNode &N, const CompiledArg &A) {
+  uint32_t SourceWords = (static_cast<uint32_t>(N.Args.size()) * 4 + 15) / 16 * 16;
+  return (N.RecordOffset + SourceWords + A.BlockOffset) / 4;
+}
+
+std::string hostArrayName(unsigned NodeIndex, const CompiledArg &A) {
+  return "texcc_array_" + std::to_string(NodeIndex) + "_" + A.Name;
+}
+
+static std::string fakeStackConstant(const CompiledNode &N, const CompiledArg &A) {
+  std::string W = std::to_string(constantWord(N, A)) + "u";
+  switch (A.Type.Base) {
+  case BaseType::Float:
+    return "as_float(fakeStack[" + W + "])";
+  case BaseType::Int:
+  case BaseType::Sampler:
+    return "as_int(fakeStack[" + W + "])";
+  default:
+    return "vload" + std::to_string(componentCount(A.Type.Base)) +
+           "(0, (__global const float *)fakeStack + " + W + ")";
+  }
+}
+
+std::string ArgEmitter::argument(const CompiledGraph &CG, const CompiledNode &N,
+                                 unsigned NodeIndex, const CompiledArg &A) const {
+  const BaseType B = A.Type.Base;
+  if (A.Type.IsGlobalArray) {
+    if (Tgt == Target::Host)
+      return hostArrayName(NodeIndex, A);
+    return "(__global const " + spelling(B) + " *)((__global const uchar *)fakeStack + " +
+           std::to_string(A.ArrayByteOffset) + "u)";
+  }
+  std::string E;
+  switch (A.Src) {
+  case CompiledArg::Source::Constant:
+    if (BakeConstants)
+      return constantLiteral(B, A.Values.data(), Tgt);
+    return fakeStackConstant(N, A);
+  case CompiledArg::Source::Attribute:
+    E = "texcc_attr_" + attributeTable().at(A.AttrId).first + "(texcc_ctx)";
+    break;
+  case CompiledArg::Source::Node:
+    E = ChildExpr(CG, A.NodeIndex, Tgt);
+    break;
+  }
+  if (A.Broadcast)
+    return vectorCtor(B, Tgt) + "(" + E + ")";
+  return E;
+}
+
+std::string ArgEmitter::call(const CompiledGraph &CG, unsigned NodeIndex) const {
+  const CompiledNode &N = CG.Nodes[NodeIndex];
+  const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
+  std::string S = Sig.RenamedName + "(texcc_ctx";
+  for (const CompiledArg &A : N.Args)
+    S += ", " + argument(CG, N, NodeIndex, A);
+  return S + ")";
+}
+
+std::string describeOutputs(const CompiledGraph &CG, const CompiledMaterial &M) {
+  std::string S;
+  for (size_t K = 0; K < M.Outputs.size(); ++K) {
+    const MaterialOutput &O = M.Outputs[K];
+    S += (K ? ", " : "") + std::string("out") + std::to_string(K) + " = node " +
+         std::to_string(O.Node) + " '" + CG.Nodes[O.Node].Id + "'";
+  }
+  return S.empty() ? "no texture outputs" : S;
+}
+
+} // namespace texcc::codegen

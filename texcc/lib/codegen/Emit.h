@@ -1,0 +1,80 @@
+#ifndef TEXCC_LIB_CODEGEN_EMIT_H
+#define TEXCC_LIB_CODEGEN_EMIT_H
+
+// Helpers shared by the generators of every mode: literals, type spellings, the kernel ABI
+// argument list, the hit-context setup, and per-node expressions for modes that bake the graph's
+// structure into the code (inline, wavefront, host).
+
+#include "texcc/Codegen/Codegen.h"
+
+#include <sstream>
+#include <string>
+
+namespace texcc::codegen {
+
+/// `4.0f`, `-0.5f`, `1e-10f`: the float nearest to V, printed so that it reads back exactly.
+std::string floatLiteral(double V);
+/// `6`, `-2`: V rounded to an int32.
+std::string intLiteral(double V);
+/// A constant value of type B as an expression: `0.5f`, `(float3)(1.0f, 2.0f, 3.0f)` (OpenCL) or
+/// `float3(1.0f, 2.0f, 3.0f)` (host), `6` for int and sam2D.
+std::string constantLiteral(graph::BaseType B, const double *Values, Target T);
+/// Widens an expression of type B to float4 (the value stack's and the scratch's element type).
+std::string widenToFloat4(graph::BaseType B, const std::string &Expr, Target T);
+/// `.x`, `.xy`, `.xyz` or `` (float4): narrows a float4 to B.
+std::string narrowSwizzle(graph::BaseType B);
+/// A vector constructor prefix: `(float3)` in OpenCL, `float3` on the host.
+std::string vectorCtor(graph::BaseType B, Target T);
+/// A C identifier made of a node id: `v3_rust_mask` for node 3 with id "rust-mask".
+std::string nodeLocalName(const graph::CompiledNode &N, unsigned Index);
+
+/// The kernel parameters of docs/abi.md, identical for every mode, one per line, indented.
+std::string kernelParameterList();
+/// The common opening of every texture kernel: the work-item's hit, its material (Guard is
+/// an extra return condition, may be empty) and the hit context `texcc_ctx`.
+void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard);
+
+/// The parameter/return spelling of a texture function, e.g. "float fbm3(float3 p, int n)".
+std::string signatureComment(const graph::FunctionSignature &Sig);
+
+/// The expression of a structural argument of node N (inline, wavefront, host):
+/// - Attribute: `texcc_attr_AO(texcc_ctx)`, broadcast with a vector constructor if needed.
+/// - Node: ChildExpr(child index), already of the child's return type, broadcast if needed.
+/// - Constant: a literal (BakeConstants) or a read of the record's parameter block in
+///   `fakeStack` (the argument's value can then change without a rebuild).
+/// - Array: a pointer into `fakeStack` (OpenCL: a __global parameter cannot point at a
+///   program-scope __constant array) or, on the host, the named static array HostArrayName.
+struct ArgEmitter {
+  Target Tgt = Target::OpenCL;
+  bool BakeConstants = true;
+  std::string (*ChildExpr)(const graph::CompiledGraph &, unsigned Child, Target) = nullptr;
+  std::string argument(const graph::CompiledGraph &CG, const graph::CompiledNode &N,
+                       unsigned NodeIndex, const graph::CompiledArg &A) const;
+  /// `fn(texcc_ctx, arg0, arg1, ...)` for node NodeIndex.
+  std::string call(const graph::CompiledGraph &CG, unsigned NodeIndex) const;
+};
+
+/// The name of the static array that holds the host literal of an array argument.
+std::string hostArrayName(unsigned NodeIndex, const graph::CompiledArg &A);
+
+/// Word index of a parameter's first constant word inside args.bin.
+uint32_t constantWord(const graph::CompiledNode &N, const graph::CompiledArg &A);
+
+/// The materials' outputs in a human line: "rusty: out0 = node 2 'mask' (float)".
+std::string describeOutputs(const graph::CompiledGraph &CG, const graph::CompiledMaterial &M);
+
+/// "texcc_material_<index>".
+std::string materialFunctionName(const graph::CompiledMaterial &M);
+/// The straight-line function of one material (inline mode, host target).
+void emitStraightLineMaterial(std::ostringstream &OS, const graph::CompiledGraph &CG,
+                              const graph::CompiledMaterial &M, Target T);
+
+/// Mode-specific generators (the evaluation code and kernels after the user code).
+void emitInterp(std::ostringstream &OS, const graph::CompiledGraph &CG);
+void emitInline(std::ostringstream &OS, const graph::CompiledGraph &CG);
+void emitWavefront(std::ostringstream &OS, const graph::CompiledGraph &CG);
+void emitHost(std::ostringstream &OS, const graph::CompiledGraph &CG);
+
+} // namespace texcc::codegen
+
+#endif

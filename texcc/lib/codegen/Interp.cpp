@@ -1,0 +1,133 @@
+// interp: the restricted mega-kernel. Per hit, the material's program in fakeStack is a loop
+// over {fnId, resultSlot, recordByteOffset}; every argument is decoded from its source word
+// (docs/abi.md); one switch case per live texture function calls it once per node.
+#include "Emit.h"
+
+using namespace texcc::graph;
+
+namespace texcc::codegen {
+
+static void emitDecoder(std::ostringstream &OS, bool Spill) {
+  OS << "/* Where value-stack slot s of this work-item lives: the private array, or (TEXCC_SPILL)\n"
+        " * the global scratch slice, slot s of hit gid at s*numHits + gid. */\n";
+  if (Spill)
+    OS << "#define TEXCC_SLOT(s) scratch[(s) * (uint)numHits + (uint)gid]\n";
+  else
+    OS << "#define TEXCC_SLOT(s) stack[s]\n";
+  OS << "\n/* The program of material mat: the blocks of all materials follow each other from word 0\n"
+        " * (numInstructions, numOutputs, 3 words per instruction, 1 per output). */\n"
+        "inline uint texcc_program(__global const uint *fs, int mat) {\n"
+        "  uint at = 0u;\n"
+        "  for (int m = 0; m < mat; ++m)\n"
+        "    at += 2u + 3u * fs[at] + fs[at + 1u];\n"
+        "  return at;\n"
+        "}\n\n";
+  const char *StackParam = Spill ? "__global const float4 *scratch, int numHits, int gid"
+                                 : "const float4 *stack";
+  OS << "/* Decodes one argument of a float..float4 parameter from its source word src: a constant\n"
+        " * of n floats at word at of the record's parameter block, a value-stack slot or an\n"
+        " * attribute, widened to float4; the broadcast bit replicates .x (a float feeding a\n"
+        " * float2..4 parameter). */\n"
+        "inline float4 texcc_arg(const TexccCtx *c, __global const uint *fs, uint src, uint at,\n"
+        "                        uint n, "
+     << StackParam
+     << ") {\n"
+        "  float4 v;\n"
+        "  switch (src >> 30) {\n"
+        "  case 1u:\n"
+        "    v = TEXCC_SLOT(src & 0xFFFFu);\n"
+        "    break;\n"
+        "  case 2u:\n"
+        "    v = texcc_attr_by_id(c, src & 0xFFFFu);\n"
+        "    break;\n"
+        "  default:\n"
+        "    return (float4)(as_float(fs[at]), n > 1u ? as_float(fs[at + 1u]) : 0.0f,\n"
+        "                    n > 2u ? as_float(fs[at + 2u]) : 0.0f,\n"
+        "                    n > 3u ? as_float(fs[at + 3u]) : 0.0f);\n"
+        "  }\n"
+        "  return (src & 0x20000000u) ? v.xxxx : v;\n"
+        "}\n\n";
+}
+
+/// The call of one texture function with every argument decoded from the record at `rec`.
+/// Parameter block offsets are per function (every node of it shares the layout): take them
+/// from one of its nodes, so that they are the graph library's, never recomputed here.
+static std::string interpCall(const FunctionSignature &Sig, const CompiledNode &Example) {
+  uint32_t SourceWords = (static_cast<uint32_t>(Sig.Params.size()) * 4 + 15) / 16 * 16 / 4;
+  std::string S = Sig.RenamedName + "(texcc_ctx";
+  for (size_t P = 0; P < Example.Args.size(); ++P) {
+    const CompiledArg &A = Example.Args[P];
+    const ValueType &T = A.Type;
+    std::string At = "rec + " + std::to_string(SourceWords + A.BlockOffset / 4) + "u";
+    S += ",\n          ";
+    if (T.IsGlobalArray)
+      S += "(__global const " + spelling(T.Base) +
+           " *)((__global const uchar *)fakeStack + fakeStack[" + At + "])";
+    else if (T.Base == BaseType::Int || T.Base == BaseType::Sampler)
+      S += "as_int(fakeStack[" + At + "])";
+    else
+      S += "TEXCC_ARG(" + std::to_string(P) + "u, " + At + ", " +
+           std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
+  }
+  return S + ")";
+}
+
+/// A live node of function FnId (every live function has one).
+static const CompiledNode &nodeOfFunction(const CompiledGraph &CG, unsigned FnId) {
+  for (const CompiledNode &N : CG.Nodes)
+    if (N.FnId == FnId)
+      return N;
+  return CG.Nodes.front();
+}
+
+static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
+  OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
+  emitKernelPrologue(OS, "");
+  if (!CG.Spill)
+    OS << "  float4 stack[TEXCC_STACK_SLOTS];\n";
+  OS << "  const uint prog = texcc_program(fakeStack, mat);\n"
+        "  const uint numInstructions = fakeStack[prog];\n"
+        "  const uint numOutputs = fakeStack[prog + 1u];\n"
+        "  for (uint i = 0u; i < numInstructions; ++i) {\n"
+        "    const uint fnId = fakeStack[prog + 2u + 3u * i];\n"
+        "    const uint resultSlot = fakeStack[prog + 3u + 3u * i];\n"
+        "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
+        "    float4 r;\n"
+        "    switch (fnId) {\n";
+  for (unsigned Id = 0; Id < CG.FunctionsById.size(); ++Id) {
+    const FunctionSignature &Sig = CG.Signatures.at(CG.FunctionsById[Id]);
+    OS << "    case " << Id << "u: /* " << signatureComment(Sig) << ", " << Sig.File << " */\n"
+       << "      r = " << widenToFloat4(Sig.Return, interpCall(Sig, nodeOfFunction(CG, Id)),
+                             Target::OpenCL) << ";\n"
+       << "      break;\n";
+  }
+  OS << "    default:\n"
+        "      r = (float4)(0.0f);\n"
+        "      break;\n"
+        "    }\n"
+        "    TEXCC_SLOT(resultSlot) = r;\n"
+        "  }\n"
+        "  for (uint k = 0u; k < numOutputs; ++k)\n"
+        "    outputs[gid * TEXCC_MAX_OUTPUTS + k] =\n"
+        "        TEXCC_SLOT(fakeStack[prog + 2u + 3u * numInstructions + k]);\n"
+        "}\n";
+}
+
+void emitInterp(std::ostringstream &OS, const CompiledGraph &CG) {
+  if (CG.Nodes.empty()) {
+    // No material has a texture output: nothing to evaluate.
+    OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {}\n";
+    return;
+  }
+  emitDecoder(OS, CG.Spill);
+  if (CG.Spill)
+    OS << "#define TEXCC_ARG(p, at, n) \\\n"
+          "  texcc_arg(texcc_ctx, fakeStack, fakeStack[rec + (p)], (at), (n), scratch, numHits, "
+          "gid)\n\n";
+  else
+    OS << "#define TEXCC_ARG(p, at, n) \\\n"
+          "  texcc_arg(texcc_ctx, fakeStack, fakeStack[rec + (p)], (at), (n), stack)\n\n";
+  emitKernel(OS, CG);
+}
+
+} // namespace texcc::codegen

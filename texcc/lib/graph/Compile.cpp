@@ -1,0 +1,34 @@
+// compileGraph(): validation, then the passes in order, then the encoding.
+
+#include "texcc/Graph/Passes.h"
+
+namespace texcc::graph {
+
+int CompiledGraph::findNode(const std::string &Id) const {
+  for (size_t I = 0; I < Nodes.size(); ++I) {
+    if (Nodes[I].Id == Id)
+      return static_cast<int>(I);
+    for (const std::string &M : Nodes[I].MergedIds)
+      if (M == Id)
+        return static_cast<int>(I);
+  }
+  return -1;
+}
+
+std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
+                                          const CompileOptions &Opts, DiagnosticSink &Diags) {
+  std::optional<CompiledGraph> CG = resolveGraph(G, Sigs, Opts, Diags);
+  if (!CG)
+    return std::nullopt;
+  removeUnreachableNodes(*CG, Opts.Log);
+  mergeIdenticalNodes(*CG, Opts.Log);
+  assignFunctionIds(*CG, Sigs, Opts, Opts.Log);
+  orderPrograms(*CG, Opts.Log);
+  allocateStackSlots(*CG, Opts.StackLimit, Opts.Log);
+  computeWavefrontOrder(*CG, Opts.Log);
+  layoutArguments(*CG, Opts.Log);
+  encodeArgsBin(*CG);
+  return CG;
+}
+
+} // namespace texcc::graph

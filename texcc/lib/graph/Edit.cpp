@@ -1,0 +1,153 @@
+// Live edits (GraphEditor): a parameter edit patches args.bin in place when it can; anything
+// else recompiles the graph with the kernel's function ids pinned.
+
+#include "texcc/Graph/Edit.h"
+#include "texcc/Graph/Passes.h"
+
+#include "Json.h"
+
+namespace texcc::graph {
+
+namespace {
+
+void forward(const DiagnosticSink &From, DiagnosticSink &To, bool ErrorsOnly) {
+  for (const Diagnostic &D : From.diagnostics()) {
+    switch (D.Level) {
+    case Diagnostic::Severity::Error:
+      To.error(D.Loc, D.Message);
+      break;
+    case Diagnostic::Severity::Warning:
+      if (!ErrorsOnly)
+        To.warning(D.Loc, D.Message);
+      break;
+    case Diagnostic::Severity::Note:
+      if (!ErrorsOnly)
+        To.note(D.Loc, D.Message);
+      break;
+    }
+  }
+}
+
+/// Sets (or adds) NODE.ARG in a copy of the graph.
+ArgValue *argumentOf(Node &N, const std::string &Arg) {
+  for (auto &KV : N.Args)
+    if (KV.first == Arg)
+      return &KV.second;
+  N.Args.emplace_back(Arg, ArgValue());
+  return &N.Args.back().second;
+}
+
+} // namespace
+
+GraphEditor::GraphEditor(Graph G, SignatureMap Sigs, CompileOptions Opts)
+    : G(std::move(G)), Sigs(std::move(Sigs)), Opts(std::move(Opts)) {}
+
+bool GraphEditor::init(DiagnosticSink &Diags) {
+  std::optional<CompiledGraph> C = compileGraph(G, Sigs, Opts, Diags);
+  if (!C)
+    return false;
+  CG = std::move(*C);
+  KernelStackSlots = CG.StackSlots;
+  KernelMaxOutputs = CG.MaxOutputs;
+  // The kernel has a switch case for exactly these functions; later compiles keep their ids.
+  if (Opts.FixedFunctionIds.empty())
+    for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id)
+      if (!CG.FunctionsById[Id].empty())
+        Opts.FixedFunctionIds[CG.FunctionsById[Id]] = static_cast<unsigned>(Id);
+  NeedsRebuild = false;
+  return true;
+}
+
+bool GraphEditor::recompile(DiagnosticSink &Diags) {
+  std::optional<CompiledGraph> C = compileGraph(G, Sigs, Opts, Diags);
+  if (!C)
+    return false;
+  CG = std::move(*C);
+  NeedsRebuild = CG.StackSlots > KernelStackSlots || CG.MaxOutputs > KernelMaxOutputs;
+  for (const CompiledNode &N : CG.Nodes)
+    NeedsRebuild |= !Opts.FixedFunctionIds.count(N.Fn);
+  return true;
+}
+
+bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
+                              const std::string &Value, DiagnosticSink &Diags) {
+  Node *N = G.findNode(NodeId);
+  if (!N) {
+    std::vector<std::string> Ids;
+    for (const Node &Other : G.Nodes)
+      Ids.push_back(Other.Id);
+    std::string Near = json::closestMatch(NodeId, Ids);
+    Diags.error({}, "unknown node '" + NodeId + "'" +
+                        (Near.empty() ? "" : "; did you mean '" + Near + "'?"));
+    return false;
+  }
+  std::optional<ArgValue> V = parseArgValue(NodeId + "." + Arg, Value, Diags);
+  if (!V)
+    return false;
+  Graph Edited = G;
+  ArgValue *Slot = argumentOf(*Edited.findNode(NodeId), Arg);
+  V->KeyLoc = Slot->KeyLoc;
+  V->JsonPath = N->JsonPath + "/args/" + Arg;
+  *Slot = std::move(*V);
+
+  // Validate the edited graph; keep only its errors (warnings were given at compile time).
+  DiagnosticSink Check;
+  std::optional<CompiledGraph> Resolved = resolveGraph(Edited, Sigs, Opts, Check);
+  forward(Check, Diags, /*ErrorsOnly=*/true);
+  if (!Resolved)
+    return false;
+
+  // The fast path: a live, unmerged node whose constant keeps its shape is patched in place.
+  int Live = CG.findNode(NodeId);
+  size_t GraphIndex = static_cast<size_t>(N - G.Nodes.data());
+  if (Live >= 0 && CG.Nodes[Live].Id == NodeId && CG.Nodes[Live].MergedIds.empty()) {
+    CompiledNode &CN = CG.Nodes[Live];
+    const std::vector<CompiledArg> &NewArgs = Resolved->Nodes[GraphIndex].Args;
+    for (size_t I = 0; I < CN.Args.size() && I < NewArgs.size(); ++I) {
+      CompiledArg &Old = CN.Args[I];
+      const CompiledArg &New = NewArgs[I];
+      if (Old.Name != Arg)
+        continue;
+      if (Old.Src != CompiledArg::Source::Constant || New.Src != Old.Src ||
+          New.Values.size() != Old.Values.size() || New.ArrayCount != Old.ArrayCount)
+        break;
+      Old.Values = New.Values;
+      encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, CN.RecordOffset), Old);
+      for (uint32_t Copy : CN.RecordCopies)
+        encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
+      G = std::move(Edited);
+      NeedsRebuild = false;
+      return true;
+    }
+  }
+  Graph Saved = std::move(G);
+  G = std::move(Edited);
+  if (recompile(Diags))
+    return true;
+  G = std::move(Saved);
+  return false;
+}
+
+bool GraphEditor::rewire(const std::string &NodeId, const std::string &Arg,
+                         const std::string &SourceNode, DiagnosticSink &Diags) {
+  if (!G.findNode(NodeId)) {
+    Diags.error({}, "unknown node '" + NodeId + "'");
+    return false;
+  }
+  Graph Saved = G;
+  Node *N = G.findNode(NodeId);
+  ArgValue *Slot = argumentOf(*N, Arg);
+  ArgValue V;
+  V.K = ArgValue::Kind::NodeRef;
+  V.Ref = SourceNode;
+  V.Loc = {NodeId + "." + Arg, 0, 0};
+  V.KeyLoc = Slot->KeyLoc;
+  V.JsonPath = N->JsonPath + "/args/" + Arg;
+  *Slot = std::move(V);
+  if (recompile(Diags))
+    return true;
+  G = std::move(Saved);
+  return false;
+}
+
+} // namespace texcc::graph

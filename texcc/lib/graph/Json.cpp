@@ -1,0 +1,460 @@
+// The position-keeping JSON reader (see Json.h).
+
+#include "Json.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace texcc::graph::json {
+
+const Member *Value::getMember(const std::string &Key) const {
+  for (const Member &M : Members)
+    if (M.Key == Key)
+      return &M;
+  return nullptr;
+}
+
+const Value *Value::get(const std::string &Key) const {
+  const Member *M = getMember(Key);
+  return M ? M->Val.get() : nullptr;
+}
+
+std::string describeKind(const Value &V) {
+  switch (V.K) {
+  case Value::Kind::Null:
+    return "null";
+  case Value::Kind::Bool:
+    return V.Bool ? "true" : "false";
+  case Value::Kind::Number:
+    return "a number";
+  case Value::Kind::String:
+    return "a string";
+  case Value::Kind::Array:
+    return "an array";
+  case Value::Kind::Object:
+    return "an object";
+  }
+  return "a value";
+}
+
+namespace {
+
+class Reader {
+public:
+  Reader(const std::string &File, const std::string &Text, DiagnosticSink &Diags)
+      : File(File), Text(Text), Diags(Diags) {}
+
+  std::optional<Value> run() {
+    Value V;
+    skipSpace();
+    if (Failed)
+      return std::nullopt;
+    if (Pos >= Text.size()) {
+      fail(here(), "expected a JSON value, got an empty file");
+      return std::nullopt;
+    }
+    if (!parseValue(V, 0))
+      return std::nullopt;
+    skipSpace();
+    if (Failed)
+      return std::nullopt;
+    if (Pos < Text.size()) {
+      fail(here(), "unexpected " + describeHere() + " after the top-level value");
+      return std::nullopt;
+    }
+    return V;
+  }
+
+private:
+  static constexpr unsigned MaxDepth = 256;
+
+  SourceLoc here() const { return {File, Line, Col}; }
+  bool atEnd() const { return Pos >= Text.size(); }
+  char peek() const { return atEnd() ? '\0' : Text[Pos]; }
+
+  void advance() {
+    if (atEnd())
+      return;
+    if (Text[Pos] == '\n') {
+      ++Line;
+      Col = 1;
+    } else {
+      ++Col;
+    }
+    ++Pos;
+  }
+
+  bool fail(const SourceLoc &L, const std::string &Msg) {
+    if (!Failed)
+      Diags.error(L, Msg);
+    Failed = true;
+    return false;
+  }
+
+  std::string describeHere() const {
+    if (atEnd())
+      return "end of file";
+    unsigned char C = Text[Pos];
+    if (C < 0x20 || C >= 0x7f) {
+      char Buf[16];
+      std::snprintf(Buf, sizeof Buf, "byte 0x%02x", C);
+      return Buf;
+    }
+    return std::string("'") + static_cast<char>(C) + "'";
+  }
+
+  void skipSpace() {
+    while (!atEnd()) {
+      char C = peek();
+      if (C == ' ' || C == '\t' || C == '\n' || C == '\r') {
+        advance();
+      } else if (C == '/' && Pos + 1 < Text.size() &&
+                 (Text[Pos + 1] == '/' || Text[Pos + 1] == '*')) {
+        fail(here(), "comments are not allowed in JSON");
+        return;
+      } else {
+        return;
+      }
+    }
+  }
+
+  bool parseValue(Value &V, unsigned Depth) {
+    if (Depth > MaxDepth)
+      return fail(here(), "nesting deeper than 256 levels");
+    V.Loc = here();
+    char C = peek();
+    if (C == '{')
+      return parseObject(V, Depth);
+    if (C == '[')
+      return parseArray(V, Depth);
+    if (C == '"')
+      return parseString(V.Text) && (V.K = Value::Kind::String, true);
+    if (C == '-' || (C >= '0' && C <= '9'))
+      return parseNumber(V);
+    if (std::isalpha(static_cast<unsigned char>(C)) || C == '\'')
+      return parseWord(V);
+    return fail(here(), "expected a JSON value, got " + describeHere());
+  }
+
+  bool parseWord(Value &V) {
+    if (peek() == '\'')
+      return fail(here(), "strings must use double quotes");
+    size_t Start = Pos;
+    SourceLoc L = here();
+    while (!atEnd() && (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '_'))
+      advance();
+    std::string Word = Text.substr(Start, Pos - Start);
+    if (Word == "true" || Word == "false") {
+      V.K = Value::Kind::Bool;
+      V.Bool = Word == "true";
+      return true;
+    }
+    if (Word == "null") {
+      V.K = Value::Kind::Null;
+      return true;
+    }
+    if (Word == "NaN" || Word == "nan" || Word == "Infinity" || Word == "inf" ||
+        Word == "infinity")
+      return fail(L, "'" + Word + "' is not a number: graph values must be finite");
+    return fail(L, "unexpected '" + Word + "'; expected a JSON value");
+  }
+
+  bool parseNumber(Value &V) {
+    size_t Start = Pos;
+    SourceLoc L = here();
+    bool Integer = true;
+    if (peek() == '-')
+      advance();
+    if (std::isalpha(static_cast<unsigned char>(peek()))) {
+      Value Dummy;
+      return parseWord(Dummy) && fail(L, "invalid number");
+    }
+    if (peek() == '0') {
+      advance();
+      if (std::isdigit(static_cast<unsigned char>(peek())))
+        return fail(L, "invalid number: leading zeros are not allowed");
+    } else if (std::isdigit(static_cast<unsigned char>(peek()))) {
+      while (std::isdigit(static_cast<unsigned char>(peek())))
+        advance();
+    } else {
+      return fail(here(), "invalid number: expected a digit, got " + describeHere());
+    }
+    if (peek() == '.') {
+      Integer = false;
+      advance();
+      if (!std::isdigit(static_cast<unsigned char>(peek())))
+        return fail(here(), "invalid number: expected a digit after '.', got " +
+                                describeHere());
+      while (std::isdigit(static_cast<unsigned char>(peek())))
+        advance();
+    }
+    if (peek() == 'e' || peek() == 'E') {
+      Integer = false;
+      advance();
+      if (peek() == '+' || peek() == '-')
+        advance();
+      if (!std::isdigit(static_cast<unsigned char>(peek())))
+        return fail(here(), "invalid number: expected a digit in the exponent, got " +
+                                describeHere());
+      while (std::isdigit(static_cast<unsigned char>(peek())))
+        advance();
+    }
+    V.K = Value::Kind::Number;
+    V.Text = Text.substr(Start, Pos - Start);
+    V.IsInteger = Integer;
+    V.Number = std::strtod(V.Text.c_str(), nullptr);
+    if (!std::isfinite(V.Number))
+      return fail(L, "number '" + V.Text + "' is out of range");
+    return true;
+  }
+
+  static void appendUtf8(std::string &Out, unsigned CP) {
+    if (CP < 0x80) {
+      Out += static_cast<char>(CP);
+    } else if (CP < 0x800) {
+      Out += static_cast<char>(0xC0 | (CP >> 6));
+      Out += static_cast<char>(0x80 | (CP & 0x3F));
+    } else if (CP < 0x10000) {
+      Out += static_cast<char>(0xE0 | (CP >> 12));
+      Out += static_cast<char>(0x80 | ((CP >> 6) & 0x3F));
+      Out += static_cast<char>(0x80 | (CP & 0x3F));
+    } else {
+      Out += static_cast<char>(0xF0 | (CP >> 18));
+      Out += static_cast<char>(0x80 | ((CP >> 12) & 0x3F));
+      Out += static_cast<char>(0x80 | ((CP >> 6) & 0x3F));
+      Out += static_cast<char>(0x80 | (CP & 0x3F));
+    }
+  }
+
+  bool parseHex4(unsigned &CP) {
+    CP = 0;
+    for (int I = 0; I < 4; ++I) {
+      char C = peek();
+      if (!std::isxdigit(static_cast<unsigned char>(C)))
+        return fail(here(), "invalid \\u escape: expected a hex digit, got " + describeHere());
+      CP = CP * 16 + (std::isdigit(static_cast<unsigned char>(C))
+                          ? C - '0'
+                          : (std::tolower(static_cast<unsigned char>(C)) - 'a' + 10));
+      advance();
+    }
+    return true;
+  }
+
+  bool parseEscape(std::string &Out) {
+    SourceLoc L = here();
+    advance(); // backslash
+    char C = peek();
+    const char *Simple = "\"\\/bfnrt";
+    const char *Mapped = "\"\\/\b\f\n\r\t";
+    if (C != '\0' && std::strchr(Simple, C)) {
+      Out += Mapped[std::strchr(Simple, C) - Simple];
+      advance();
+      return true;
+    }
+    if (C != 'u')
+      return fail(L, "invalid escape sequence in string");
+    advance();
+    unsigned CP;
+    if (!parseHex4(CP))
+      return false;
+    if (CP >= 0xD800 && CP < 0xDC00 && peek() == '\\' && Pos + 1 < Text.size() &&
+        Text[Pos + 1] == 'u') {
+      advance();
+      advance();
+      unsigned Low;
+      if (!parseHex4(Low))
+        return false;
+      if (Low >= 0xDC00 && Low < 0xE000)
+        CP = 0x10000 + ((CP - 0xD800) << 10) + (Low - 0xDC00);
+    }
+    appendUtf8(Out, CP);
+    return true;
+  }
+
+  bool parseString(std::string &Out) {
+    SourceLoc Start = here();
+    advance(); // opening quote
+    while (true) {
+      if (atEnd())
+        return fail(Start, "unterminated string");
+      char C = peek();
+      if (C == '"') {
+        advance();
+        return true;
+      }
+      if (C == '\\') {
+        if (!parseEscape(Out))
+          return false;
+        continue;
+      }
+      if (static_cast<unsigned char>(C) < 0x20)
+        return fail(here(), C == '\n' ? "unterminated string (a newline inside a string)"
+                                      : "control character inside a string");
+      Out += C;
+      advance();
+    }
+  }
+
+  bool parseArray(Value &V, unsigned Depth) {
+    V.K = Value::Kind::Array;
+    advance();
+    skipSpace();
+    if (peek() == ']') {
+      advance();
+      return true;
+    }
+    while (true) {
+      skipSpace();
+      if (Failed)
+        return false;
+      if (atEnd())
+        return fail(here(), "expected a value or ']', got end of file");
+      if (peek() == ']')
+        return fail(here(), "trailing comma before ']'");
+      V.Elements.emplace_back();
+      if (!parseValue(V.Elements.back(), Depth + 1))
+        return false;
+      skipSpace();
+      if (Failed)
+        return false;
+      if (peek() == ',') {
+        advance();
+        continue;
+      }
+      if (peek() == ']') {
+        advance();
+        return true;
+      }
+      return fail(here(), "expected ',' or ']' in array, got " + describeHere());
+    }
+  }
+
+  bool parseObject(Value &V, unsigned Depth) {
+    V.K = Value::Kind::Object;
+    advance();
+    skipSpace();
+    if (peek() == '}') {
+      advance();
+      return true;
+    }
+    while (true) {
+      skipSpace();
+      if (Failed)
+        return false;
+      if (peek() == '}')
+        return fail(here(), "trailing comma before '}'");
+      if (peek() != '"')
+        return fail(here(), "expected a string key in object, got " + describeHere());
+      Member M;
+      M.KeyLoc = here();
+      if (!parseString(M.Key))
+        return false;
+      for (const Member &Prev : V.Members)
+        if (Prev.Key == M.Key)
+          return fail(M.KeyLoc, "duplicate key '" + M.Key + "' in object");
+      skipSpace();
+      if (Failed)
+        return false;
+      if (peek() != ':')
+        return fail(here(), "expected ':' after object key, got " + describeHere());
+      advance();
+      skipSpace();
+      if (Failed)
+        return false;
+      if (atEnd())
+        return fail(here(), "expected a value, got end of file");
+      M.Val = std::make_unique<Value>();
+      if (!parseValue(*M.Val, Depth + 1))
+        return false;
+      V.Members.push_back(std::move(M));
+      skipSpace();
+      if (Failed)
+        return false;
+      if (peek() == ',') {
+        advance();
+        continue;
+      }
+      if (peek() == '}') {
+        advance();
+        return true;
+      }
+      return fail(here(), "expected ',' or '}' in object, got " + describeHere());
+    }
+  }
+
+  const std::string &File;
+  const std::string &Text;
+  DiagnosticSink &Diags;
+  size_t Pos = 0;
+  unsigned Line = 1;
+  unsigned Col = 1;
+  bool Failed = false;
+};
+
+} // namespace
+
+std::optional<Value> parse(const std::string &File, const std::string &Text,
+                           DiagnosticSink &Diags) {
+  return Reader(File, Text, Diags).run();
+}
+
+std::string formatNumber(double D) {
+  char Buf[40];
+  for (int Prec = 1; Prec <= 17; ++Prec) {
+    std::snprintf(Buf, sizeof Buf, "%.*g", Prec, D);
+    if (std::strtod(Buf, nullptr) == D)
+      break;
+  }
+  std::string S = Buf;
+  // JSON wants "1e-07", which %g gives; it does not accept "inf" (never written: values are
+  // finite by construction).
+  return S;
+}
+
+unsigned editDistance(const std::string &A, const std::string &B) {
+  std::vector<unsigned> Row(B.size() + 1);
+  for (size_t J = 0; J <= B.size(); ++J)
+    Row[J] = static_cast<unsigned>(J);
+  for (size_t I = 1; I <= A.size(); ++I) {
+    unsigned Diag = Row[0];
+    Row[0] = static_cast<unsigned>(I);
+    for (size_t J = 1; J <= B.size(); ++J) {
+      unsigned Up = Row[J];
+      unsigned Cost = A[I - 1] == B[J - 1] ? 0 : 1;
+      Row[J] = std::min({Row[J] + 1, Row[J - 1] + 1, Diag + Cost});
+      Diag = Up;
+    }
+  }
+  return Row[B.size()];
+}
+
+std::string closestMatch(const std::string &Name, const std::vector<std::string> &Candidates) {
+  std::string Best;
+  unsigned BestDist = ~0u;
+  for (const std::string &C : Candidates) {
+    unsigned D = editDistance(Name, C);
+    if (D < BestDist) {
+      BestDist = D;
+      Best = C;
+    }
+  }
+  // Like clang's typo correction: at most a third of the name may differ.
+  unsigned Limit = std::max<unsigned>(1, static_cast<unsigned>(Name.size() + 2) / 3);
+  return BestDist <= Limit ? Best : std::string();
+}
+
+std::string quotedList(const std::vector<std::string> &Names) {
+  std::string S;
+  for (size_t I = 0; I < Names.size(); ++I) {
+    if (I > 0)
+      S += I + 1 == Names.size() ? " or " : ", ";
+    S += "'" + Names[I] + "'";
+  }
+  return S;
+}
+
+} // namespace texcc::graph::json

@@ -1,0 +1,208 @@
+// layout.json (docs/abi.md): the graph part, and reading the signatures back for live edits.
+
+#include "texcc/Graph/Compile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace texcc::graph {
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+std::string absolutePath(const std::string &P) {
+  if (P.empty())
+    return P;
+  std::error_code EC;
+  fs::path Abs = fs::absolute(fs::path(P), EC);
+  return EC ? P : Abs.lexically_normal().string();
+}
+
+/// Image paths are relative to the graph's folder.
+std::string imagePath(const std::string &GraphPath, const std::string &Image) {
+  fs::path P(Image);
+  if (P.is_absolute() || GraphPath.empty())
+    return absolutePath(Image);
+  return absolutePath((fs::path(GraphPath).parent_path() / P).string());
+}
+
+OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
+  uint32_t BlockSize = 0;
+  uint32_t Offset = 0;
+  OJson Params = OJson::array();
+  for (const Param &P : Sig.Params) {
+    unsigned A = alignOf(P.Type);
+    Offset = (Offset + A - 1) / A * A;
+    Params.push_back({{"name", P.Name},
+                      {"type", spelling(P.Type)},
+                      {"size", sizeOf(P.Type)},
+                      {"align", A},
+                      {"offset", Offset}});
+    Offset += sizeOf(P.Type);
+  }
+  BlockSize = (Offset + 15) / 16 * 16;
+  return {{"id", Id},
+          {"name", Sig.Name},
+          {"renamed", Sig.RenamedName},
+          {"file", Sig.File},
+          {"return", spelling(Sig.Return)},
+          {"blockSize", BlockSize},
+          {"params", Params},
+          {"attributes", Sig.Attributes},
+          {"settings", Sig.Settings}};
+}
+
+OJson argJson(const CompiledGraph &CG, const CompiledArg &A) {
+  OJson J = {{"name", A.Name}};
+  switch (A.Src) {
+  case CompiledArg::Source::Attribute:
+    J["source"] = "attr";
+    J["attr"] = attributeTable()[A.AttrId].first;
+    J["broadcast"] = A.Broadcast;
+    break;
+  case CompiledArg::Source::Node:
+    J["source"] = "node";
+    J["node"] = A.NodeIndex;
+    J["broadcast"] = A.Broadcast;
+    break;
+  case CompiledArg::Source::Constant:
+    J["source"] = "const";
+    if (A.Type.Base == BaseType::Sampler && !A.Values.empty()) {
+      size_t Index = static_cast<size_t>(A.Values[0]);
+      if (Index < CG.Images.size())
+        J["image"] = CG.Images[Index].first;
+    }
+    if (A.Type.IsGlobalArray)
+      J["array"] = {{"offset", A.ArrayByteOffset}, {"count", A.ArrayCount}};
+    if (A.Type.Base == BaseType::Int || A.Type.Base == BaseType::Sampler) {
+      std::vector<long long> Ints(A.Values.begin(), A.Values.end());
+      J["value"] = Ints;
+    } else {
+      J["value"] = A.Values;
+    }
+    break;
+  }
+  J["offset"] = A.BlockOffset;
+  return J;
+}
+
+OJson bsdfJson(const CompiledBsdf &B) {
+  OJson J = {{"type", B.Type}};
+  for (const CompiledBsdfInput &In : B.Inputs) {
+    if (In.IsOutput)
+      J[In.Name] = {{"output", In.Output}};
+    else
+      J[In.Name] = {{"const", In.Constant}};
+  }
+  for (const auto &[Name, Child] : B.Children)
+    J[Name] = bsdfJson(Child);
+  return J;
+}
+
+} // namespace
+
+std::string layoutJson(const CompiledGraph &CG) {
+  OJson J;
+  J["texcc"] = 1;
+  J["target"] = "opencl";
+  J["graph"] = absolutePath(CG.GraphPath);
+  J["stackSlots"] = CG.StackSlots;
+  J["stackLimit"] = CG.StackLimit;
+  J["spill"] = CG.Spill;
+  J["maxOutputs"] = CG.MaxOutputs;
+  J["scratchFloat4PerHit"] = CG.Spill ? CG.StackSlots : 0;
+  J["argsBin"] = {{"size", CG.ArgsBin.size()},
+                  {"programWords", CG.ProgramWords},
+                  {"recordsOffset", CG.RecordsOffset}};
+  J["attributes"] = CG.Attributes;
+  J["settings"] = CG.Settings;
+  OJson Images = OJson::array();
+  for (size_t I = 0; I < CG.Images.size(); ++I)
+    Images.push_back({{"name", CG.Images[I].first},
+                      {"path", imagePath(CG.GraphPath, CG.Images[I].second)},
+                      {"index", I}});
+  J["images"] = Images;
+  OJson Functions = OJson::array();
+  for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id) {
+    auto It = CG.Signatures.find(CG.FunctionsById[Id]);
+    if (It != CG.Signatures.end())
+      Functions.push_back(functionJson(static_cast<unsigned>(Id), It->second));
+  }
+  J["functions"] = Functions;
+  OJson Nodes = OJson::array();
+  for (size_t I = 0; I < CG.Nodes.size(); ++I) {
+    const CompiledNode &N = CG.Nodes[I];
+    OJson Args = OJson::array();
+    for (const CompiledArg &A : N.Args)
+      Args.push_back(argJson(CG, A));
+    Nodes.push_back({{"index", I},
+                     {"id", N.Id},
+                     {"merged", N.MergedIds},
+                     {"fn", N.Fn},
+                     {"fnId", N.FnId},
+                     {"record", {{"offset", N.RecordOffset}, {"size", N.RecordSize}}},
+                     {"copies", N.RecordCopies},
+                     {"args", Args}});
+  }
+  J["nodes"] = Nodes;
+  J["wavefrontOrder"] = CG.WavefrontOrder;
+  OJson Materials = OJson::array();
+  for (const CompiledMaterial &M : CG.Materials) {
+    OJson Outputs = OJson::array();
+    for (const MaterialOutput &O : M.Outputs)
+      Outputs.push_back({{"node", O.Node}, {"slot", O.Slot}, {"type", spelling(O.Type)}});
+    Materials.push_back({{"name", M.Name},
+                         {"index", M.Index},
+                         {"program",
+                          {{"wordOffset", M.ProgramWordOffset},
+                           {"instructions", M.Program.size()},
+                           {"stackSlots", M.StackSlots}}},
+                         {"outputs", Outputs},
+                         {"bsdf", bsdfJson(M.Bsdf)}});
+  }
+  J["materials"] = Materials;
+  return J.dump(2) + "\n";
+}
+
+bool readLayoutSignatures(const std::string &LayoutJsonText, SignatureMap &Sigs,
+                          std::map<std::string, unsigned> &FnIds, std::string &Error) {
+  try {
+    nlohmann::json J = nlohmann::json::parse(LayoutJsonText);
+    for (const auto &F : J.at("functions")) {
+      FunctionSignature S;
+      S.Name = F.at("name").get<std::string>();
+      S.RenamedName = F.value("renamed", "");
+      S.File = F.value("file", "");
+      auto Ret = parseSpelling(F.at("return").get<std::string>());
+      if (!Ret || Ret->IsGlobalArray) {
+        Error = "function '" + S.Name + "': bad return type";
+        return false;
+      }
+      S.Return = Ret->Base;
+      for (const auto &P : F.at("params")) {
+        auto T = parseSpelling(P.at("type").get<std::string>());
+        if (!T) {
+          Error = "function '" + S.Name + "': bad parameter type '" +
+                  P.at("type").get<std::string>() + "'";
+          return false;
+        }
+        S.Params.push_back({P.at("name").get<std::string>(), *T});
+      }
+      if (F.contains("attributes"))
+        S.Attributes = F.at("attributes").get<std::vector<std::string>>();
+      if (F.contains("settings"))
+        S.Settings = F.at("settings").get<std::vector<std::string>>();
+      FnIds[S.Name] = F.at("id").get<unsigned>();
+      Sigs[S.Name] = std::move(S);
+    }
+  } catch (const nlohmann::json::exception &E) {
+    Error = std::string("malformed layout.json: ") + E.what();
+    return false;
+  }
+  return true;
+}
+
+} // namespace texcc::graph

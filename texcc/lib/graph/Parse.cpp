@@ -1,0 +1,454 @@
+// graph.json (version 1) to the Graph model. Only the shape of the file is checked here; what
+// needs function signatures is checked by compileGraph() (Validate.cpp).
+
+#include "texcc/Graph/Graph.h"
+
+#include "Json.h"
+
+#include <cfloat>
+#include <cmath>
+
+namespace texcc::graph {
+
+const Node *Graph::findNode(const std::string &Id) const {
+  for (const Node &N : Nodes)
+    if (N.Id == Id)
+      return &N;
+  return nullptr;
+}
+
+Node *Graph::findNode(const std::string &Id) {
+  for (Node &N : Nodes)
+    if (N.Id == Id)
+      return &N;
+  return nullptr;
+}
+
+const std::vector<std::string> &bsdfTypes() {
+  static const std::vector<std::string> Types = {"diffuse", "glossy", "mirror", "emission",
+                                                 "blend"};
+  return Types;
+}
+
+const std::vector<std::string> &bsdfInputs(const std::string &Type) {
+  static const std::vector<std::string> Diffuse = {"color"}, Glossy = {"color", "roughness"},
+                                        Emission = {"color", "strength"},
+                                        Blend = {"mask", "a", "b"}, None;
+  if (Type == "diffuse" || Type == "mirror")
+    return Diffuse;
+  if (Type == "glossy")
+    return Glossy;
+  if (Type == "emission")
+    return Emission;
+  if (Type == "blend")
+    return Blend;
+  return None;
+}
+
+namespace {
+
+using json::Value;
+
+/// JSON Pointer escaping of one path segment (RFC 6901).
+std::string pointerSegment(const std::string &Key) {
+  std::string S;
+  for (char C : Key) {
+    if (C == '~')
+      S += "~0";
+    else if (C == '/')
+      S += "~1";
+    else
+      S += C;
+  }
+  return S;
+}
+
+class GraphParser {
+public:
+  GraphParser(const std::string &Path, DiagnosticSink &Diags) : Path(Path), Diags(Diags) {}
+
+  void error(const SourceLoc &L, const std::string &JsonPath, const std::string &Msg) {
+    Diags.error(L, Msg + " [" + (JsonPath.empty() ? "/" : JsonPath) + "]");
+  }
+
+  /// Unknown keys are errors that list the allowed ones (and suggest the closest).
+  bool checkKeys(const Value &Obj, const std::string &JsonPath, const std::string &What,
+                 const std::vector<std::string> &Allowed) {
+    bool Ok = true;
+    for (const json::Member &M : Obj.Members) {
+      bool Known = false;
+      for (const std::string &A : Allowed)
+        Known |= A == M.Key;
+      if (Known)
+        continue;
+      std::string Msg = "unknown key '" + M.Key + "' in " + What + "; expected " +
+                        json::quotedList(Allowed);
+      std::string Near = json::closestMatch(M.Key, Allowed);
+      if (!Near.empty())
+        Msg += "; did you mean '" + Near + "'?";
+      error(M.KeyLoc, JsonPath + "/" + pointerSegment(M.Key), Msg);
+      Ok = false;
+    }
+    return Ok;
+  }
+
+  const Value *require(const Value &Obj, const std::string &Key, const std::string &JsonPath,
+                       const std::string &What) {
+    const Value *V = Obj.get(Key);
+    if (!V)
+      error(Obj.Loc, JsonPath, What + " is missing required key '" + Key + "'");
+    return V;
+  }
+
+  bool expectKind(const Value &V, Value::Kind K, const std::string &JsonPath,
+                  const std::string &What, const char *Expected) {
+    if (V.K == K)
+      return true;
+    error(V.Loc, JsonPath, What + " must be " + Expected + ", got " + json::describeKind(V));
+    return false;
+  }
+
+  bool checkFloat(const Value &V, const std::string &JsonPath) {
+    if (std::fabs(V.Number) <= FLT_MAX)
+      return true;
+    error(V.Loc, JsonPath, "number '" + V.Text + "' does not fit in a 32-bit float");
+    return false;
+  }
+
+  bool numbersOf(const Value &Arr, std::vector<double> &Out, const std::string &JsonPath) {
+    for (size_t I = 0; I < Arr.Elements.size(); ++I) {
+      const Value &E = Arr.Elements[I];
+      if (!checkFloat(E, JsonPath + "/" + std::to_string(I)))
+        return false;
+      Out.push_back(E.Number);
+    }
+    return true;
+  }
+
+  bool parseArgArray(const Value &V, ArgValue &A, const std::string &JsonPath) {
+    bool AllNumbers = true, AllArrays = true, AllInts = true;
+    for (const Value &E : V.Elements) {
+      AllNumbers &= E.isNumber();
+      AllArrays &= E.isArray();
+      if (E.isNumber())
+        AllInts &= E.IsInteger;
+    }
+    if (AllNumbers) {
+      A.K = V.Elements.size() >= 2 && V.Elements.size() <= 4 ? ArgValue::Kind::Vector
+                                                              : ArgValue::Kind::Array;
+      A.IsInteger = AllInts && !V.Elements.empty();
+      return numbersOf(V, A.Numbers, JsonPath);
+    }
+    if (!AllArrays) {
+      error(V.Loc, JsonPath,
+            "an array value must hold only numbers (a vector or a flat array) or only arrays "
+            "of numbers (an array of vectors)");
+      return false;
+    }
+    A.K = ArgValue::Kind::Array;
+    A.IsArrayOfRows = true;
+    A.IsInteger = true;
+    for (size_t I = 0; I < V.Elements.size(); ++I) {
+      const Value &Row = V.Elements[I];
+      std::string RowPath = JsonPath + "/" + std::to_string(I);
+      std::vector<double> Numbers;
+      for (size_t J = 0; J < Row.Elements.size(); ++J) {
+        const Value &E = Row.Elements[J];
+        if (!E.isNumber()) {
+          error(E.Loc, RowPath + "/" + std::to_string(J),
+                "an element of an array of vectors must be a number, got " +
+                    json::describeKind(E));
+          return false;
+        }
+        A.IsInteger &= E.IsInteger;
+      }
+      if (!numbersOf(Row, Numbers, RowPath))
+        return false;
+      A.Rows.push_back(std::move(Numbers));
+    }
+    return true;
+  }
+
+  bool parseArgRef(const Value &V, ArgValue &A, const std::string &JsonPath) {
+    static const std::vector<std::string> RefKeys = {"node", "attr", "image"};
+    if (V.Members.size() != 1) {
+      error(V.Loc, JsonPath,
+            "a reference must be an object with exactly one key: 'node', 'attr' or 'image'");
+      return false;
+    }
+    const json::Member &M = V.Members.front();
+    if (!checkKeys(V, JsonPath, "reference", RefKeys))
+      return false;
+    std::string Path = JsonPath + "/" + M.Key;
+    if (!expectKind(*M.Val, Value::Kind::String, Path, "'" + M.Key + "'", "a string"))
+      return false;
+    A.K = M.Key == "node"   ? ArgValue::Kind::NodeRef
+          : M.Key == "attr" ? ArgValue::Kind::AttrRef
+                            : ArgValue::Kind::ImageRef;
+    A.Ref = M.Val->Text;
+    return true;
+  }
+
+public:
+  bool parseArgValue(const Value &V, ArgValue &A, const std::string &JsonPath) {
+    A.Loc = V.Loc;
+    A.JsonPath = JsonPath;
+    switch (V.K) {
+    case Value::Kind::Number:
+      A.K = ArgValue::Kind::Number;
+      A.IsInteger = V.IsInteger;
+      A.Numbers = {V.Number};
+      return checkFloat(V, JsonPath);
+    case Value::Kind::Array:
+      return parseArgArray(V, A, JsonPath);
+    case Value::Kind::Object:
+      return parseArgRef(V, A, JsonPath);
+    default:
+      error(V.Loc, JsonPath,
+            "expected a number, an array, or an object with 'node', 'attr' or 'image'; got " +
+                json::describeKind(V));
+      return false;
+    }
+  }
+
+private:
+  bool parseNode(const Value &V, const std::string &JsonPath, Node &N) {
+    N.Loc = V.Loc;
+    N.JsonPath = JsonPath;
+    if (!expectKind(V, Value::Kind::Object, JsonPath, "a node", "an object"))
+      return false;
+    bool Ok = checkKeys(V, JsonPath, "node", {"id", "fn", "args"});
+    const Value *Id = require(V, "id", JsonPath, "node");
+    const Value *Fn = require(V, "fn", JsonPath, "node");
+    if (Id && expectKind(*Id, Value::Kind::String, JsonPath + "/id", "'id'", "a string")) {
+      N.Id = Id->Text;
+      N.IdLoc = Id->Loc;
+      if (N.Id.empty()) {
+        error(Id->Loc, JsonPath + "/id", "a node id must not be empty");
+        Ok = false;
+      }
+    } else {
+      Ok = false;
+    }
+    if (Fn && expectKind(*Fn, Value::Kind::String, JsonPath + "/fn", "'fn'", "a string")) {
+      N.Fn = Fn->Text;
+      N.FnLoc = Fn->Loc;
+    } else {
+      Ok = false;
+    }
+    if (const Value *Args = V.get("args")) {
+      std::string ArgsPath = JsonPath + "/args";
+      if (!expectKind(*Args, Value::Kind::Object, ArgsPath, "'args'", "an object"))
+        return false;
+      for (const json::Member &M : Args->Members) {
+        ArgValue A;
+        A.KeyLoc = M.KeyLoc;
+        Ok &= parseArgValue(*M.Val, A, ArgsPath + "/" + pointerSegment(M.Key));
+        N.Args.emplace_back(M.Key, std::move(A));
+      }
+    }
+    return Ok;
+  }
+
+  bool parseBsdf(const Value &V, const std::string &JsonPath, const std::string &What,
+                 Bsdf &B) {
+    B.Loc = V.Loc;
+    B.JsonPath = JsonPath;
+    if (!expectKind(V, Value::Kind::Object, JsonPath, What, "an object with a 'bsdf' key"))
+      return false;
+    const Value *Type = require(V, "bsdf", JsonPath, What);
+    if (!Type ||
+        !expectKind(*Type, Value::Kind::String, JsonPath + "/bsdf", "'bsdf'", "a string"))
+      return false;
+    B.Type = Type->Text;
+    const std::vector<std::string> &Inputs = bsdfInputs(B.Type);
+    if (Inputs.empty()) {
+      std::string Msg =
+          "unknown BSDF '" + B.Type + "'; expected " + json::quotedList(bsdfTypes());
+      std::string Near = json::closestMatch(B.Type, bsdfTypes());
+      if (!Near.empty())
+        Msg += "; did you mean '" + Near + "'?";
+      error(Type->Loc, JsonPath + "/bsdf", Msg);
+      return false;
+    }
+    std::vector<std::string> Allowed = {"bsdf"};
+    Allowed.insert(Allowed.end(), Inputs.begin(), Inputs.end());
+    bool Ok = true;
+    for (const json::Member &M : V.Members) {
+      if (M.Key == "bsdf" || bsdfInputsContain(Inputs, M.Key))
+        continue;
+      std::string Msg = "BSDF '" + B.Type + "' has no input '" + M.Key + "'; its inputs are " +
+                        json::quotedList(Inputs);
+      std::string Near = json::closestMatch(M.Key, Inputs);
+      if (!Near.empty())
+        Msg += "; did you mean '" + Near + "'?";
+      error(M.KeyLoc, JsonPath + "/" + pointerSegment(M.Key), Msg);
+      Ok = false;
+    }
+    for (const std::string &In : Inputs) {
+      const json::Member *M = V.getMember(In);
+      std::string InPath = JsonPath + "/" + In;
+      if (!M) {
+        error(V.Loc, JsonPath, "BSDF '" + B.Type + "' is missing input '" + In + "'");
+        Ok = false;
+        continue;
+      }
+      if (B.Type == "blend" && In != "mask") {
+        Bsdf Child;
+        Ok &= parseBsdf(*M->Val, InPath, "blend input '" + In + "'", Child);
+        B.Children.emplace_back(In, std::move(Child));
+        continue;
+      }
+      ArgValue A;
+      A.KeyLoc = M->KeyLoc;
+      if (!parseArgValue(*M->Val, A, InPath)) {
+        Ok = false;
+        continue;
+      }
+      if (A.K != ArgValue::Kind::Number && A.K != ArgValue::Kind::Vector &&
+          A.K != ArgValue::Kind::NodeRef) {
+        error(A.Loc, InPath,
+              "BSDF input '" + In + "' must be a number, a vector or {\"node\": id}");
+        Ok = false;
+        continue;
+      }
+      B.Inputs.emplace_back(In, std::move(A));
+    }
+    return Ok;
+  }
+
+  static bool bsdfInputsContain(const std::vector<std::string> &Inputs, const std::string &K) {
+    for (const std::string &I : Inputs)
+      if (I == K)
+        return true;
+    return false;
+  }
+
+  bool parseStrings(const Value &V, const std::string &JsonPath, std::vector<std::string> &Out) {
+    if (!expectKind(V, Value::Kind::Array, JsonPath, "'sources'", "an array of strings"))
+      return false;
+    for (size_t I = 0; I < V.Elements.size(); ++I) {
+      const Value &E = V.Elements[I];
+      if (!expectKind(E, Value::Kind::String, JsonPath + "/" + std::to_string(I),
+                      "a source", "a string"))
+        return false;
+      Out.push_back(E.Text);
+    }
+    return true;
+  }
+
+  bool parseImages(const Value &V, Graph &G) {
+    if (!expectKind(V, Value::Kind::Object, "/images", "'images'",
+                    "an object (image name to file path)"))
+      return false;
+    bool Ok = true;
+    for (const json::Member &M : V.Members) {
+      std::string P = "/images/" + pointerSegment(M.Key);
+      if (expectKind(*M.Val, Value::Kind::String, P, "image '" + M.Key + "'",
+                     "a string (a file path)"))
+        G.Images.emplace_back(M.Key, M.Val->Text);
+      else
+        Ok = false;
+    }
+    return Ok;
+  }
+
+  bool parseNodes(const Value &V, Graph &G) {
+    if (!expectKind(V, Value::Kind::Array, "/nodes", "'nodes'", "an array of node objects"))
+      return false;
+    bool Ok = true;
+    for (size_t I = 0; I < V.Elements.size(); ++I) {
+      Node N;
+      std::string P = "/nodes/" + std::to_string(I);
+      if (!parseNode(V.Elements[I], P, N)) {
+        Ok = false;
+        continue;
+      }
+      if (const Node *Prev = G.findNode(N.Id)) {
+        error(N.IdLoc, P + "/id", "duplicate node id '" + N.Id + "'");
+        Diags.note(Prev->IdLoc, "previous definition of '" + N.Id + "' is here");
+        Ok = false;
+        continue;
+      }
+      G.Nodes.push_back(std::move(N));
+    }
+    return Ok;
+  }
+
+  bool parseMaterials(const Value &V, Graph &G) {
+    if (!expectKind(V, Value::Kind::Object, "/materials", "'materials'",
+                    "an object (material name to BSDF)"))
+      return false;
+    bool Ok = true;
+    for (const json::Member &M : V.Members) {
+      Material Mat;
+      Mat.Name = M.Key;
+      Mat.Loc = M.KeyLoc;
+      Ok &= parseBsdf(*M.Val, "/materials/" + pointerSegment(M.Key),
+                      "material '" + M.Key + "'", Mat.Root);
+      G.Materials.push_back(std::move(Mat));
+    }
+    return Ok;
+  }
+
+public:
+  bool parseTop(const Value &Root, Graph &G) {
+    if (!expectKind(Root, Value::Kind::Object, "", "a graph", "an object"))
+      return false;
+    bool Ok = checkKeys(Root, "", "graph",
+                        {"texcc", "sources", "images", "nodes", "materials"});
+    const Value *Version = require(Root, "texcc", "", "the graph");
+    if (!Version)
+      return false;
+    if (!Version->isNumber() || !Version->IsInteger || Version->Number != 1) {
+      error(Version->Loc, "/texcc",
+            "unsupported graph version " +
+                (Version->isNumber() ? "'" + Version->Text + "'" : json::describeKind(*Version)) +
+                "; this texcc reads version 1");
+      return false;
+    }
+    if (const Value *S = Root.get("sources"))
+      Ok &= parseStrings(*S, "/sources", G.Sources);
+    if (const Value *I = Root.get("images"))
+      Ok &= parseImages(*I, G);
+    if (const Value *N = Root.get("nodes"))
+      Ok &= parseNodes(*N, G);
+    const Value *M = require(Root, "materials", "", "the graph");
+    if (M)
+      Ok &= parseMaterials(*M, G);
+    return Ok && M;
+  }
+
+private:
+  const std::string &Path;
+  DiagnosticSink &Diags;
+};
+
+} // namespace
+
+std::optional<Graph> parseGraph(const std::string &Path, const std::string &Text,
+                                DiagnosticSink &Diags) {
+  std::optional<Value> Root = json::parse(Path, Text, Diags);
+  if (!Root)
+    return std::nullopt;
+  Graph G;
+  G.Path = Path;
+  GraphParser P(Path, Diags);
+  if (!P.parseTop(*Root, G))
+    return std::nullopt;
+  return G;
+}
+
+std::optional<ArgValue> parseArgValue(const std::string &File, const std::string &Text,
+                                      DiagnosticSink &Diags) {
+  std::optional<Value> V = json::parse(File, Text, Diags);
+  if (!V)
+    return std::nullopt;
+  ArgValue A;
+  GraphParser P(File, Diags);
+  if (!P.parseArgValue(*V, A, ""))
+    return std::nullopt;
+  return A;
+}
+
+} // namespace texcc::graph

@@ -1,0 +1,311 @@
+// texcc-eval: evaluates the textures of a texcc output folder at N deterministic pseudo-random
+// hit points for every material, and prints one line per (hit, material, output):
+//   <hit> <material> <output> <x> <y> <z> <w>        (%.9g)
+// On the first OpenCL device it builds OUTDIR/proctex.cl and runs the kernel(s) as layout.json
+// says (wavefront: every launch in order, then the outputs kernel); with --host it compiles
+// OUTDIR/proctex.cpp with g++ (-O1 -shared) and calls texcc_host_evaluate through dlopen.
+// Images bound in layout.json are replaced by small synthetic ones (deterministic, the same in
+// both paths), so that no image loader is needed.
+#include "texcc_abi.h"
+
+#include <CL/opencl.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <dlfcn.h>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using Json = nlohmann::json;
+
+namespace {
+
+struct Options {
+  std::string OutDir;
+  unsigned Grid = 16;
+  uint64_t Seed = 1;
+  bool Host = false;
+};
+
+/// Every input of one evaluation: the hits (Grid x materials), settings, synthetic images.
+struct Inputs {
+  std::vector<TexccHitAttrs> Hits;
+  std::vector<cl_int> HitMaterial;
+  TexccSettings Settings{};
+  std::vector<cl_float4> Texels;
+  std::vector<TexccImageInfo> Images;
+};
+
+struct LayoutInfo {
+  unsigned NumMaterials = 0;
+  unsigned MaxOutputs = 1;
+  unsigned ScratchPerHit = 0;
+  std::vector<unsigned> OutputsPerMaterial;
+  std::vector<std::string> Launches; // wavefront node kernels, in order
+  std::string Entry;
+  unsigned NumImages = 0;
+};
+
+[[noreturn]] void die(const std::string &Message) {
+  std::cerr << "texcc-eval: error: " << Message << "\n";
+  std::exit(1);
+}
+
+std::string readFile(const std::string &Path) {
+  std::ifstream IS(Path, std::ios::binary);
+  if (!IS)
+    die("cannot read '" + Path + "'");
+  std::ostringstream SS;
+  SS << IS.rdbuf();
+  return SS.str();
+}
+
+/// splitmix64: a small, portable, deterministic generator.
+struct Rng {
+  uint64_t State;
+  uint64_t next() {
+    uint64_t Z = (State += 0x9E3779B97F4A7C15ull);
+    Z = (Z ^ (Z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    Z = (Z ^ (Z >> 27)) * 0x94D049BB133111EBull;
+    return Z ^ (Z >> 31);
+  }
+  float uniform(float Lo, float Hi) {
+    return Lo + (Hi - Lo) * static_cast<float>(next() >> 40) / static_cast<float>(1 << 24);
+  }
+};
+
+cl_float4 f4(float X, float Y, float Z, float W) {
+  cl_float4 V;
+  V.s[0] = X;
+  V.s[1] = Y;
+  V.s[2] = Z;
+  V.s[3] = W;
+  return V;
+}
+
+cl_float4 unitVector(Rng &R) {
+  for (;;) {
+    float X = R.uniform(-1, 1), Y = R.uniform(-1, 1), Z = R.uniform(-1, 1);
+    float L = std::sqrt(X * X + Y * Y + Z * Z);
+    if (L > 0.1f && L <= 1.0f)
+      return f4(X / L, Y / L, Z / L, 0.0f);
+  }
+}
+
+TexccHitAttrs randomHit(Rng &R) {
+  TexccHitAttrs H{};
+  H.worldPos = f4(R.uniform(-3, 3), R.uniform(-3, 3), R.uniform(-3, 3), 1.0f);
+  H.objectPos = f4(R.uniform(-1, 1), R.uniform(-1, 1), R.uniform(-1, 1), 1.0f);
+  H.normal = unitVector(R);
+  H.geomNormal = unitVector(R);
+  H.tangent = unitVector(R);
+  H.viewDir = unitVector(R);
+  H.uvAO = f4(R.uniform(-0.5f, 1.5f), R.uniform(-0.5f, 1.5f), R.uniform(0, 1), 0.0f);
+  return H;
+}
+
+LayoutInfo readLayout(const std::string &OutDir) {
+  Json L = Json::parse(readFile(OutDir + "/layout.json"));
+  LayoutInfo Info;
+  Info.MaxOutputs = L.value("maxOutputs", 1u);
+  Info.ScratchPerHit = L.value("scratchFloat4PerHit", 0u);
+  for (const Json &M : L.at("materials"))
+    Info.OutputsPerMaterial.push_back(static_cast<unsigned>(M.at("outputs").size()));
+  Info.NumMaterials = static_cast<unsigned>(Info.OutputsPerMaterial.size());
+  const Json &K = L.at("kernel");
+  Info.Entry = K.at("entry").get<std::string>();
+  if (K.contains("launches"))
+    for (const Json &Launch : K.at("launches"))
+      Info.Launches.push_back(Launch.at("kernel").get<std::string>());
+  if (L.contains("images"))
+    Info.NumImages = static_cast<unsigned>(L.at("images").size());
+  return Info;
+}
+
+Inputs makeInputs(const LayoutInfo &Info, const Options &Opts) {
+  Inputs In;
+  Rng R{Opts.Seed * 0x2545F4914F6CDD1Dull + 17};
+  for (unsigned I = 0; I < Opts.Grid; ++I) {
+    TexccHitAttrs H = randomHit(R);
+    for (unsigned M = 0; M < Info.NumMaterials; ++M) {
+      In.Hits.push_back(H);
+      In.HitMaterial.push_back(Info.OutputsPerMaterial[M] ? static_cast<cl_int>(M) : -1);
+    }
+  }
+  In.Settings.cameraPos = f4(0.5f, 1.5f, -2.0f, 0.0f);
+  In.Settings.time = 0.75f;
+  In.Settings.frame = 3;
+  for (unsigned K = 0; K < Info.NumImages; ++K) {
+    TexccImageInfo Im{};
+    Im.offset = static_cast<int>(In.Texels.size());
+    Im.width = 4 + 3 * static_cast<int>(K);
+    Im.height = 3 + 2 * static_cast<int>(K);
+    for (int T = 0; T < Im.width * Im.height; ++T)
+      In.Texels.push_back(f4(R.uniform(0, 1), R.uniform(0, 1), R.uniform(0, 1), 1.0f));
+    In.Images.push_back(Im);
+  }
+  return In;
+}
+
+void printOutputs(const LayoutInfo &Info, const Options &Opts, const std::vector<float> &Out) {
+  for (unsigned I = 0; I < Opts.Grid; ++I)
+    for (unsigned M = 0; M < Info.NumMaterials; ++M) {
+      size_t Hit = static_cast<size_t>(I) * Info.NumMaterials + M;
+      for (unsigned K = 0; K < Info.OutputsPerMaterial[M]; ++K) {
+        const float *V = &Out[(Hit * Info.MaxOutputs + K) * 4];
+        std::printf("%u %u %u %.9g %.9g %.9g %.9g\n", I, M, K, V[0], V[1], V[2], V[3]);
+      }
+    }
+}
+
+template <class T> std::vector<T> nonEmpty(std::vector<T> V) {
+  if (V.empty())
+    V.resize(1);
+  return V;
+}
+
+std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Options &Opts) {
+  std::vector<cl::Platform> Platforms;
+  cl::Platform::get(&Platforms);
+  std::vector<cl::Device> Devices;
+  for (cl::Platform &P : Platforms) {
+    std::vector<cl::Device> D;
+    P.getDevices(CL_DEVICE_TYPE_ALL, &D);
+    Devices.insert(Devices.end(), D.begin(), D.end());
+  }
+  if (Devices.empty())
+    die("no OpenCL device found");
+  cl::Device Dev = Devices.front();
+  cl::Context Ctx(Dev);
+  cl::Program Prog(Ctx, readFile(Opts.OutDir + "/proctex.cl"));
+  try {
+    Prog.build({Dev}, "-cl-std=CL1.2");
+  } catch (const cl::Error &) {
+    die("building proctex.cl on '" + Dev.getInfo<CL_DEVICE_NAME>() +
+        "' failed:\n" + Prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(Dev));
+  }
+  cl::CommandQueue Q(Ctx, Dev);
+  const size_t NumHits = In.Hits.size();
+  std::string Args = readFile(Opts.OutDir + "/args.bin");
+  std::vector<cl_uint> Words((Args.size() + 3) / 4 + 1, 0);
+  std::memcpy(Words.data(), Args.data(), Args.size());
+  auto buffer = [&](auto Vec, cl_mem_flags Flags) {
+    auto V = nonEmpty(Vec);
+    using T = typename decltype(V)::value_type;
+    return cl::Buffer(Ctx, Flags | CL_MEM_COPY_HOST_PTR, V.size() * sizeof(T), V.data());
+  };
+  cl::Buffer Hits = buffer(In.Hits, CL_MEM_READ_ONLY);
+  cl::Buffer HitMaterial = buffer(In.HitMaterial, CL_MEM_READ_ONLY);
+  cl::Buffer FakeStack = buffer(Words, CL_MEM_READ_ONLY);
+  cl::Buffer Settings = buffer(std::vector<TexccSettings>{In.Settings}, CL_MEM_READ_ONLY);
+  cl::Buffer Texels = buffer(In.Texels, CL_MEM_READ_ONLY);
+  cl::Buffer Images = buffer(In.Images, CL_MEM_READ_ONLY);
+  std::vector<float> Out(NumHits * Info.MaxOutputs * 4, 0.0f);
+  cl::Buffer Outputs = buffer(Out, CL_MEM_READ_WRITE);
+  std::vector<cl_float4> Scratch(NumHits * Info.ScratchPerHit);
+  cl::Buffer ScratchBuf = buffer(Scratch, CL_MEM_READ_WRITE);
+  std::vector<std::string> Kernels = Info.Launches;
+  Kernels.push_back(Info.Entry);
+  for (const std::string &Name : Kernels) {
+    cl::Kernel K(Prog, Name.c_str());
+    K.setArg(0, Hits);
+    K.setArg(1, HitMaterial);
+    K.setArg(2, static_cast<cl_int>(NumHits));
+    K.setArg(3, FakeStack);
+    K.setArg(4, Settings);
+    K.setArg(5, Texels);
+    K.setArg(6, Images);
+    K.setArg(7, Outputs);
+    K.setArg(8, ScratchBuf);
+    if (NumHits)
+      Q.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(NumHits), cl::NullRange);
+  }
+  Q.enqueueReadBuffer(Outputs, CL_TRUE, 0, Out.size() * sizeof(float), Out.data());
+  return Out;
+}
+
+using HostEntry = int (*)(int, const TexccHitAttrs *, const TexccSettings *, const cl_float4 *,
+                          const TexccImageInfo *, float *);
+
+std::vector<float> runHost(const LayoutInfo &Info, const Inputs &In, const Options &Opts) {
+  char Dir[] = "/tmp/texcc-eval-XXXXXX";
+  if (!mkdtemp(Dir))
+    die("cannot create a temporary folder");
+  std::string So = std::string(Dir) + "/proctex.so";
+  const char *Cxx = std::getenv("CXX");
+  std::string Cmd = std::string(Cxx && *Cxx ? Cxx : "g++") +
+                    " -std=gnu++17 -O1 -shared -fPIC -w -o '" + So + "' '" + Opts.OutDir +
+                    "/proctex.cpp'";
+  if (std::system(Cmd.c_str()) != 0)
+    die("compiling proctex.cpp failed: " + Cmd);
+  void *Lib = dlopen(So.c_str(), RTLD_NOW | RTLD_LOCAL);
+  std::remove(So.c_str());
+  rmdir(Dir);
+  if (!Lib)
+    die(std::string("dlopen: ") + dlerror());
+  auto Fn = reinterpret_cast<HostEntry>(dlsym(Lib, Info.Entry.c_str()));
+  if (!Fn)
+    die("proctex.cpp has no '" + Info.Entry + "'");
+  std::vector<float> Out(In.Hits.size() * Info.MaxOutputs * 4, 0.0f);
+  auto Texels = nonEmpty(In.Texels);
+  auto Images = nonEmpty(In.Images);
+  for (size_t H = 0; H < In.Hits.size(); ++H)
+    if (In.HitMaterial[H] >= 0)
+      Fn(In.HitMaterial[H], &In.Hits[H], &In.Settings, Texels.data(), Images.data(),
+         &Out[H * Info.MaxOutputs * 4]);
+  return Out;
+}
+
+Options parseArgs(int Argc, char **Argv) {
+  Options Opts;
+  for (int I = 1; I < Argc; ++I) {
+    std::string A = Argv[I];
+    auto value = [&]() -> std::string {
+      if (I + 1 >= Argc)
+        die("missing value after " + A);
+      return Argv[++I];
+    };
+    if (A == "--grid")
+      Opts.Grid = static_cast<unsigned>(std::stoul(value()));
+    else if (A == "--seed")
+      Opts.Seed = std::stoull(value());
+    else if (A == "--host")
+      Opts.Host = true;
+    else if (A == "--help" || A == "-h") {
+      std::cout << "usage: texcc-eval OUTDIR [--grid N] [--seed S] [--host]\n";
+      std::exit(0);
+    } else if (!A.empty() && A[0] == '-')
+      die("unknown option '" + A + "'");
+    else
+      Opts.OutDir = A;
+  }
+  if (Opts.OutDir.empty())
+    die("no texcc output folder given (usage: texcc-eval OUTDIR [--grid N] [--seed S] "
+        "[--host])");
+  return Opts;
+}
+
+} // namespace
+
+int main(int Argc, char **Argv) {
+  Options Opts = parseArgs(Argc, Argv);
+  try {
+    LayoutInfo Info = readLayout(Opts.OutDir);
+    Inputs In = makeInputs(Info, Opts);
+    std::vector<float> Out = Opts.Host ? runHost(Info, In, Opts) : runOpenCL(Info, In, Opts);
+    printOutputs(Info, Opts, Out);
+  } catch (const cl::Error &E) {
+    die(std::string("OpenCL: ") + E.what() + " (" + std::to_string(E.err()) + ")");
+  } catch (const std::exception &E) {
+    die(E.what());
+  }
+  return 0;
+}

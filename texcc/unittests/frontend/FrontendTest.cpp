@@ -1,0 +1,131 @@
+// runFrontend on in-memory sources (FrontendOptions::VirtualFiles): rewriting, signatures,
+// call graph, diagnostics.
+#include "texcc/Frontend/Frontend.h"
+
+#include "gtest/gtest.h"
+
+using namespace texcc;
+using namespace texcc::frontend;
+
+namespace {
+
+struct FrontendRun {
+  llvm::Expected<FrontendResult> Result;
+  std::string Diags;
+};
+
+FrontendRun runOn(const std::map<std::string, std::string> &Files,
+          const std::set<std::string> &Textures = {}) {
+  FrontendOptions Opts;
+  Opts.VirtualFiles = Files;
+  std::vector<std::string> Sources;
+  for (const auto &F : Files)
+    Sources.push_back(F.first);
+  std::string Diags;
+  llvm::raw_string_ostream OS(Diags);
+  auto R = runFrontend(Sources, Textures, Opts, OS);
+  OS.flush();
+  return {std::move(R), Diags};
+}
+
+TEST(FrontendTest, PreludeGivesEachAttributeItsType) {
+  FrontendRun R = runOn({{"types.cl", "float f(void) {\n"
+                              "  float3 n = readAttr(\"Normal\");\n"
+                              "  float2 uv = readAttr(\"TexCoord0\");\n"
+                              "  float ao = readAttr(\"AO\");\n"
+                              "  int frame = readSetting(\"Frame\");\n"
+                              "  return n.x + uv.y + ao + frame;\n"
+                              "}\n"}});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  EXPECT_EQ(R.Diags, "");
+}
+
+TEST(FrontendTest, MismatchIsReportedAtTheUsersLine) {
+  FrontendRun R = runOn({{"bad.cl", "float f(void) {\n  float2 n = readAttr(\"Normal\");\n  return n.x;\n}\n"}});
+  ASSERT_FALSE(bool(R.Result));
+  llvm::consumeError(R.Result.takeError());
+  EXPECT_NE(R.Diags.find("bad.cl:2:10: error: initializing"), std::string::npos) << R.Diags;
+}
+
+TEST(FrontendTest, PrefixesAreUniqueAndSanitized) {
+  FrontendRun R = runOn({{"dir1/my-noise.cl", "float f(void) { return 1.0f; }\n"},
+                 {"dir2/my-noise.cl", "float f(void) { return 2.0f; }\n"},
+                 {"3d.cl", "float f(void) { return 3.0f; }\n"}});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  ASSERT_EQ(R.Result->Sources.size(), 3u);
+  EXPECT_EQ(R.Result->Sources[0].Prefix, "_3d_");
+  EXPECT_EQ(R.Result->Sources[1].Prefix, "my_noise_");
+  EXPECT_EQ(R.Result->Sources[2].Prefix, "my_noise2_");
+  EXPECT_EQ(R.Result->Sources[2].Functions.at("f"), "my_noise2_f");
+}
+
+TEST(FrontendTest, RewritesDefinitionsCallsAndApi) {
+  FrontendRun R = runOn({{"n.cl", "float g(float x) { return x; }\n"
+                          "float f(void) { return g(readAttr(\"AO\")) + sin(1.0f); }\n"}});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  EXPECT_EQ(R.Result->Sources[0].Text,
+            "float n_g(TEXCC_CTX_PARAM, float x) { return x; }\n"
+            "float n_f(TEXCC_CTX_PARAM) { return n_g(TEXCC_CTX_ARG, texcc_attr_AO(texcc_ctx)) + "
+            "sin(1.0f); }\n");
+}
+
+TEST(FrontendTest, CollectsSignatureAndCallTree) {
+  FrontendRun R = runOn({{"wood.cl", "float grain(float3 p) { return readAttr(\"AO\") * p.x; }\n"
+                             "float unused(void) { return readSetting(\"Time\"); }\n"
+                             "float4 wood(float3 p, __global const float4 *stops, sam2D img) {\n"
+                             "  return stops[0] * grain(p) + tex2D(img, readAttr(\"TexCoord0\"));\n"
+                             "}\n"}},
+                {"wood", "missing"});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  const FrontendResult &F = *R.Result;
+  ASSERT_EQ(F.Textures.count("missing"), 0u);
+  const graph::FunctionSignature &S = F.Textures.at("wood");
+  EXPECT_EQ(S.RenamedName, "wood_wood");
+  EXPECT_EQ(S.File, "wood.cl");
+  EXPECT_EQ(S.Return, graph::BaseType::Float4);
+  ASSERT_EQ(S.Params.size(), 3u);
+  EXPECT_EQ(S.Params[0].Name, "p");
+  EXPECT_EQ(S.Params[0].Type, (graph::ValueType{graph::BaseType::Float3, false}));
+  EXPECT_EQ(S.Params[1].Type, (graph::ValueType{graph::BaseType::Float4, true}));
+  EXPECT_EQ(S.Params[2].Type, (graph::ValueType{graph::BaseType::Sampler, false}));
+  EXPECT_EQ(S.Attributes, (std::vector<std::string>{"AO", "TexCoord0"}));
+  EXPECT_TRUE(S.Settings.empty());
+  EXPECT_EQ(F.Reachable.at("wood"), (std::set<std::string>{"wood_grain", "wood_wood"}));
+  const TranslatedSource &T = F.Sources[0];
+  EXPECT_EQ(T.Calls.at("wood_wood"), (std::set<std::string>{"wood_grain"}));
+  EXPECT_TRUE(T.Calls.at("wood_unused").empty());
+  EXPECT_EQ(T.Definitions.size(), 3u);
+}
+
+TEST(FrontendTest, RecordsDefinedMacros) {
+  FrontendRun R = runOn({{"m.cl", "#define A 1\n#define B(x) (x)\n#undef A\nfloat f(void) { return B(1.0f); }\n"}});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  EXPECT_EQ(R.Result->Sources[0].DefinedMacros, (std::vector<std::string>{"A", "B"}));
+}
+
+TEST(FrontendTest, ReportsEveryRestriction) {
+  FrontendRun R = runOn({{"r.cl", "float f(float x) { return f(x); }\n"
+                          "float g(__global float *p) { p[0] = 1.0f; return readAttr(\"Nope\"); }\n"}});
+  ASSERT_FALSE(bool(R.Result));
+  EXPECT_EQ(llvm::toString(R.Result.takeError()), "3 errors in texture sources");
+  EXPECT_NE(R.Diags.find("r.cl:1:27: error: recursion is not allowed in texture code: 'f' -> 'f'"),
+            std::string::npos)
+      << R.Diags;
+  EXPECT_NE(R.Diags.find("r.cl:2:30: error: cannot write through __global pointer 'p'"),
+            std::string::npos)
+      << R.Diags;
+  EXPECT_NE(R.Diags.find("r.cl:2:59: error: unknown attribute 'Nope'"), std::string::npos)
+      << R.Diags;
+}
+
+TEST(FrontendTest, MissingFileIsAnError) {
+  FrontendOptions Opts;
+  std::string Diags;
+  llvm::raw_string_ostream OS(Diags);
+  auto R = runFrontend({"/nonexistent/x.cl"}, {}, Opts, OS);
+  ASSERT_FALSE(bool(R));
+  EXPECT_NE(llvm::toString(R.takeError()).find("cannot open '/nonexistent/x.cl'"),
+            std::string::npos);
+}
+
+} // namespace
