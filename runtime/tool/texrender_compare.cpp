@@ -3,6 +3,7 @@
 //
 //   texrender-compare IMAGE.exr IMAGE_VAR.exr REF.exr REF_VAR.exr
 //                     [--block N] [--alpha A] [--mean-tolerance T]
+//   texrender-compare --mean IMAGE.exr      prints "mean R G B" (for tests of edits)
 //
 // Both images come with the per-pixel variance of their value (texrender --variance;
 // scripts/mitsuba_reference.py). Pixels are grouped in N x N blocks (default 8); for each block
@@ -121,8 +122,21 @@ int compare(const Args &A) {
 
 } // namespace
 
+int printMean(const std::string &Path) {
+  ImageRGBA Im = loadExr(Path);
+  double M[3] = {0, 0, 0};
+  for (size_t P = 0; P < size_t(Im.Width) * Im.Height; ++P)
+    for (int C = 0; C < 3; ++C)
+      M[C] += Im.Pixels[4 * P + C];
+  double N = double(Im.Width) * Im.Height;
+  std::printf("mean %.6f %.6f %.6f\n", M[0] / N, M[1] / N, M[2] / N);
+  return 0;
+}
+
 int main(int Argc, char **Argv) {
   try {
+    if (Argc == 3 && std::strcmp(Argv[1], "--mean") == 0)
+      return printMean(Argv[2]);
     return compare(parse(Argc, Argv));
   } catch (const std::exception &E) {
     std::fprintf(stderr, "texrender-compare: error: %s\n", E.what());
