@@ -480,8 +480,8 @@ def atrium(detail):
 
 def pedestal():
     """The plinth in the middle of the courtyard (the model stands on it)."""
-    m = box((-2.9, 0.0, -1.9), (2.9, 0.45, 1.9))
-    m.extend(box((-2.75, 0.45, -1.75), (2.75, 0.6, 1.75)))
+    m = box((-2.9, 0.0, -2.9), (2.9, 0.45, 2.9))
+    m.extend(box((-2.75, 0.45, -2.75), (2.75, 0.6, 2.75)))
     return m
 
 
