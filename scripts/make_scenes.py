@@ -20,6 +20,7 @@ Pure Python (no packages), no randomness: the same files on every run. Python 3.
   python3 scripts/make_scenes.py            # every example
   python3 scripts/make_scenes.py --only atrium rust
   python3 scripts/make_scenes.py --stats    # also print triangle counts per file
+  python3 scripts/make_scenes.py --out DIR  # write DIR/<example>/generated/ instead
 
 Units are metres, y is up. The model's object space is about 2.3 x 0.5 x 2.2 (centred on the
 origin, standing on y = 0): texture scales in the example graphs are chosen for it.
@@ -525,6 +526,8 @@ def main(argv):
     ap.add_argument("--only", nargs="*", help="examples to generate (default: all)")
     ap.add_argument("--detail", type=float, default=1.0, help="atrium tessellation factor")
     ap.add_argument("--stats", action="store_true", help="print triangle counts")
+    ap.add_argument("--out", default=os.path.join(ROOT, "examples"),
+                    help="folder holding the example folders (default: the repository's examples/)")
     args = ap.parse_args(argv)
     model = gear_model()
     plan = {
@@ -552,10 +555,10 @@ def main(argv):
             elif mesh is None:
                 shapes_mesh = shapes_mesh or shapes()
                 mesh = shapes_mesh
-            path = os.path.join(ROOT, "examples", name, "generated", filename)
+            path = os.path.join(args.out, name, "generated", filename)
             count = write_obj(path, mesh, what)
             if args.stats:
-                print("%-45s %8d triangles" % (os.path.relpath(path, ROOT), count))
+                print("%-45s %8d triangles" % ("%s/generated/%s" % (name, filename), count))
     return 0
 
 
