@@ -10,8 +10,8 @@
 float shade(float x) { return gainOf(x); }
 // CHECK: {{^}}#line 1 "{{.*}}include{{/|\\}}common.h"
 // CHECK: {{^}}float include_splice_gainOf(TEXCC_CTX_PARAM, float x) { return x * COMMON_GAIN; }
-// CHECK: {{^}}#line 9 "{{.*}}include-splice.cl"
-// CHECK-NEXT: {{^$}}
+// CHECK: {{^}}#line 9 "{{.*}}include-splice.cl"{{$}}
+// CHECK-EMPTY:
 // CHECK-NEXT: {{^}}float include_splice_shade(TEXCC_CTX_PARAM, float x) { return include_splice_gainOf(TEXCC_CTX_ARG, x); }
 // CHECK: {{^}}#undef COMMON_H
 // CHECK-NEXT: {{^}}#undef COMMON_GAIN
