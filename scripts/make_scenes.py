@@ -13,7 +13,7 @@ these paths):
                                           corners, the bolt heads and the axle)
   examples/<ex>/generated/ground.obj     a ground slab for the close-up scenes
   examples/<ex>/generated/shapes.obj     a UV sphere and a UV-mapped cube (image-multiply,
-                                          marble, custom-node)
+                                          marble, wood, custom-node)
 
 Pure Python (no packages), no randomness: the same files on every run. Python 3.8+.
 
@@ -542,6 +542,8 @@ def main(argv):
                    ("ground.obj", ground(20.0), "ground slab")],
         "custom-node": [("shapes.obj", None, "UV sphere and UV cube"),
                         ("ground.obj", ground(20.0), "ground slab")],
+        "wood": [("shapes.obj", None, "UV sphere and UV cube"),
+                 ("ground.obj", ground(20.0), "ground slab")],
     }
     wanted = args.only or list(plan)
     for name in wanted:
