@@ -22,7 +22,7 @@ Pure Python (no packages), no randomness: the same files on every run. Python 3.
   python3 scripts/make_scenes.py --stats    # also print triangle counts per file
   python3 scripts/make_scenes.py --out DIR  # write DIR/<example>/generated/ instead
 
-Units are metres, y is up. The model's object space is about 2.3 x 0.5 x 2.2 (centred on the
+Units are metres, y is up. The model's object space is about 3.4 x 0.8 x 2.2 (centred on the
 origin, standing on y = 0): texture scales in the example graphs are chosen for it.
 """
 
