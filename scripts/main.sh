@@ -14,7 +14,10 @@ for need in "$build/bin/texcc" "$build/bin/texrender" "$ex/graph.json" "$ex/scen
   fi
 done
 mkdir -p "$root/out"
-mapfile -t sources < <(cd "$ex" && ls ./*.cl)
-(cd "$ex" && "$build/bin/texcc" "${sources[@]}" --graph graph.json -o "$root/out/rust")
-"$build/bin/texrender" "$ex/scene.json" --textures "$root/out/rust" -o "$root/out/rust.png" --stats "$root/out/rust-stats.json"
+# The example's scene geometry is generated (deterministic, a few seconds), its sources come from
+# graph.json's "sources".
+"$root/.venv/bin/python" "$root/scripts/make_scenes.py" --only rust
+"$build/bin/texcc" --graph "$ex/graph.json" -o "$root/out/rust"
+"$build/bin/texrender" "$ex/scene.json" --textures "$root/out/rust" -o "$root/out/rust.png" \
+  --stats "$root/out/rust-stats.json"
 echo "main: wrote out/rust.png" >&2
