@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""Ray throughput of texrender (rays per second by kind, from OpenCL profiling events) on the
+Cornell box (plain, and with a texture that reads AO) and on the atrium with the rust texture.
+Writes bench/throughput.json and bench/throughput.md.
+
+usage: bench/throughput.py [--build build] [--device N]
+Needs texcc and texrender in BUILD/bin; the atrium is skipped when examples/atrium/generated
+(scripts/make_scenes.py) is missing.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+CASES = [
+    # name, scene, graph, texcc sources, texrender options
+    ("cornell", "examples/cornell/scene.json", "examples/cornell/graph.json", [],
+     ["--size", "256x256", "--spp", "64", "--max-depth", "8"]),
+    ("cornell+AO", "testsuite/Inputs/runtime/box/scene.json",
+     "testsuite/Inputs/runtime/const-tex/graph-ao.json", [],
+     ["--size", "256x256", "--spp", "16", "--max-depth", "8", "--ao-samples", "8"]),
+    ("atrium (rust)", "examples/atrium/scene.json", "examples/rust/graph.json", [],
+     ["--size", "512x512", "--spp", "4", "--max-depth", "4"]),
+]
+
+
+def run(cmd):
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        sys.exit("throughput.py: %s failed:\n%s" % (" ".join(cmd), r.stderr))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--device", default="0")
+    args = ap.parse_args()
+    texcc = os.path.join(args.build, "bin", "texcc")
+    texrender = os.path.join(args.build, "bin", "texrender")
+    results = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, scene, graph, sources, opts in CASES:
+            if name.startswith("atrium") and not os.path.exists(
+                    os.path.join(ROOT, "examples/atrium/generated/atrium.obj")):
+                print("throughput.py: skipping %s (run scripts/make_scenes.py)" % name)
+                continue
+            out = os.path.join(tmp, name.split()[0])
+            run([texcc] + sources + ["--graph", os.path.join(ROOT, graph), "-o", out])
+            stats = os.path.join(tmp, "stats.json")
+            cmd = [texrender, os.path.join(ROOT, scene), "--textures", out, "--quiet",
+                   "--device", args.device, "-o", os.path.join(tmp, "img.exr"), "--stats", stats]
+            run(cmd + opts)  # warm the program cache
+            run(cmd + opts)
+            with open(stats) as f:
+                s = json.load(f)
+            results.append({"scene": name, "options": " ".join(opts), "device": s["device"],
+                            "triangles": s["triangles"], "renderSeconds": s["renderSeconds"],
+                            "rays": s["rays"]})
+            print("%-14s %s" % (name, {k: round(v["perSecond"] / 1e6, 2)
+                                        for k, v in s["rays"].items()}))
+    with open(os.path.join(ROOT, "bench", "throughput.json"), "w") as f:
+        json.dump(results, f, indent=2)
+        f.write("\n")
+    lines = ["# texrender ray throughput", "",
+             "Rays per second by kind, from OpenCL profiling events of the kernel that traces "
+             "them (`closest_hit_primary`, `closest_hit_bounce`, `shadow`, `ao_trace`; "
+             "docs/runtime.md). Regenerate: `bench/throughput.py` (raw numbers: "
+             "`bench/throughput.json`).", "",
+             "| scene | triangles | options | device | primary Mray/s | bounce Mray/s | "
+             "shadow Mray/s | AO Mray/s | render s |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        ray = lambda k: ("%.2f" % (r["rays"][k]["perSecond"] / 1e6)) if r["rays"][k]["count"] else "-"
+        lines.append("| %s | %d | `%s` | %s | %s | %s | %s | %s | %.2f |" % (
+            r["scene"], r["triangles"], r["options"], r["device"], ray("primary"),
+            ray("bounce"), ray("shadow"), ray("ao"), r["renderSeconds"]))
+    with open(os.path.join(ROOT, "bench", "throughput.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
