@@ -3,14 +3,21 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 using namespace texcc::graph;
 
 namespace texcc::codegen {
 
 std::string floatLiteral(double V) {
+  // The shortest decimal that reads back as the same float: 0.7f, not 0.699999988f.
+  const float F = static_cast<float>(V);
   char Buf[64];
-  std::snprintf(Buf, sizeof(Buf), "%.9g", static_cast<double>(static_cast<float>(V)));
+  for (int Digits = 1; Digits <= 9; ++Digits) {
+    std::snprintf(Buf, sizeof(Buf), "%.*g", Digits, static_cast<double>(F));
+    if (std::strtof(Buf, nullptr) == F)
+      break;
+  }
   std::string S = Buf;
   if (S.find_first_of(".eEn") == std::string::npos)
     S += ".0";
@@ -163,9 +170,17 @@ std::string ArgEmitter::argument(const CompiledGraph &CG, const CompiledNode &N,
 std::string ArgEmitter::call(const CompiledGraph &CG, unsigned NodeIndex) const {
   const CompiledNode &N = CG.Nodes[NodeIndex];
   const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
-  std::string S = Sig.RenamedName + "(texcc_ctx";
-  for (const CompiledArg &A : N.Args)
-    S += ", " + argument(CG, N, NodeIndex, A);
+  std::vector<std::string> Args{"texcc_ctx"};
+  size_t Length = Sig.RenamedName.size();
+  for (const CompiledArg &A : N.Args) {
+    Args.push_back(argument(CG, N, NodeIndex, A));
+    Length += Args.back().size() + 2;
+  }
+  // Long calls get one argument per line.
+  const std::string Separator = Length > 72 ? ",\n" + std::string(ArgIndent, ' ') : ", ";
+  std::string S = Sig.RenamedName + "(";
+  for (size_t I = 0; I < Args.size(); ++I)
+    S += (I ? Separator : "") + Args[I];
   return S + ")";
 }
 

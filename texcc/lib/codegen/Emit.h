@@ -9,6 +9,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace texcc::codegen {
 
@@ -47,6 +48,7 @@ std::string signatureComment(const graph::FunctionSignature &Sig);
 struct ArgEmitter {
   Target Tgt = Target::OpenCL;
   bool BakeConstants = true;
+  unsigned ArgIndent = 6;  // continuation indent when a call takes one argument per line
   std::string (*ChildExpr)(const graph::CompiledGraph &, unsigned Child, Target) = nullptr;
   std::string argument(const graph::CompiledGraph &CG, const graph::CompiledNode &N,
                        unsigned NodeIndex, const graph::CompiledArg &A) const;

@@ -21,7 +21,17 @@
 // enables for GCC and Clang only together with its SIMD intrinsics.
 #define GLM_FORCE_SWIZZLE
 #define GLM_FORCE_INTRINSICS
-#include <glm/glm.hpp>
+// Only the vector types: the builtins below are texcc's own (OpenCL semantics), and the rest of
+// GLM would triple the compile time of every proctex.cpp.
+#include <glm/ext/vector_int2.hpp>
+#include <glm/ext/vector_int3.hpp>
+#include <glm/ext/vector_int4.hpp>
+#include <glm/ext/vector_uint2.hpp>
+#include <glm/ext/vector_uint3.hpp>
+#include <glm/ext/vector_uint4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #define __global
 #define __constant

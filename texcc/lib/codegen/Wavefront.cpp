@@ -43,6 +43,7 @@ static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsi
   emitKernelPrologue(OS, " || !texcc_wf_uses[mat][" + std::to_string(NodeIndex) + "]");
   ArgEmitter E;
   E.Tgt = Target::OpenCL;
+  E.ArgIndent = 10;
   E.BakeConstants = false;
   E.ChildExpr = scratchOfChild;
   OS << "  " << scratchAt(NodeIndex) << " =\n      "

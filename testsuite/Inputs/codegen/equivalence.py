@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""Equivalence of the evaluation modes on one graph: compiles it with texcc for the host target
+(the oracle) and for interp, inline and wavefront, evaluates each with texcc-eval over the same
+grid of hits, and compares every mode with the host (compare.py, max abs diff <= --tol).
+
+usage: equivalence.py --texcc TEXCC --eval TEXCC_EVAL --work DIR --grid N GRAPH [GRAPH ...]
+                      [--tol 1e-5] [--modes interp,inline,wavefront] [-- extra texcc options]
+Exit 0 when every mode of every graph agrees, 1 otherwise (each failure is printed).
+"""
+import argparse
+import os
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+
+def run(cmd, lines, out_path=None):
+    with open(out_path, "w") if out_path else open(os.devnull, "w") as out:
+        r = subprocess.run(cmd, stdout=out, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        lines.append("command failed (%d): %s\n%s" % (r.returncode, " ".join(cmd), r.stderr))
+        return False
+    return True
+
+
+def main():
+    argv = sys.argv[1:]
+    extra = []
+    if "--" in argv:
+        extra = argv[argv.index("--") + 1:]
+        argv = argv[:argv.index("--")]
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--texcc", required=True)
+    ap.add_argument("--eval", required=True)
+    ap.add_argument("--work", required=True)
+    ap.add_argument("--grid", type=int, default=32)
+    ap.add_argument("--tol", type=float, default=1e-5)
+    ap.add_argument("--modes", default="interp,inline,wavefront")
+    ap.add_argument("graphs", nargs="+")
+    args = ap.parse_args(argv)
+    os.makedirs(args.work, exist_ok=True)
+    modes = args.modes.split(",")
+    jobs = [(g, graph, args, modes, extra) for g, graph in enumerate(args.graphs)]
+    with ThreadPoolExecutor(max_workers=max(1, min(4, os.cpu_count() or 1))) as pool:
+        results = list(pool.map(lambda job: check_graph(*job), jobs))
+    failures = 0
+    for lines, failed in results:
+        for line in lines:
+            print(line)
+        failures += failed
+    total = len(args.graphs) * len(modes)
+    print("equivalence: %d of %d (graph, mode) pairs agree with the host target"
+          % (total - failures, total))
+    return 1 if failures else 0
+
+
+def check_graph(g, graph, args, modes, extra):
+    """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
+    lines, failures = [], 0
+    base = os.path.join(args.work, "%d-%s" % (g, os.path.splitext(os.path.basename(graph))[0]))
+    host_out = base + "-host"
+    ref = host_out + ".txt"
+    if not (run([args.texcc, "--target=host", "--graph", graph, "-o", host_out] + extra, lines)
+            and run([args.eval, host_out, "--grid", str(args.grid), "--host"], lines, ref)):
+        return lines, len(modes)
+    for mode in modes:
+        out = base + "-" + mode
+        dump = out + ".txt"
+        ok = (run([args.texcc, "--mode=" + mode, "--graph", graph, "-o", out] + extra, lines)
+              and run([args.eval, out, "--grid", str(args.grid)], lines, dump))
+        if ok:
+            r = subprocess.run([sys.executable, os.path.join(HERE, "compare.py"), ref, dump,
+                                "--tol", str(args.tol), "--label", "%s %s" % (graph, mode)],
+                               stdout=subprocess.PIPE, text=True)
+            lines.append(r.stdout.strip())
+            ok = r.returncode == 0
+        failures += 0 if ok else 1
+    return lines, failures
+
+
+if __name__ == "__main__":
+    sys.exit(main())
