@@ -41,10 +41,9 @@ void emitHost(std::ostringstream &OS, const CompiledGraph &CG) {
   OS << "/* Evaluates material `material` at one hit: writes its outputs (4 floats each, a float\n"
         " * in [0], ...) to outputs and returns how many; -1 for a material index out of range.\n"
         " * texels and images as the kernel's arguments 5 and 6 (docs/abi.md). */\n"
-     << "extern \"C\" int " << HostEntry
-     << "(int material, const TexccHitAttrs *hit, const TexccSettings *settings,\n"
-        "                        const cl_float4 *texels, const TexccImageInfo *images,\n"
-        "                        float *outputs) {\n"
+     << "extern \"C\" int " << HostEntry << "(int material, const TexccHitAttrs *hit,\n"
+     << "    const TexccSettings *settings, const cl_float4 *texels, const TexccImageInfo *images,\n"
+     << "    float *outputs) {\n"
         "  if (material < 0 || material >= TEXCC_NUM_MATERIALS)\n"
         "    return -1;\n"
         "  TexccCtx ctx;\n"
