@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""bench/run's driver: runs the figures (in the paper's priority order), saves
+bench/results/<figure>.json and regenerates the charts and BENCHMARKS.md.
+
+usage: bench/run [--quick] [--build DIR] [--device N] [--only FIGURE ...] [--report-only]
+"""
+import argparse
+import os
+import sys
+import tempfile
+import time
+
+import accuracy
+import common
+import edits
+import report
+import resources
+import stability
+import table1
+
+FIGURES = [("table1", table1), ("edits", edits), ("resources", resources),
+           ("accuracy", accuracy), ("stability", stability)]
+
+
+def main():
+    ap = argparse.ArgumentParser(description="texcc benchmarks")
+    ap.add_argument("--quick", action="store_true", help="small sizes (under 15 minutes)")
+    ap.add_argument("--build", default=os.environ.get("TEXCC_BUILD_DIR",
+                                                      os.path.join(common.ROOT, "build")))
+    ap.add_argument("--device", default="0")
+    ap.add_argument("--only", nargs="*", choices=[n for n, _ in FIGURES])
+    ap.add_argument("--report-only", action="store_true", help="only regenerate the report")
+    ap.add_argument("--note", help="a sentence on the binaries used, kept in bench/results/note.json")
+    args = ap.parse_args()
+    if args.note is not None:
+        common.save("note", {"note": args.note})
+    if not args.report_only:
+        run_figures(args)
+    report.write(args)
+    return 0
+
+
+def ensure_scenes():
+    """The atrium's meshes are generated (git-ignored): make them when missing."""
+    if not os.path.exists(os.path.join(common.ROOT, "examples", "atrium", "generated",
+                                       "atrium.obj")):
+        common.log("generating the atrium (scripts/make_scenes.py --only atrium)")
+        common.run([sys.executable, os.path.join(common.ROOT, "scripts", "make_scenes.py"),
+                    "--only", "atrium"])
+
+
+def run_figures(args):
+    ensure_scenes()
+    tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-bench-"),
+                         args.device)
+    start = time.perf_counter()
+    for name, module in FIGURES:
+        if args.only and name not in args.only:
+            continue
+        t0 = time.perf_counter()
+        data = module.measure(tools, args.quick)
+        data["quick"] = args.quick
+        data["seconds"] = time.perf_counter() - t0
+        data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+        data["build"] = os.path.relpath(tools.build, common.ROOT)
+        data["command"] = "bench/run" + (" --quick" if args.quick else "") + \
+            (" --only " + name if args.only else "")
+        data["machine"] = common.machine()
+        data["git"] = common.git_head()
+        common.save(name, data)
+        common.log("%s done in %.0f s" % (name, data["seconds"]))
+    common.log("all figures in %.0f s" % (time.perf_counter() - start))
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except common.BenchError as e:
+        sys.stderr.write("bench: error: %s\n" % e)
+        sys.exit(1)

@@ -1,0 +1,132 @@
+"""Shared helpers of the benchmarks: running texcc and texrender, reading stats.json, medians,
+the machine description. Every helper raises BenchError on a failed measurement so that
+bench/run exits non-zero."""
+import json
+import os
+import platform
+import statistics
+import subprocess
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BENCH = os.path.join(ROOT, "bench")
+RESULTS = os.path.join(BENCH, "results")
+CHARTS = os.path.join(BENCH, "charts")
+MODES = ("interp", "inline", "wavefront")
+
+# Kernels of texrender that are not the texture kernel (docs/runtime.md).
+FIXED_KERNELS = {"raygen", "closest_hit_primary", "closest_hit_bounce", "hit_attributes",
+                 "ao_trace", "ao_reduce", "shade", "shadow", "compact", "accumulate"}
+
+
+class BenchError(Exception):
+    pass
+
+
+class Tools:
+    """The binaries of one build folder and the work folder of this run."""
+
+    def __init__(self, build, work, device="0"):
+        self.texcc = os.path.join(build, "bin", "texcc")
+        self.texrender = os.path.join(build, "bin", "texrender")
+        for tool in (self.texcc, self.texrender):
+            if not os.access(tool, os.X_OK):
+                raise BenchError("%s: not built (ninja -C %s texcc texrender)" % (tool, build))
+        self.build = build
+        self.work = work
+        self.device = device
+        self.cache = os.path.join(work, "cache")
+        os.makedirs(self.cache, exist_ok=True)
+
+
+def run(cmd, timeout=None, cwd=None):
+    """Runs cmd; returns (wall seconds, stdout). Raises BenchError on failure or timeout."""
+    start = time.perf_counter()
+    try:
+        r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                           timeout=timeout, cwd=cwd)
+    except subprocess.TimeoutExpired:
+        raise BenchError("timed out after %ss: %s" % (timeout, " ".join(cmd)))
+    wall = time.perf_counter() - start
+    if r.returncode != 0:
+        raise BenchError("failed (exit %d): %s\n%s" % (r.returncode, " ".join(cmd),
+                                                      r.stderr.strip()[-2000:]))
+    return wall, r.stdout
+
+
+def texcc(tools, graph, out, mode, extra=(), timeout=None):
+    """Compiles graph into out with the given mode; returns texcc's wall seconds."""
+    cmd = [tools.texcc, "--mode=" + mode, "--graph", graph, "-o", out] + list(extra)
+    wall, _ = run(cmd, timeout=timeout)
+    return wall
+
+
+def texrender(tools, scene, textures, name, opts=(), timeout=None, image="png", cache=None):
+    """Renders scene; returns (stats dict, image path, wall seconds)."""
+    out = os.path.join(tools.work, name)
+    stats = out + ".stats.json"
+    img = out + "." + image
+    cmd = [tools.texrender, scene, "--textures", textures, "-o", img, "--stats", stats,
+           "--quiet", "--device", tools.device, "--cache-dir", cache or tools.cache] + list(opts)
+    wall, _ = run(cmd, timeout=timeout)
+    with open(stats) as f:
+        return json.load(f), img, wall
+
+
+def texture_kernel_seconds(stats):
+    """Device seconds of the texture kernel(s): every kernel that is not a fixed one."""
+    return sum(k["seconds"] for name, k in stats["kernels"].items()
+               if name not in FIXED_KERNELS)
+
+
+def ao_seconds(stats):
+    k = stats["kernels"]
+    return sum(k[name]["seconds"] for name in ("ao_trace", "ao_reduce") if name in k)
+
+
+def median(values):
+    return statistics.median(values)
+
+
+def machine():
+    """The CPU model and core count (lscpu), the OpenCL device is recorded per result."""
+    info = {"platform": platform.platform(), "python": platform.python_version()}
+    try:
+        out = subprocess.run(["lscpu"], stdout=subprocess.PIPE, text=True).stdout
+        for line in out.splitlines():
+            key, _, value = line.partition(":")
+            if key.strip() in ("Model name", "CPU(s)", "Thread(s) per core", "Architecture"):
+                info[key.strip()] = value.strip()
+    except OSError:
+        info["Model name"] = "unknown (lscpu missing)"
+    return info
+
+
+def git_head():
+    """HEAD's short hash, with "+dirty" when the working tree differs from it."""
+    head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                          stdout=subprocess.PIPE, text=True).stdout.strip()
+    dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no"],
+                           stdout=subprocess.PIPE, text=True).stdout.strip()
+    return head + ("+dirty" if dirty else "")
+
+
+def save(name, data):
+    os.makedirs(RESULTS, exist_ok=True)
+    path = os.path.join(RESULTS, name + ".json")
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1, sort_keys=True)
+        f.write("\n")
+    return path
+
+
+def load(name):
+    path = os.path.join(RESULTS, name + ".json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
+def log(msg):
+    print("bench: " + msg, flush=True)
