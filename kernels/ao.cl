@@ -1,6 +1,7 @@
 /* ao.cl: ambient occlusion as two kernels. ao_trace runs numActive * aoSamples work-items in one
  * launch (work-item k traces AO ray k % aoSamples of hit k / aoSamples: cosine-weighted around
- * the shading normal, any-hit, up to aoDistance); ao_reduce averages each hit's rays into
+ * the shading normal, any-hit, up to aoDistance; only hits whose material's textures read AO
+ * trace, the other work-items return at once); ao_reduce averages each hit's rays into
  * TexccHitAttrs.uvAO.z (1 = unoccluded) and counts the AO rays traced. */
 #include "rt_bvh.h"
 #include "rt_surface.h"
@@ -8,6 +9,7 @@
 __kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tris,
                        __global const RtTriAttr *triAttrs, __global const RtPath *paths,
                        __global const int *active, int numActive, __global const RtHit *hits,
+                       __global const RtMesh *meshes, __global const RtMaterial *materials,
                        int aoSamples, float aoDistance, float eps, uint seed,
                        __global uchar *occluded) {
   int k = get_global_id(0);
@@ -16,7 +18,7 @@ __kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tr
   int i = k / aoSamples;
   int j = k % aoSamples;
   RtHit h = hits[i];
-  if (h.tri < 0) {
+  if (h.tri < 0 || !materials[meshes[triAttrs[h.tri].mesh].material].readsAo) {
     occluded[k] = 0;
     return;
   }
@@ -31,10 +33,12 @@ __kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tr
 }
 
 __kernel void ao_reduce(__global const uchar *occluded, __global const RtHit *hits,
-                        int numActive, int aoSamples, __global TexccHitAttrs *attrs,
-                        __global uint *counters) {
+                        __global const RtTriAttr *triAttrs, __global const RtMesh *meshes,
+                        __global const RtMaterial *materials, int numActive, int aoSamples,
+                        __global TexccHitAttrs *attrs, __global uint *counters) {
   int i = get_global_id(0);
-  if (i >= numActive || hits[i].tri < 0)
+  if (i >= numActive || hits[i].tri < 0 ||
+      !materials[meshes[triAttrs[hits[i].tri].mesh].material].readsAo)
     return;
   atomic_add(&counters[RT_COUNT_AO_RAYS], (uint)aoSamples);
   int n = 0;

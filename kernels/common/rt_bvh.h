@@ -62,6 +62,7 @@ inline RtHit rt_trace(__global const RtBvhNode *nodes, __global const RtTri *tri
   hit.v = 0.0f;
   float3 invd = rt_safe_inverse(d);
   int stack[RT_BVH_STACK];
+  float entry[RT_BVH_STACK]; /* the entry distance of each stacked node */
   int sp = 0;
   int node = 0;
   if (rt_intersect_box(&nodes[0], o, invd, hit.t) == INFINITY)
@@ -91,15 +92,25 @@ inline RtHit rt_trace(__global const RtBvhNode *nodes, __global const RtTri *tri
         int tc = c0; c0 = c1; c1 = tc;
       }
       if (d0 != INFINITY) {
-        if (d1 != INFINITY && sp < RT_BVH_STACK)
-          stack[sp++] = c1;
+        if (d1 != INFINITY && sp < RT_BVH_STACK) {
+          stack[sp] = c1;
+          entry[sp++] = d1;
+        }
         node = c0;
         continue;
       }
     }
-    if (sp == 0)
+    /* Pop the nearest pending node that can still hold a closer hit. */
+    node = -1;
+    while (sp > 0) {
+      --sp;
+      if (entry[sp] <= hit.t) {
+        node = stack[sp];
+        break;
+      }
+    }
+    if (node < 0)
       break;
-    node = stack[--sp];
   }
   return hit;
 }

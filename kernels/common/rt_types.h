@@ -98,7 +98,7 @@ typedef struct RtBsdfNode {
 typedef struct RtMaterial {
   int root;       /* index of its root RtBsdfNode */
   int numOutputs; /* texture outputs; 0: the texture kernel does nothing for it */
-  int pad0;
+  int readsAo;    /* its textures read AO: only its hits trace AO rays */
   int pad1;
 } RtMaterial;
 

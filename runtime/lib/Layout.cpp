@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -145,6 +147,33 @@ Layout loadLayout(const std::string &OutDir) {
         L.Images.push_back(
             {I.at("name").get<std::string>(), (P.is_absolute() ? P : fs::path(OutDir) / P).string()});
       }
+    // Which nodes read AO (their function's call tree, or an argument), through the nodes
+    // they depend on: a material whose outputs do not depend on AO traces no AO rays.
+    std::map<unsigned, bool> FnReadsAo;
+    if (J.contains("functions"))
+      for (auto &F : J["functions"])
+        for (auto &A : F.value("attributes", json::array()))
+          if (A == "AO")
+            FnReadsAo[F.at("id").get<unsigned>()] = true;
+    std::vector<json> Nodes;
+    if (J.contains("nodes"))
+      for (auto &N : J["nodes"])
+        Nodes.push_back(N);
+    std::function<bool(size_t, int)> NodeReadsAo = [&](size_t I, int Depth) {
+      if (I >= Nodes.size() || Depth > 10000)
+        return true; // unknown: assume it does
+      const json &N = Nodes[I];
+      if (FnReadsAo.count(N.value("fnId", 0u)))
+        return true;
+      for (auto &A : N.value("args", json::array())) {
+        std::string Src = A.value("source", "");
+        if (Src == "attr" && A.value("attr", "") == "AO")
+          return true;
+        if (Src == "node" && NodeReadsAo(A.value("node", size_t(0)), Depth + 1))
+          return true;
+      }
+      return false;
+    };
     const json &Ms = R.get(J, "materials", "");
     for (size_t I = 0; I < Ms.size(); ++I) {
       std::string P = "/materials/" + std::to_string(I);
@@ -153,7 +182,10 @@ Layout loadLayout(const std::string &OutDir) {
       M.Index = Ms[I].value("index", static_cast<int>(I));
       if (Ms[I].contains("outputs"))
         for (auto &O : Ms[I]["outputs"])
+        {
           M.OutputComponents.push_back(componentsOf(O.value("type", "float")));
+          M.ReadsAo |= Nodes.empty() ? true : NodeReadsAo(O.value("node", size_t(0)), 0);
+        }
       M.Bsdf = R.bsdf(R.get(Ms[I], "bsdf", P), P + "/bsdf");
       L.Materials.push_back(M);
     }

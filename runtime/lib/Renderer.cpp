@@ -193,6 +193,11 @@ void Renderer::applyArguments(const std::vector<uint8_t> &ArgsBin,
     Lay.Attributes = Attributes;
     AttrMask = attributeMaskOf(Lay);
     Capacity = 0; // the AO buffer may now be needed
+    // Which materials read AO may have changed: let every textured one trace AO rays.
+    for (LayoutMaterial &M : Lay.Materials)
+      M.ReadsAo = true;
+    buildMaterials(Lay, Data.Materials, Data.BsdfNodes);
+    Cl->write(B["materials"], Data.Materials.data(), bytes(Data.Materials));
   }
   Lay.ArgsBin = ArgsBin;
   size_t Have = Cl->memory().count("fakeStack") ? Cl->memory().at("fakeStack") : 0;
@@ -269,16 +274,18 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
       cl::Kernel &AT = K["ao_trace"];
       AT.setArg(0, B["bvhNodes"]), AT.setArg(1, B["triangles"]);
       AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Cur);
-      AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, cl_int(Settings.AoSamples));
-      AT.setArg(8, cl_float(Settings.AoDistance)), AT.setArg(9, cl_float(1e-4f));
-      AT.setArg(10, cl_uint(Settings.Seed)), AT.setArg(11, B["aoOccluded"]);
+      AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, B["meshes"]);
+      AT.setArg(8, B["materials"]), AT.setArg(9, cl_int(Settings.AoSamples));
+      AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_float(1e-4f));
+      AT.setArg(12, cl_uint(Settings.Seed)), AT.setArg(13, B["aoOccluded"]);
       Cl->launch(AT, size_t(Count) * Settings.AoSamples, "ao_trace");
       Stats.AoWorkItemsPerLaunchMax =
           std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, uint64_t(Count) * Settings.AoSamples);
       cl::Kernel &AR = K["ao_reduce"];
-      AR.setArg(0, B["aoOccluded"]), AR.setArg(1, B["hits"]), AR.setArg(2, cl_int(Count));
-      AR.setArg(3, cl_int(Settings.AoSamples)), AR.setArg(4, B["hitAttributes"]);
-      AR.setArg(5, B["counters"]);
+      AR.setArg(0, B["aoOccluded"]), AR.setArg(1, B["hits"]), AR.setArg(2, B["triangleAttributes"]);
+      AR.setArg(3, B["meshes"]), AR.setArg(4, B["materials"]), AR.setArg(5, cl_int(Count));
+      AR.setArg(6, cl_int(Settings.AoSamples)), AR.setArg(7, B["hitAttributes"]);
+      AR.setArg(8, B["counters"]);
       Cl->launch(AR, Count, "ao_reduce");
     }
     if (StopAfterAttributes)
@@ -405,6 +412,10 @@ std::vector<TexccHitAttrs> Renderer::primaryHitAttributes(uint32_t Mask, FrameSt
   Cl->resetTimings();
   uint32_t Saved = AttrMask;
   AttrMask |= Mask;
+  std::vector<RtMaterial> AllAo = Data.Materials;
+  for (RtMaterial &M : AllAo)
+    M.readsAo = 1;
+  Cl->write(B["materials"], AllAo.data(), bytes(AllAo));
   size_t N = size_t(Settings.Width) * Settings.Height;
   allocateWorkBuffers(std::max(N, Capacity));
   RtCamera Cam = makeCamera(SceneDesc.Cam, Settings.Width, Settings.Height);
@@ -424,6 +435,7 @@ std::vector<TexccHitAttrs> Renderer::primaryHitAttributes(uint32_t Mask, FrameSt
   Stats.AoRays = Counters[RT_COUNT_AO_RAYS];
   Stats.Kernels = Cl->timings();
   AttrMask = Saved;
+  Cl->write(B["materials"], Data.Materials.data(), bytes(Data.Materials));
   Capacity = 0; // the AO buffer may be missing for the normal mask
   return Out;
 }

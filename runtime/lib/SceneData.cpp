@@ -208,6 +208,7 @@ void buildMaterials(const Layout &L, std::vector<RtMaterial> &Materials,
     RtMaterial &R = Materials[M.Index];
     R.root = flattenBsdf(M.Bsdf, M, Nodes);
     R.numOutputs = int(M.OutputComponents.size());
+    R.readsAo = M.ReadsAo && R.numOutputs > 0;
   }
 }
 
