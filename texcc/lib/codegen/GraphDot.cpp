@@ -32,8 +32,9 @@ static std::string argSource(const CompiledArg &A) {
       S = "array[" + std::to_string(A.ArrayCount) + "] @" + std::to_string(A.ArrayByteOffset);
     } else {
       S = "const";
+      bool IsInt = A.Type.Base == BaseType::Int || A.Type.Base == BaseType::Sampler;
       for (double V : A.Values)
-        S += " " + floatLiteral(V);
+        S += " " + (IsInt ? intLiteral(V) : floatLiteral(V));
     }
     break;
   }
@@ -57,7 +58,7 @@ std::string generateGraphDot(const CompiledGraph &CG) {
     for (size_t P = 0; P < N.Args.size(); ++P) {
       const CompiledArg &A = N.Args[P];
       OS << " | <a" << P << "> " << dotEscape(A.Name) << ": " << dotEscape(spelling(A.Type))
-         << " +" << A.BlockOffset << " \\= " << dotEscape(argSource(A));
+         << " +" << A.BlockOffset << " = " << dotEscape(argSource(A));
     }
     OS << "}\"];\n";
   }

@@ -26,6 +26,11 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
     Error = "cannot create output folder '" + Dir + "': " + EC.message();
     return false;
   }
+  for (const OutputFile &F : Files)
+    if (fs::is_directory(fs::path(Dir) / F.Name)) {
+      Error = "cannot write '" + (fs::path(Dir) / F.Name).string() + "': it is a folder";
+      return false;
+    }
   const std::string Suffix = ".tmp" + std::to_string(static_cast<long>(::getpid()));
   std::vector<fs::path> Temps;
   for (const OutputFile &F : Files) {
@@ -40,14 +45,36 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
       return false;
     }
   }
-  for (size_t I = 0; I < Files.size(); ++I) {
-    fs::rename(Temps[I], fs::path(Dir) / Files[I].Name, EC);
-    if (EC) {
-      Error = "cannot rename '" + Temps[I].string() + "': " + EC.message();
-      removeAll(Temps);
-      return false;
+  // Put the new files in place one by one, keeping each old one aside until all are in, so
+  // that a failure half way can restore the previous outputs exactly.
+  std::vector<std::pair<fs::path, fs::path>> Saved; // target, backup
+  std::vector<fs::path> Placed;
+  for (size_t I = 0; I < Files.size() && !EC; ++I) {
+    fs::path Target = fs::path(Dir) / Files[I].Name;
+    if (fs::exists(fs::symlink_status(Target))) {
+      fs::path Backup = fs::path(Dir) / ("." + Files[I].Name + ".old" + Suffix);
+      fs::rename(Target, Backup, EC);
+      if (EC)
+        break;
+      Saved.push_back({Target, Backup});
     }
+    fs::rename(Temps[I], Target, EC);
+    if (!EC)
+      Placed.push_back(Target);
   }
+  if (EC) {
+    Error = "cannot write the outputs into '" + Dir + "': " + EC.message();
+    removeAll(Placed);
+    std::error_code Ignored;
+    for (const auto &[Target, Backup] : Saved)
+      fs::rename(Backup, Target, Ignored);
+    removeAll(Temps);
+    return false;
+  }
+  std::vector<fs::path> Backups;
+  for (const auto &Entry : Saved)
+    Backups.push_back(Entry.second);
+  removeAll(Backups);
   return true;
 }
 
