@@ -62,7 +62,9 @@ def run_figures(args):
         data["quick"] = args.quick
         data["seconds"] = time.perf_counter() - t0
         data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
-        data["build"] = os.path.relpath(tools.build, common.ROOT)
+        data["build"] = (os.path.relpath(tools.build, common.ROOT)
+                         if tools.build.startswith(common.ROOT + os.sep) else tools.build)
+        data["loadAverage"] = os.getloadavg()[1]
         data["command"] = "bench/run" + (" --quick" if args.quick else "") + \
             (" --only " + name if args.only else "")
         data["machine"] = common.machine()
