@@ -57,7 +57,9 @@ def main():
             run(cmd + opts)
             with open(stats) as f:
                 s = json.load(f)
+            load = os.getloadavg()[0]
             results.append({"scene": name, "options": " ".join(opts), "device": s["device"],
+                            "cpus": os.cpu_count(), "loadAverage": round(load, 1),
                             "triangles": s["triangles"], "renderSeconds": s["renderSeconds"],
                             "rays": s["rays"]})
             print("%-14s %s" % (name, {k: round(v["perSecond"] / 1e6, 2)
@@ -69,15 +71,17 @@ def main():
              "Rays per second by kind, from OpenCL profiling events of the kernel that traces "
              "them (`closest_hit_primary`, `closest_hit_bounce`, `shadow`, `ao_trace`; "
              "docs/runtime.md). Regenerate: `bench/throughput.py` (raw numbers: "
-             "`bench/throughput.json`).", "",
+             "`bench/throughput.json`). On a CPU device the numbers depend on what else runs: "
+             "the load average (1 min) at the end of each run is listed.", "",
              "| scene | triangles | options | device | primary Mray/s | bounce Mray/s | "
-             "shadow Mray/s | AO Mray/s | render s |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "shadow Mray/s | AO Mray/s | render s | CPUs, load |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         ray = lambda k: ("%.2f" % (r["rays"][k]["perSecond"] / 1e6)) if r["rays"][k]["count"] else "-"
-        lines.append("| %s | %d | `%s` | %s | %s | %s | %s | %s | %.2f |" % (
+        lines.append("| %s | %d | `%s` | %s | %s | %s | %s | %s | %.2f | %d, %.1f |" % (
             r["scene"], r["triangles"], r["options"], r["device"], ray("primary"),
-            ray("bounce"), ray("shadow"), ray("ao"), r["renderSeconds"]))
+            ray("bounce"), ray("shadow"), ray("ao"), r["renderSeconds"], r["cpus"],
+            r["loadAverage"]))
     with open(os.path.join(ROOT, "bench", "throughput.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
