@@ -219,9 +219,11 @@ void Renderer::allocateWorkBuffers(size_t N) {
   B["activeB"] = Cl->allocate("activeB", N * sizeof(cl_int), RW);
   B["hits"] = Cl->allocate("hits", N * sizeof(RtHit), RW);
   B["shadowRays"] = Cl->allocate("shadowRays", N * sizeof(RtShadowRay), RW);
-  B["hitAttributes"] = Cl->allocate("hitAttributes", N * sizeof(TexccHitAttrs), RW);
-  B["hitMaterial"] = Cl->allocate("hitMaterial", N * sizeof(cl_int), RW);
-  B["textureOutputs"] = Cl->allocate("textureOutputs", N * Lay.MaxOutputs * sizeof(cl_float4), RW);
+  // Without texture work or attributes these are never read: a token allocation each.
+  const size_t PerHit = (AttrMask != 0 || HasTextureWork) ? N : 1;
+  B["hitAttributes"] = Cl->allocate("hitAttributes", PerHit * sizeof(TexccHitAttrs), RW);
+  B["hitMaterial"] = Cl->allocate("hitMaterial", PerHit * sizeof(cl_int), RW);
+  B["textureOutputs"] = Cl->allocate("textureOutputs", (HasTextureWork ? N : 1) * Lay.MaxOutputs * sizeof(cl_float4), RW);
   size_t ScratchPerHit = Lay.Mode == "wavefront" ? Lay.ScratchFloat4PerHit
                          : Lay.Spill             ? Lay.StackSlots
                                                  : 0;
