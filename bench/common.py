@@ -1,6 +1,7 @@
 """Shared helpers of the benchmarks: running texcc and texrender, reading stats.json, medians,
 the machine description. Every helper raises BenchError on a failed measurement so that
 bench/run exits non-zero."""
+import contextlib
 import json
 import os
 import platform
@@ -71,6 +72,21 @@ def texrender(tools, scene, textures, name, opts=(), timeout=None, image="png", 
     wall, _ = run(cmd, timeout=timeout)
     with open(stats) as f:
         return json.load(f), img, wall
+
+
+@contextlib.contextmanager
+def no_pocl_cache():
+    """PoCL keeps its own cache of compiled kernels (~/.cache/pocl), keyed by source: a
+    kernel built by an earlier run would cost nothing. Build-time measurements turn it off."""
+    old = os.environ.get("POCL_KERNEL_CACHE")
+    os.environ["POCL_KERNEL_CACHE"] = "0"
+    try:
+        yield
+    finally:
+        if old is None:
+            del os.environ["POCL_KERNEL_CACHE"]
+        else:
+            os.environ["POCL_KERNEL_CACHE"] = old
 
 
 def texture_kernel_seconds(stats):

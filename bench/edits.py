@@ -10,7 +10,8 @@ A new user function cannot go through the edit mode: its live editor knows only 
 signatures in layout.json, which lists the functions the kernel contains. It is measured as
 texcc on bench/inputs/edit/graph-new-function.json and a fresh texrender whose texture kernel
 is not cached; its kernel build time is that process's wall time minus a second one's that
-finds the kernel in the program cache."""
+finds the kernel in the program cache. PoCL's own kernel cache is off (POCL_KERNEL_CACHE=0)
+so that every build is a real one."""
 import copy
 import json
 import os
@@ -76,6 +77,13 @@ def measure(tools, quick):
     samples = {m: {"argument": [], "rewire": [], "new": [], "texcc": {"argument": [],
                                                                      "rewire": []}}
                for m in common.MODES}
+    with common.no_pocl_cache():
+        run_reps(tools, reps, opts, graphs, samples)
+    return {"size": size, "spp": 1, "repetitions": reps, "rows": summarize(samples),
+            "samples": samples, "poclKernelCache": False}
+
+
+def run_reps(tools, reps, opts, graphs, samples):
     for rep in range(reps):
         for mode in common.MODES:
             common.log("edits rep %d/%d %s" % (rep + 1, reps, mode))
@@ -85,8 +93,6 @@ def measure(tools, quick):
                 samples[mode]["texcc"][kind].append(common.texcc(
                     tools, graphs[kind], os.path.join(tools.work, "edit-texcc"), mode))
             samples[mode]["new"].append(new_function(tools, mode, opts, rep))
-    return {"size": size, "spp": 1, "repetitions": reps, "rows": summarize(samples),
-            "samples": samples}
 
 
 def summarize(samples):

@@ -52,7 +52,7 @@ def machine_section(results):
     lines += ["", "Sum of the figures' run times: %.1f minutes (%s run)." % (
         total / 60, "quick" if any_result.get("quick") else "full")]
     if any_result.get("quick"):
-        lines += ["", "The full run (`bench/run`: 512x512, 5 repetitions, a 1024-spp reference, "
+        lines += ["", "The full run (`bench/run`: 512x512, more repetitions, a 1024-spp reference, "
                   "the stability sweep up to each mode's failure or 10 minutes per point) has "
                   "not been run yet; its duration is not measured."]
     return lines + [""]
@@ -99,12 +99,18 @@ def table1_verdict(d):
                    "against RTX (+%d%%) it %s." % (
                        r["texture"], r["mode"], pct(ours), paper, word, r["paper"]["rtx"],
                        "loses" if ours > r["paper"]["rtx"] else "wins"))
+    split = ["%s/%s" % (r["texture"], r["mode"]) for r in d["rows"]
+             if abs(r["increasePercent"] - r["kernelIncreasePercent"]) > 10]
+    if split:
+        out += ["", "Frame and kernel-time increases differ by more than 10 points for %s: the "
+                "frame is wall time and includes host work and waits for the shared cores, the "
+                "kernel time is OpenCL device time; read such rows as noise-dominated." %
+                ", ".join(split)]
     tex_max = max(r["textureKernelPercent"] for r in d["rows"])
     out += ["", "Where the time goes: the texture kernels themselves cost at most %s of the "
             "baseline's kernel time in any configuration. On this CPU the AO rays are traced by "
-            "the same two cores as everything else, and the texrender measured traces AO rays "
-            "for every hit of the scene, not only for the rusty model's, so the rust overhead "
-            "is the AO column; the scratches overhead is mostly other kernels (see above). The "
+            "the same two cores as everything else, so the rust overhead is mostly the AO "
+            "column; the scratches overhead, where there is one, is in the other kernels. The "
             "paper's figures are GPU figures. %s" % (pct(tex_max), load_note(d)), ""]
     return out
 
@@ -137,7 +143,9 @@ def edits_section(d):
              "kernel, and rejects the graph (`unknown function`). Its row is texcc, plus the "
              "kernel build measured as the wall time of a texrender process with the texture "
              "kernel uncached minus that of one with it cached (scene load excluded), plus the "
-             "first frame.", "",
+             "first frame. PoCL's own kernel cache is off for this figure "
+             "(`POCL_KERNEL_CACHE=0`), so every build is a real one; a frame after a build "
+             "includes PoCL's compilation of the kernel at its first launch.", "",
              "| mode | edit | kernel builds | texcc | build + upload | frame | edit to frame |",
              "|---|---|---|---|---|---|---|"]
     for r in d["rows"]:
@@ -235,7 +243,7 @@ def stability_section(d):
              "binary tree of N nodes; *depth*, a chain of D nodes; on a one-quad 64x64 scene "
              "(`bench/inputs/sweep/scene.json`). Sizes tried: nodes %s, depth %s; time cap %d s "
              "per point. Kernel build: wall time of a texrender with the texture kernel uncached "
-             "minus one with it cached." % (d["sizes"]["nodes"], d["sizes"]["depth"],
+             "minus one with it cached, PoCL's own kernel cache off (`POCL_KERNEL_CACHE=0`)." % (d["sizes"]["nodes"], d["sizes"]["depth"],
                                            d["capSeconds"]), "",
              "![stability](%s)" % chart, "",
              "| family | size | mode | texcc | kernel build | texture kernel | memory | stack "

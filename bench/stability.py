@@ -5,7 +5,7 @@ leaves read ObjectPos; "depth", a chain of D multiply-adds. Per point and mode: 
 kernel build time (the wall time of a first texrender process whose texture kernel is not
 cached minus that of a second one that finds it in the program cache), texture-kernel device time, device memory and layout.json's
 stack slots. A mode stops at its first failure (the error is kept) or when one point exceeds
-the time cap. The full run goes past the issue's 4096 nodes and depth 1024 (to 262143 nodes and
+the time cap. PoCL's own kernel cache is off (POCL_KERNEL_CACHE=0). The full run goes past the issue's 4096 nodes and depth 1024 (to 262143 nodes and
 depth 65536) so that every mode meets its limit."""
 import json
 import os
@@ -99,6 +99,11 @@ def warm_fixed_kernels(tools):
 
 
 def measure(tools, quick):
+    with common.no_pocl_cache():
+        return sweep(tools, quick)
+
+
+def sweep(tools, quick):
     cap = 120 if quick else 600
     warm_fixed_kernels(tools)
     points, failures = [], []

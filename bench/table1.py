@@ -38,7 +38,7 @@ def one_render(tools, scene, textures, name, opts):
 
 def measure(tools, quick):
     size = "256x256" if quick else "512x512"
-    reps = 3 if quick else 5
+    reps = 5 if quick else 9
     opts = ["--size", size, "--spp", "1"]
     folders = compile_all(tools)
     configs = [("diffuse", None)] + [(tex, mode) for tex in TEXTURES for mode in common.MODES]
