@@ -7,6 +7,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <unordered_map>
 
 namespace texcc::graph {
 
@@ -357,6 +358,7 @@ private:
     if (!expectKind(V, Value::Kind::Array, "/nodes", "'nodes'", "an array of node objects"))
       return false;
     bool Ok = true;
+    std::unordered_map<std::string, size_t> IndexOf;
     for (size_t I = 0; I < V.Elements.size(); ++I) {
       Node N;
       std::string P = "/nodes/" + std::to_string(I);
@@ -364,9 +366,11 @@ private:
         Ok = false;
         continue;
       }
-      if (const Node *Prev = G.findNode(N.Id)) {
+      auto [It, Inserted] = IndexOf.emplace(N.Id, G.Nodes.size());
+      if (!Inserted) {
+        const Node &Prev = G.Nodes[It->second];
         error(N.IdLoc, P + "/id", "duplicate node id '" + N.Id + "'");
-        Diags.note(Prev->IdLoc, "previous definition of '" + N.Id + "' is here");
+        Diags.note(Prev.IdLoc, "previous definition of '" + N.Id + "' is here");
         Ok = false;
         continue;
       }

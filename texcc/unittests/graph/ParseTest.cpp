@@ -160,6 +160,23 @@ TEST(Parse, BsdfErrors) {
             "number [/materials/m/b]\n");
 }
 
+TEST(Parse, EveryTruncationIsAnErrorWithAPosition) {
+  const std::string Full = R"({"texcc": 1, "images": {"i": "a.png"}, "nodes": [
+  {"id": "n", "fn": "fbm3", "args": {"p": {"attr": "ObjectPos"}, "scale": -4.5e-1, "octaves": 6}},
+  {"id": "r", "fn": "ramp", "args": {"t": {"node": "n"}, "stops": [[0, 1, 2, 3]], "count": 1}}],
+  "materials": {"m": {"bsdf": "blend", "mask": {"node": "n"},
+    "a": {"bsdf": "diffuse", "color": [0.7, 0.7, 0.7]},
+    "b": {"bsdf": "glossy", "color": {"node": "r"}, "roughness": 0.2}}}})";
+  DiagnosticSink Ok;
+  ASSERT_TRUE(parse(Full, Ok)) << text(Ok);
+  for (size_t Len = 0; Len < Full.size(); ++Len) {
+    DiagnosticSink D;
+    EXPECT_FALSE(parse(Full.substr(0, Len), D).has_value()) << Len;
+    ASSERT_FALSE(D.diagnostics().empty()) << Len;
+    EXPECT_GT(D.diagnostics().front().Loc.Line, 0u) << Len;
+  }
+}
+
 TEST(Parse, ArgValueText) {
   DiagnosticSink D;
   auto V = parseArgValue("e", "[[0,0.3,0.1,0.05,1],[1,0.6,0.3,0.1,1]]", D);
