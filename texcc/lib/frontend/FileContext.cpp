@@ -33,6 +33,15 @@ SourceLocation FileContext::spelled(SourceLocation Loc) const {
   return SM.getSpellingLoc(Loc);
 }
 
+void FileContext::renameAt(SourceLocation Loc, StringRef Name, const std::string &NewName) {
+  SourceLocation Spelled = spelled(Loc);
+  if (!SM.getFileEntryForID(SM.getFileID(Spelled))) {
+    report(Loc, Diag::PastedName) << Name;
+    return;
+  }
+  Edits.replaceToken(Spelled, NewName);
+}
+
 SourceLocation FileContext::lparenAfter(SourceLocation Loc) const {
   llvm::Optional<Token> Next = Lexer::findNextToken(Loc, SM, Ctx.getLangOpts());
   if (!Next || Next->isNot(tok::l_paren))
@@ -82,6 +91,14 @@ DiagnosticBuilder FileContext::report(SourceLocation Loc, Diag Kind) {
     case Diag::DuplicateTexture:
       Id = DE.getCustomDiagID(E, "texture '%0' is also defined in '%1'; a texture name must "
                                  "be defined by one source only");
+      break;
+    case Diag::PastedName:
+      Id = DE.getCustomDiagID(E, "cannot rename '%0': its name is made by token pasting; spell "
+                                 "the name in the source");
+      break;
+    case Diag::KernelFunction:
+      Id = DE.getCustomDiagID(E, "texture files may not define kernels ('%0'); texcc generates "
+                                 "the kernel");
       break;
     case Diag::InternalRewrite:
       Id = DE.getCustomDiagID(E, "texcc cannot rewrite this file: %0");

@@ -33,6 +33,8 @@ enum class Diag {
   MacroSplitCall,     // %0 function
   DuplicateTexture,   // %0 texture, %1 other file
   InternalRewrite,    // %0 why the edits could not be applied
+  PastedName,         // %0 name
+  KernelFunction,     // %0 name
 };
 
 struct CallSite {
@@ -57,6 +59,9 @@ public:
   /// The file location where the token at Loc is spelled (inside a macro body or argument
   /// when Loc comes from a macro expansion).
   clang::SourceLocation spelled(clang::SourceLocation Loc) const;
+  /// Renames the token at Loc (a use or declaration of Name) to NewName where it is spelled;
+  /// reports a name that is not spelled in a file (made by ## token pasting).
+  void renameAt(clang::SourceLocation Loc, llvm::StringRef Name, const std::string &NewName);
   /// The '(' after the token at Loc (a spelled file location), or an invalid location.
   clang::SourceLocation lparenAfter(clang::SourceLocation Loc) const;
 

@@ -23,24 +23,24 @@ bool Renaming::isUserGlobal(const VarDecl *VD) const {
 void Renaming::run(const MatchFinder::MatchResult &Result) {
   if (const auto *FD = Result.Nodes.getNodeAs<FunctionDecl>("decl")) {
     if (FC.isUserFunction(FD))
-      FC.Edits.replaceToken(FC.spelled(FD->getLocation()), FC.renamed(FD));
+      FC.renameAt(FD->getLocation(), FD->getName(), FC.renamed(FD));
     return;
   }
   if (const auto *VD = Result.Nodes.getNodeAs<VarDecl>("var")) {
     if (isUserGlobal(VD))
-      FC.Edits.replaceToken(FC.spelled(VD->getLocation()), FC.Prefix + VD->getName().str());
+      FC.renameAt(VD->getLocation(), VD->getName(), FC.Prefix + VD->getName().str());
     return;
   }
   if (const auto *Ref = Result.Nodes.getNodeAs<DeclRefExpr>("varref")) {
     const auto *VD = dyn_cast<VarDecl>(Ref->getDecl());
     if (isUserGlobal(VD))
-      FC.Edits.replaceToken(FC.spelled(Ref->getLocation()), FC.Prefix + VD->getName().str());
+      FC.renameAt(Ref->getLocation(), VD->getName(), FC.Prefix + VD->getName().str());
     return;
   }
   const auto *Ref = Result.Nodes.getNodeAs<DeclRefExpr>("ref");
   const auto *FD = dyn_cast<FunctionDecl>(Ref->getDecl());
   if (FC.isUserFunction(FD))
-    FC.Edits.replaceToken(FC.spelled(Ref->getLocation()), FC.renamed(FD));
+    FC.renameAt(Ref->getLocation(), FD->getName(), FC.renamed(FD));
 }
 
 } // namespace texcc::frontend

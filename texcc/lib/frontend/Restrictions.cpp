@@ -11,6 +11,7 @@ namespace texcc::frontend {
 void Restrictions::registerMatchers(MatchFinder &Finder) {
   Finder.addMatcher(binaryOperator(isAssignmentOperator()).bind("write"), this);
   Finder.addMatcher(unaryOperator(hasAnyOperatorName("++", "--")).bind("write"), this);
+  Finder.addMatcher(functionDecl(hasAttr(attr::OpenCLKernel)).bind("kernel"), this);
 }
 
 /// The pointer a __global lvalue is reached through, for the message: "__global pointer 'p'".
@@ -33,6 +34,11 @@ static std::string describeTarget(const Expr *E) {
 }
 
 void Restrictions::run(const MatchFinder::MatchResult &Result) {
+  if (const auto *Kernel = Result.Nodes.getNodeAs<FunctionDecl>("kernel")) {
+    if (FC.isUserFunction(Kernel))
+      FC.report(Kernel->getLocation(), Diag::KernelFunction) << Kernel->getName();
+    return;
+  }
   const auto *Write = Result.Nodes.getNodeAs<Expr>("write");
   const Expr *Target = nullptr;
   if (const auto *B = dyn_cast<BinaryOperator>(Write))
