@@ -52,7 +52,11 @@ void Restrictions::run(const MatchFinder::MatchResult &Result) {
 }
 
 void Restrictions::finish() {
-  for (const auto &[Renamed, Loc] : FC.Called) {
+  // Not a structured binding: Clang 15 cannot capture one in a lambda (C++20), and the fuzz
+  // build compiles this file with clang-15.
+  for (const auto &Call : FC.Called) {
+    const std::string &Renamed = Call.first;
+    clang::SourceLocation Loc = Call.second;
     bool Defined = std::any_of(FC.Definitions.begin(), FC.Definitions.end(),
                                [&](const auto &D) { return FC.renamed(D.second) == Renamed; });
     if (!Defined)
