@@ -4,8 +4,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -42,12 +44,21 @@ public:
   float number(const json &J, const std::string &Path) const {
     if (!J.is_number())
       fail(Path, "expected a number, got " + std::string(J.type_name()));
-    return J.get<float>();
+    // Converting a double beyond float's range to float is undefined behaviour.
+    double D = J.get<double>();
+    if (!(std::fabs(D) <= std::numeric_limits<float>::max()))
+      fail(Path, "number " + J.dump() + " is out of range for a float");
+    return static_cast<float>(D);
   }
 
   int integer(const json &J, const std::string &Path) const {
     if (!J.is_number_integer())
       fail(Path, "expected an integer, got " + J.dump());
+    // get<int>() would wrap a larger one silently (4294967297 spp would be 1).
+    if (J.is_number_unsigned() ? J.get<uint64_t>() > uint64_t(std::numeric_limits<int>::max())
+                               : J.get<int64_t>() < std::numeric_limits<int>::min() ||
+                                     J.get<int64_t>() > std::numeric_limits<int>::max())
+      fail(Path, "integer " + J.dump() + " is out of range");
     return J.get<int>();
   }
 
@@ -178,6 +189,13 @@ Light parseLight(const Reader &R, const json &J, const std::string &Path) {
   return L;
 }
 
+/// nlohmann's message without its "[json.exception.parse_error.101] " tag.
+std::string jsonReason(const json::exception &E) {
+  std::string What = E.what();
+  size_t Tag = What.find("] ");
+  return Tag == std::string::npos ? What : What.substr(Tag + 2);
+}
+
 } // namespace
 
 Scene loadScene(const std::string &Path) {
@@ -196,7 +214,10 @@ Scene loadScene(const std::string &Path) {
       if (Text[I] == '\n')
         ++Line, Col = 0;
     throw Error(Path + ":" + std::to_string(Line) + ":" + std::to_string(Col) +
-                ": invalid JSON: " + std::string(E.what()).substr(std::string(E.what()).find(']') + 2));
+                ": invalid JSON: " + jsonReason(E));
+  } catch (const json::exception &E) {
+    // A number too large for a double ("1e400") is out_of_range, not a parse_error.
+    throw Error(Path + ": invalid JSON: " + jsonReason(E));
   }
   Reader R(Path);
   R.checkKeys(J, "", {"texrender", "textures", "camera", "film", "render", "lights", "meshes"});

@@ -271,6 +271,9 @@ private:
       if (Low >= 0xDC00 && Low < 0xE000)
         CP = 0x10000 + ((CP - 0xD800) << 10) + (Low - 0xDC00);
     }
+    // A surrogate left over has no UTF-8 form.
+    if (CP >= 0xD800 && CP < 0xE000)
+      return fail(L, "invalid \\u escape: unpaired UTF-16 surrogate");
     appendUtf8(Out, CP);
     return true;
   }
@@ -294,9 +297,42 @@ private:
       if (static_cast<unsigned char>(C) < 0x20)
         return fail(here(), C == '\n' ? "unterminated string (a newline inside a string)"
                                       : "control character inside a string");
+      if (static_cast<unsigned char>(C) >= 0x80) {
+        if (!takeUtf8Sequence(Out))
+          return false;
+        continue;
+      }
       Out += C;
       advance();
     }
+  }
+
+  /// Copies one multi-byte UTF-8 sequence into Out. JSON text is UTF-8 (RFC 8259), and what a
+  /// string holds ends up in layout.json, whose writer rejects invalid UTF-8: reject it here,
+  /// where the diagnostic can point at the byte.
+  bool takeUtf8Sequence(std::string &Out) {
+    auto Byte = [&](size_t I) -> unsigned {
+      return Pos + I < Text.size() ? static_cast<unsigned char>(Text[Pos + I]) : 0;
+    };
+    unsigned Lead = Byte(0);
+    unsigned Length = Lead >= 0xC2 && Lead <= 0xDF ? 2
+                      : Lead >= 0xE0 && Lead <= 0xEF ? 3
+                      : Lead >= 0xF0 && Lead <= 0xF4 ? 4
+                                                     : 0;
+    // The second byte's range excludes overlong forms, UTF-16 surrogates and code points past
+    // U+10FFFF (RFC 3629, section 4).
+    unsigned Low = Lead == 0xE0 ? 0xA0 : Lead == 0xF0 ? 0x90 : 0x80;
+    unsigned High = Lead == 0xED ? 0x9F : Lead == 0xF4 ? 0x8F : 0xBF;
+    bool Valid = Length != 0 && Byte(1) >= Low && Byte(1) <= High;
+    for (unsigned I = 2; Valid && I < Length; ++I)
+      Valid = Byte(I) >= 0x80 && Byte(I) <= 0xBF;
+    if (!Valid)
+      return fail(here(), "invalid UTF-8 in string (" + describeHere() + ")");
+    for (unsigned I = 0; I < Length; ++I) {
+      Out += Text[Pos];
+      advance();
+    }
+    return true;
   }
 
   bool parseArray(Value &V, unsigned Depth) {
