@@ -31,7 +31,7 @@ llvm::Expected<tooling::Replacements> EditSet::replacementsFor(FileID File) cons
       continue;
     if (llvm::Error E =
             Result.add(tooling::Replacement(Path, std::get<1>(Key), std::get<2>(Key), Text)))
-      return std::move(E);
+      return E;
   }
   return Result;
 }

@@ -170,7 +170,7 @@ TexccConsumer::replacementsWithIncludes(FileContext &FC, FileID File) {
     }
     if (llvm::Error E = Repl->add(tooling::Replacement(
             Path, Site.HashOffset, Site.EndOffset - Site.HashOffset, Splice)))
-      return std::move(E);
+      return E;
   }
   return Repl;
 }
@@ -358,6 +358,9 @@ llvm::Expected<FrontendResult> runFrontend(const std::vector<std::string> &Sourc
     if (!Opts.VirtualFiles.count(S) && !llvm::sys::fs::exists(S))
       return llvm::createStringError(std::errc::no_such_file_or_directory,
                                      "cannot open '%s': no such file", S.c_str());
+    else if (!Opts.VirtualFiles.count(S) && llvm::sys::fs::is_directory(S))
+      return llvm::createStringError(std::errc::is_a_directory,
+                                     "cannot open '%s': it is a folder", S.c_str());
   std::vector<std::string> Prefixes = uniquePrefixes(Sources);
   FrontendResult Result;
   std::map<std::string, std::string> TextureFiles;

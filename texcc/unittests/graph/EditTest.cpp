@@ -206,10 +206,12 @@ TEST(GraphEditor, FunctionIdsStayPinned) {
   std::vector<std::string> Before = E.compiled().FunctionsById;
   DiagnosticSink D;
   ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D);
-  for (size_t I = 0; I < Before.size(); ++I)
+  for (size_t I = 0; I < Before.size(); ++I) {
     if (!Before[I].empty() && I < E.compiled().FunctionsById.size() &&
-        !E.compiled().FunctionsById[I].empty())
+        !E.compiled().FunctionsById[I].empty()) {
       EXPECT_EQ(E.compiled().FunctionsById[I], Before[I]);
+    }
+  }
 }
 
 } // namespace

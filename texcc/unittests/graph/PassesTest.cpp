@@ -297,10 +297,12 @@ TEST(StackSlots, RandomDagsAllocateValidly) {
       std::map<unsigned, unsigned> SlotOf;
       for (const Instruction &In : M.Program) {
         const CompiledNode &N = CG.Nodes[In.Node];
-        for (size_t A = 0; A < N.Args.size(); ++A)
-          if (N.Args[A].Src == CompiledArg::Source::Node)
+        for (size_t A = 0; A < N.Args.size(); ++A) {
+          if (N.Args[A].Src == CompiledArg::Source::Node) {
             EXPECT_EQ(word(CG.ArgsBin, In.RecordOffset + 4 * A) & 0xFFFF,
                       SlotOf.at(N.Args[A].NodeIndex));
+          }
+        }
         SlotOf[In.Node] = In.ResultSlot;
       }
     }
@@ -321,9 +323,11 @@ TEST(WavefrontOrder, TopologicalOverAllMaterials) {
   for (size_t I = 0; I < CG.WavefrontOrder.size(); ++I)
     Position[CG.WavefrontOrder[I]] = static_cast<unsigned>(I);
   for (size_t N = 0; N < CG.Nodes.size(); ++N)
-    for (const CompiledArg &A : CG.Nodes[N].Args)
-      if (A.Src == CompiledArg::Source::Node)
+    for (const CompiledArg &A : CG.Nodes[N].Args) {
+      if (A.Src == CompiledArg::Source::Node) {
         EXPECT_LT(Position[A.NodeIndex], Position[N]);
+      }
+    }
   EXPECT_EQ(Log.str(), "wavefront: launch 0: 'b'\nwavefront: launch 1: 't'\n"
                        "wavefront: launch 2: 'a'\nwavefront: launch 3: 's'\n");
 }
