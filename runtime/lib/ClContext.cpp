@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -118,10 +119,21 @@ static std::string buildLog(const cl::Program &P, const cl::Device &D) {
   }
 }
 
+std::string ClContext::cacheKey(const std::string &Source, const std::string &Options,
+                                const std::string &KeyExtra) const {
+  return hashHex(Source + '\0' + Options + '\0' + DeviceKey + '\0' + KeyExtra);
+}
+
+bool ClContext::isCached(const std::string &Source, const std::string &Options,
+                         const std::string &KeyExtra) const {
+  std::string Path = cachePath(cacheKey(Source, Options, KeyExtra));
+  return !Path.empty() && fs::exists(Path);
+}
+
 cl::Program ClContext::buildProgram(const std::string &Name, const std::string &Source,
-                                    const std::string &Options, const std::string &KeyExtra) {
-  std::string Key = hashHex(Source + '\0' + Options + '\0' + DeviceKey + '\0' + KeyExtra);
-  std::string Path = cachePath(Key);
+                                    const std::string &Options, const std::string &KeyExtra,
+                                    bool Background) {
+  std::string Path = cachePath(cacheKey(Source, Options, KeyExtra));
   if (!Path.empty() && fs::exists(Path)) {
     std::ifstream In(Path, std::ios::binary);
     std::vector<unsigned char> Bin((std::istreambuf_iterator<char>(In)),
@@ -136,33 +148,44 @@ cl::Program ClContext::buildProgram(const std::string &Name, const std::string &
       // A stale or foreign binary: fall through to a build from source.
     }
   }
+  cl::Program P = buildFromSource(Name, Source, Options, Background);
+  if (!Path.empty())
+    storeBinary(P, Path);
+  return P;
+}
+
+cl::Program ClContext::buildFromSource(const std::string &Name, const std::string &Source,
+                                       const std::string &Options, bool Background) {
   cl::Program P;
   try {
     P = cl::Program(Ctx, Source);
-    ++Builds;
+    ++(Background ? BackgroundBuilds : Builds);
     P.build({Device}, Options.c_str());
   } catch (const cl::Error &E) {
     std::string Log = buildLog(P, Device);
     throw Error("kernel build failed: " + Name + " on '" + DeviceName + "' with options '" +
                 Options + "' (" + clErrorName(E.err()) + ")\n" + Log);
   }
-  if (!Path.empty()) {
-    try {
-      auto Bins = P.getInfo<CL_PROGRAM_BINARIES>();
-      if (!Bins.empty() && !Bins[0].empty()) {
-        std::error_code EC;
-        fs::create_directories(fs::path(Path).parent_path(), EC);
-        std::string Tmp = Path + ".tmp" + std::to_string(::getpid());
-        std::ofstream Out(Tmp, std::ios::binary);
-        Out.write(reinterpret_cast<const char *>(Bins[0].data()), Bins[0].size());
-        Out.close();
-        fs::rename(Tmp, Path, EC);
-      }
-    } catch (const cl::Error &) {
-      // The cache is an optimisation: a device without binaries still renders.
-    }
-  }
   return P;
+}
+
+void ClContext::storeBinary(cl::Program &P, const std::string &Path) {
+  try {
+    auto Bins = P.getInfo<CL_PROGRAM_BINARIES>();
+    if (Bins.empty() || Bins[0].empty())
+      return;
+    std::error_code EC;
+    fs::create_directories(fs::path(Path).parent_path(), EC);
+    // Unique per process and thread: a background build may store while the main thread does.
+    std::string Tmp = Path + ".tmp" + std::to_string(::getpid()) + "." +
+                      std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
+    std::ofstream Out(Tmp, std::ios::binary);
+    Out.write(reinterpret_cast<const char *>(Bins[0].data()), Bins[0].size());
+    Out.close();
+    fs::rename(Tmp, Path, EC);
+  } catch (const cl::Error &) {
+    // The cache is an optimisation: a device without binaries still renders.
+  }
 }
 
 cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags) {

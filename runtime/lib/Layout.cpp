@@ -132,6 +132,12 @@ Layout loadLayout(const std::string &OutDir) {
     if (K.contains("launches"))
       for (auto &La : K["launches"])
         L.WavefrontLaunches.push_back(La.at("kernel").get<std::string>());
+    if (K.contains("interpFallback"))
+      L.InterpFallback = (fs::path(OutDir) / K["interpFallback"].get<std::string>()).string();
+    if (K.contains("shapes"))
+      L.NumShapes = unsigned(K["shapes"].size());
+    if (L.Mode == "shape" && L.InterpFallback.empty())
+      R.fail("/kernel/interpFallback", "a shape-mode layout names its interp fallback kernel");
     L.StackSlots = J.value("stackSlots", 0u);
     L.StackLimit = J.value("stackLimit", 32u);
     L.Spill = J.value("spill", false);

@@ -4,13 +4,18 @@
 #include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+extern char **environ;
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -47,27 +52,49 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-/// Runs Argv, returning its exit status; its stdout and stderr go to LogPath.
+/// Runs Argv, returning its exit status; its stdout and stderr go to LogPath. posix_spawn,
+/// not fork: the renderer's background thread runs texcc, and a forked child of a threaded
+/// process may only call async-signal-safe functions.
 int runProcess(const std::vector<std::string> &Argv, const std::string &LogPath) {
-  pid_t Pid = fork();
-  if (Pid < 0)
+  std::vector<char *> Args;
+  for (auto &A : Argv)
+    Args.push_back(const_cast<char *>(A.c_str()));
+  Args.push_back(nullptr);
+  posix_spawn_file_actions_t Actions;
+  posix_spawn_file_actions_init(&Actions);
+  posix_spawn_file_actions_addopen(&Actions, 1, LogPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&Actions, 1, 2);
+  pid_t Pid = 0;
+  int Rc = posix_spawn(&Pid, Args[0], &Actions, nullptr, Args.data(), environ);
+  posix_spawn_file_actions_destroy(&Actions);
+  if (Rc != 0)
     return -1;
-  if (Pid == 0) {
-    FILE *Log = std::fopen(LogPath.c_str(), "w");
-    if (Log) {
-      dup2(fileno(Log), 1);
-      dup2(fileno(Log), 2);
-    }
-    std::vector<char *> Args;
-    for (auto &A : Argv)
-      Args.push_back(const_cast<char *>(A.c_str()));
-    Args.push_back(nullptr);
-    execv(Args[0], Args.data());
-    _exit(127);
-  }
   int Status = 0;
   waitpid(Pid, &Status, 0);
   return WIFEXITED(Status) ? WEXITSTATUS(Status) : -1;
+}
+
+/// Removes the nodes whose function the kernel lacks (dead nodes of functions that only the
+/// sources have), and the nodes that read them, from G; returns their ids.
+std::set<std::string> removeNodesWithoutSignature(texcc::graph::Graph &G,
+                                                  const texcc::graph::SignatureMap &Sigs) {
+  std::set<std::string> Gone;
+  for (bool Changed = true; Changed;) {
+    Changed = false;
+    for (auto It = G.Nodes.begin(); It != G.Nodes.end();) {
+      bool Reads = std::any_of(It->Args.begin(), It->Args.end(), [&](const auto &A) {
+        return A.second.K == texcc::graph::ArgValue::Kind::NodeRef && Gone.count(A.second.Ref);
+      });
+      if (Sigs.count(It->Fn) && !Reads) {
+        ++It;
+        continue;
+      }
+      Gone.insert(It->Id);
+      It = G.Nodes.erase(It);
+      Changed = true;
+    }
+  }
+  return Gone;
 }
 
 } // namespace
@@ -84,6 +111,10 @@ Edit parseEdit(const std::string &LineIn) {
   std::string Line = trim(LineIn);
   Edit E;
   E.Text = Line;
+  if (Line == "wait") {
+    E.K = Edit::Kind::Wait;
+    return E;
+  }
   if (Line.rfind("set ", 0) == 0) {
     Line = trim(Line.substr(4));
   } else if (Line.rfind("rewire ", 0) == 0) {
@@ -129,6 +160,9 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   std::string Why;
   if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why))
     throw Error(Lay.Dir + "/layout.json: " + Why);
+  // The editor knows the kernel's functions only; a rewiring onto a node of another function
+  // regenerates the kernel (apply()).
+  KernelLacks = removeNodesWithoutSignature(*G, Sigs);
   Opts.StackLimit = Lay.StackLimit;
   Editor = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
   if (!Editor->init(Diags))
@@ -137,28 +171,37 @@ void LiveEditor::initEditor(const std::string &GraphText) {
 
 LiveEditor::~LiveEditor() = default;
 
-void LiveEditor::applyToJson(const Edit &E) {
+bool LiveEditor::applyToJson(const Edit &E) {
   if (!GraphDoc.contains("nodes") || !GraphDoc["nodes"].is_array())
     throw Error("edit '" + E.Text + "': " + Lay.GraphPath + " has no nodes");
   for (json &N : GraphDoc["nodes"]) {
     if (N.value("id", "") != E.Node)
       continue;
+    json &Args = N["args"];
+    bool WasWired = Args.contains(E.Arg) && Args[E.Arg].is_object();
     if (E.K == Edit::Kind::Rewire) {
-      N["args"][E.Arg] = json{{"node", E.Value}};
-      return;
+      Args[E.Arg] = json{{"node", E.Value}};
+      return true;
     }
+    json Value;
     try {
-      N["args"][E.Arg] = json::parse(E.Value);
+      Value = json::parse(E.Value);
     } catch (const json::exception &) {
       throw Error("edit '" + E.Text + "': value '" + E.Value + "' is not a number or array");
     }
-    return;
+    // A baked constant ({"value": v, "bake": true}) is a literal of the shape code: it stays
+    // baked, and changing it changes the shape.
+    bool Baked = WasWired && Args[E.Arg].value("bake", false);
+    if (Baked)
+      Args[E.Arg]["value"] = Value;
+    else
+      Args[E.Arg] = Value;
+    return WasWired;
   }
   throw Error("edit '" + E.Text + "': unknown node '" + E.Node + "'");
 }
 
-void LiveEditor::regenerate(Renderer &R) {
-  // The edited graph, with its sources and images made absolute, in a fresh folder.
+json LiveEditor::absoluteGraph() const {
   fs::path GraphDir = fs::path(Lay.GraphPath).parent_path();
   json Doc = GraphDoc;
   if (Doc.contains("sources"))
@@ -169,54 +212,112 @@ void LiveEditor::regenerate(Renderer &R) {
       (void)K;
       V = (GraphDir / V.get<std::string>()).lexically_normal().string();
     }
+  return Doc;
+}
+
+LiveEditor::Regeneration LiveEditor::writeEditedGraph() {
   fs::path Work = fs::temp_directory_path() /
                   ("texrender-edit-" + std::to_string(getpid()) + "-" + std::to_string(++Generation));
   fs::create_directories(Work);
-  fs::path Graph = Work / fs::path(Lay.GraphPath).filename();
-  std::ofstream(Graph) << Doc.dump(2);
-  fs::path Out = Work / "out";
+  Regeneration R{(Work / fs::path(Lay.GraphPath).filename()).string(), (Work / "out").string(),
+                 (Work / "texcc.log").string()};
+  std::ofstream(R.Graph) << absoluteGraph().dump(2);
   if (!fs::exists(TexccPath))
     throw Error("this edit needs the texture kernel regenerated, but texcc was not found at " +
                 TexccPath + " (set TEXCC, or re-run texcc and restart texrender)");
-  std::string Log = (Work / "texcc.log").string();
-  int Rc = runProcess({TexccPath, "--graph", Graph.string(), "--mode=" + Lay.Mode, "-o", Out.string()}, Log);
+  return R;
+}
+
+Layout runTexcc(const std::string &Texcc, const std::string &Mode, const std::string &Graph,
+                const std::string &Out, const std::string &Log) {
+  int Rc = runProcess({Texcc, "--graph", Graph, "--mode=" + Mode, "-o", Out}, Log);
   if (Rc != 0) {
     std::string Msg = trim(readFile(Log));
     throw Error("regenerating the texture kernel failed (texcc exit " + std::to_string(Rc) + "): " +
                 Msg.substr(0, Msg.find('\n')));
   }
-  Layout New = loadLayout(Out.string());
-  R.setLayout(New);
+  return loadLayout(Out);
+}
+
+void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   // Later edits address the regenerated kernel; the graph keeps its original folder for
-  // resolving relative paths.
+  // resolving relative paths. The editor compiles the graph as it is now (edits made while a
+  // background build ran included).
   std::string Original = Lay.GraphPath;
+  json Doc = absoluteGraph();
   Lay = New;
-  Lay.GraphPath = Graph.string();
+  Lay.GraphPath = Files.Graph;
   initEditor(Doc.dump());
   Lay.GraphPath = Original;
 }
 
+void LiveEditor::regenerate(Renderer &R) {
+  Regeneration Files = writeEditedGraph();
+  Layout New = runTexcc(TexccPath, Lay.Mode, Files.Graph, Files.Out, Files.Log);
+  R.setLayout(New);
+  adopt(New, Files);
+}
+
+void LiveEditor::regenerateInBackground(Renderer &R) {
+  Regeneration Files = writeEditedGraph();
+  std::string Texcc = TexccPath, Mode = Lay.Mode;
+  const auto &CG = Editor->compiled();
+  R.switchShapes(
+      CG.ArgsBin, CG.Attributes,
+      [Texcc, Mode, Files] { return runTexcc(Texcc, Mode, Files.Graph, Files.Out, Files.Log); },
+      [this, Files](Layout &New) {
+        adopt(New, Files);
+        New.ArgsBin = Editor->compiled().ArgsBin;
+        New.Attributes = Editor->compiled().Attributes;
+      });
+}
+
+LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
+  if (Lay.Mode == "inline")
+    return Plan::Regenerate;
+  // A node of a function the kernel lacks is dead: editing it changes nothing rendered, and
+  // wiring it in needs texcc, which alone knows its signature.
+  if (KernelLacks.count(E.Node))
+    return Plan::Upload;
+  if (E.K == Edit::Kind::Rewire && KernelLacks.count(E.Value))
+    return Plan::Regenerate;
+  texcc::graph::DiagnosticSink Diags;
+  bool Ok = E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
+                                   : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
+  if (!Ok)
+    throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
+  if (Editor->needsRebuild())
+    return Plan::Regenerate;
+  // The wiring is code in wavefront mode (the launches) and in a shape kernel (its shapes).
+  if (!Structural || Lay.Mode == "interp")
+    return Plan::Upload;
+  if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Interp)
+    return Plan::Upload;
+  if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Auto)
+    return Plan::SwitchShapes;
+  return Plan::Regenerate;
+}
+
 EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
-  double T0 = now();
   EditResult Res;
-  applyToJson(E);
-  bool Regenerate = Lay.Mode == "inline";
-  if (!Regenerate) {
-    texcc::graph::DiagnosticSink Diags;
-    bool Ok = E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
-                                     : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
-    if (!Ok)
-      throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
-    // A rewiring changes the launch plan (wavefront) or the graph shape (shape mode).
-    Regenerate = Editor->needsRebuild() || (E.K == Edit::Kind::Rewire && Lay.Mode != "interp");
-    if (!Regenerate) {
-      const auto &CG = Editor->compiled();
-      R.applyArguments(CG.ArgsBin, CG.Attributes);
-    }
+  if (E.K == Edit::Kind::Wait) {
+    Res.IdleSeconds = R.waitForBackgroundBuild();
+    return Res;
   }
-  if (Regenerate) {
+  double T0 = now();
+  bool Structural = applyToJson(E);
+  switch (plan(E, Structural, R)) {
+  case Plan::Upload:
+    R.applyArguments(Editor->compiled().ArgsBin, Editor->compiled().Attributes);
+    break;
+  case Plan::Regenerate:
     regenerate(R);
     Res.Rebuilt = true;
+    break;
+  case Plan::SwitchShapes:
+    regenerateInBackground(R);
+    Res.Background = true;
+    break;
   }
   R.cl().finish();
   Res.Seconds = now() - T0;

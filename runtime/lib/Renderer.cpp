@@ -1,6 +1,7 @@
 #include "texrender/Renderer.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
+#include "texrender/TextureTiers.h"
 
 #include <algorithm>
 #include <chrono>
@@ -17,15 +18,6 @@ namespace texrender {
 
 namespace {
 
-std::string readText(const std::string &Path) {
-  std::ifstream In(Path);
-  if (!In)
-    throw Error(Path + ": cannot open kernel source");
-  std::stringstream SS;
-  SS << In.rdbuf();
-  return SS.str();
-}
-
 /// The text of every shared header: part of the program-cache key of every kernel.
 std::string headersDigest(const std::string &Dir) {
   std::vector<fs::path> Files;
@@ -35,7 +27,7 @@ std::string headersDigest(const std::string &Dir) {
   std::sort(Files.begin(), Files.end());
   std::string All;
   for (auto &F : Files)
-    All += readText(F.string());
+    All += readKernelSource(F.string());
   return All;
 }
 
@@ -89,7 +81,7 @@ std::string kernelDirectory() {
 }
 
 Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
-    : SceneDesc(S), Lay(L), Opts(O), Settings(S.Render) {
+    : SceneDesc(S), Lay(L), Opts(O), Settings(S.Render), Epoch(steadySeconds()) {
   KernelDir = Opts.KernelDir.empty() ? kernelDirectory() : Opts.KernelDir;
   Data = buildSceneData(S, L);
   Cl = std::make_unique<ClContext>(Opts.Device, Opts.CacheDir);
@@ -111,7 +103,7 @@ void Renderer::buildFixedKernels() {
   std::string Digest = headersDigest(KernelDir);
   for (const KernelFile &F : fixedKernels()) {
     std::string Path = (fs::path(KernelDir) / F.File).string();
-    cl::Program P = Cl->buildProgram(Path, readText(Path), programOptions(), Digest);
+    cl::Program P = Cl->buildProgram(Path, readKernelSource(Path), programOptions(), Digest);
     for (const char *Name : F.Kernels)
       K[Name] = cl::Kernel(P, Name);
   }
@@ -161,30 +153,6 @@ void Renderer::uploadLayoutData() {
   HasTextureWork = std::any_of(Data.Materials.begin(), Data.Materials.end(),
                                [](const RtMaterial &M) { return M.numOutputs > 0; });
   Capacity = 0; // the outputs and scratch buffers depend on the layout
-}
-
-void Renderer::buildTextureKernel() {
-  TextureKernels.clear();
-  TextureKernelNames.clear();
-  if (!HasTextureWork)
-    return;
-  std::string Source = readText(Lay.KernelSource);
-  cl::Program P = Cl->buildProgram(Lay.KernelSource, Source, programOptions());
-  if (Lay.Mode == "wavefront") {
-    for (const std::string &N : Lay.WavefrontLaunches)
-      TextureKernelNames.push_back(N);
-    TextureKernelNames.push_back("texcc_wf_outputs");
-  } else {
-    TextureKernelNames.push_back(Lay.Entry);
-  }
-  for (const std::string &N : TextureKernelNames) {
-    try {
-      TextureKernels.push_back(cl::Kernel(P, N.c_str()));
-    } catch (const cl::Error &E) {
-      throw Error(Lay.KernelSource + ": no kernel '" + N + "' in the texture program (" +
-                  clErrorName(E.err()) + ")");
-    }
-  }
 }
 
 void Renderer::applyArguments(const std::vector<uint8_t> &ArgsBin,
@@ -323,6 +291,9 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
 std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Variance) {
   double T0 = now();
   Stats = FrameStats();
+  adoptReadyBuild(); // a background shape build that finished since the last frame
+  Stats.Tier = ActiveTier;
+  ++FramesRendered;
   Cl->finish();
   Cl->resetTimings();
   const int W = Settings.Width, H = Settings.Height, Spp = Settings.Spp;

@@ -42,6 +42,21 @@ json frameJson(const FrameStats &F) {
   return J;
 }
 
+json buildEventsJson(const std::vector<BuildEvent> &Events) {
+  json A = json::array();
+  for (const BuildEvent &E : Events)
+    A.push_back({{"kernel", E.Kernel},
+                 {"reason", E.Reason},
+                 {"background", E.Background},
+                 {"startSeconds", E.StartSeconds},
+                 {"readySeconds", E.ReadySeconds < 0 ? json(nullptr) : json(E.ReadySeconds)},
+                 {"seconds", E.ReadySeconds < 0 ? json(nullptr) : json(E.ReadySeconds - E.StartSeconds)},
+                 {"firstFrame", E.FirstFrame < 0 ? json(nullptr) : json(E.FirstFrame)},
+                 {"superseded", E.Superseded},
+                 {"error", E.Error.empty() ? json(nullptr) : json(E.Error)}});
+  return A;
+}
+
 } // namespace
 
 json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Frames,
@@ -66,6 +81,9 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
   J["aoSamples"] = S.AoSamples;
   J["textureKernel"] = R.runsTextures();
   J["kernelBuilds"] = R.cl().kernelBuilds();
+  J["backgroundKernelBuilds"] = R.cl().backgroundBuilds();
+  J["tierPolicy"] = L.Mode == "shape" ? json(tierPolicyName(R.tierPolicy())) : json(nullptr);
+  J["textureBuilds"] = buildEventsJson(R.buildEvents());
   J["programCacheHits"] = R.cl().cacheHits();
   J["memoryBytes"] = R.cl().memoryTotal();
   J["memory"] = R.cl().memory();
@@ -81,7 +99,12 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
     json Fj = {{"index", I},
                {"edit", F.EditText.empty() ? json(nullptr) : json(F.EditText)},
                {"kernelBuilds", F.KernelBuilds},
+               {"backgroundBuilds", F.BackgroundBuilds},
+               {"buildWaitSeconds", F.BuildWaitSeconds},
+               {"tier", F.Frame.Tier.empty() ? json(nullptr) : json(F.Frame.Tier)},
                {"rebuilt", F.Rebuilt},
+               {"backgroundRebuild", F.BackgroundRebuild},
+               {"idleSeconds", F.IdleSeconds},
                {"editSeconds", F.EditSeconds},
                {"renderSeconds", F.Frame.Seconds},
                {"editToFrameSeconds", F.EditText.empty() ? json(nullptr)

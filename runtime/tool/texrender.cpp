@@ -33,8 +33,11 @@ const char *Usage =
     "  --seed N             random seed\n"
     "  --set NODE.ARG=VALUE live edit before rendering (repeatable)\n"
     "  --edit-script FILE   render, then per line apply an edit (set NODE.ARG=VALUE |\n"
-    "                       rewire NODE.ARG=SOURCE) and render again; frame k is also\n"
+    "                       rewire NODE.ARG=SOURCE | wait) and render again; frame k is also\n"
     "                       written as OUT.frameK.EXT\n"
+    "  --tier=auto|interp|shape  shape-mode textures: auto renders with the interp fallback\n"
+    "                       while the shape kernel builds in the background; interp: the\n"
+    "                       fallback only; shape: wait for the shape kernel's build\n"
     "  --device N           OpenCL device (default 0; --list-devices lists them)\n"
     "  --stats FILE         write stats.json\n"
     "  --variance FILE.exr  write the per-pixel variance of the image (for statistical tests)\n"
@@ -49,6 +52,7 @@ struct Options {
   std::vector<std::string> Sets;
   int Device = 0;
   bool Quiet = false, ListDevices = false;
+  TierPolicy Tier = TierPolicy::Auto;
 };
 
 int toInt(const std::string &Opt, const std::string &V) {
@@ -131,6 +135,8 @@ Options parseArgs(int Argc, char **Argv) {
       O.Sets.push_back(Next());
     } else if (A == "--edit-script") {
       O.EditScript = Next();
+    } else if (A == "--tier") {
+      O.Tier = parseTierPolicy(Next());
     } else if (A == "--device") {
       O.Device = toInt(A, Next());
     } else if (A == "--list-devices") {
@@ -198,6 +204,26 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+/// The builds between one frame and the next: those the frame waited for (foreground) and
+/// those the background thread finished meanwhile.
+class BuildCounter {
+public:
+  explicit BuildCounter(Renderer &R) : R(R) {}
+  void record(FrameRecord &F) {
+    F.KernelBuilds = R.cl().foregroundBuilds() - Foreground;
+    F.BackgroundBuilds = R.cl().backgroundBuilds() - Background;
+    F.BuildWaitSeconds = R.foregroundBuildSeconds() - WaitSeconds;
+    Foreground = R.cl().foregroundBuilds();
+    Background = R.cl().backgroundBuilds();
+    WaitSeconds = R.foregroundBuildSeconds();
+  }
+
+private:
+  Renderer &R;
+  unsigned Foreground = 0, Background = 0;
+  double WaitSeconds = 0;
+};
+
 int run(int Argc, char **Argv) {
   double T0 = now();
   Options O = parseArgs(Argc, Argv);
@@ -230,6 +256,7 @@ int run(int Argc, char **Argv) {
   RO.CacheDir = O.CacheDir;
   RO.KernelDir = O.KernelDir;
   RO.Progress = !O.Quiet && isatty(2);
+  RO.Tier = O.Tier;
   Renderer R(S, L, RO);
   std::unique_ptr<LiveEditor> Editor;
   if (!Sets.empty() || !Script.empty())
@@ -243,12 +270,12 @@ int run(int Argc, char **Argv) {
     First.Rebuilt |= Res.Rebuilt;
   }
   std::vector<float> Variance;
+  BuildCounter Builds(R);
   std::vector<float> Image = R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance);
   if (!O.Variance.empty())
     writeImage(O.Variance, S.Render.Width, S.Render.Height, Variance);
-  First.KernelBuilds = R.cl().kernelBuilds();
+  Builds.record(First);
   Frames.push_back(First);
-  unsigned BuildsSoFar = R.cl().kernelBuilds();
   if (!Script.empty())
     writeImage(frameName(O.Output, 0), S.Render.Width, S.Render.Height, Image);
   for (size_t K = 0; K < Script.size(); ++K) {
@@ -256,10 +283,11 @@ int run(int Argc, char **Argv) {
     F.EditText = Script[K].Text;
     EditResult Res = Editor->apply(Script[K], R);
     F.EditSeconds = Res.Seconds;
+    F.IdleSeconds = Res.IdleSeconds;
     F.Rebuilt = Res.Rebuilt;
+    F.BackgroundRebuild = Res.Background;
     Image = R.render(F.Frame);
-    F.KernelBuilds = R.cl().kernelBuilds() - BuildsSoFar;
-    BuildsSoFar = R.cl().kernelBuilds();
+    Builds.record(F);
     Frames.push_back(F);
     writeImage(frameName(O.Output, K + 1), S.Render.Width, S.Render.Height, Image);
   }

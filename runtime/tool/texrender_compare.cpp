@@ -4,6 +4,9 @@
 //   texrender-compare IMAGE.exr IMAGE_VAR.exr REF.exr REF_VAR.exr
 //                     [--block N] [--alpha A] [--mean-tolerance T]
 //   texrender-compare --mean IMAGE.exr      prints "mean R G B" (for tests of edits)
+//   texrender-compare --exact A.exr B.exr   bit-for-bit: prints the pixels that differ and the
+//                     largest difference (absolute, and in units in the last place); exit 0
+//                     only when every value is identical (the tier tests)
 //
 // Both images come with the per-pixel variance of their value (texrender --variance;
 // scripts/mitsuba_reference.py). Pixels are grouped in N x N blocks (default 8); for each block
@@ -15,7 +18,9 @@
 #include "texrender/Error.h"
 #include "texrender/Image.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -133,10 +138,48 @@ int printMean(const std::string &Path) {
   return 0;
 }
 
+/// The distance between two floats in representable values (0: identical bits).
+uint64_t ulpDistance(float A, float B) {
+  auto Ordered = [](float F) {
+    int32_t I;
+    std::memcpy(&I, &F, sizeof I);
+    return I < 0 ? int64_t(INT32_MIN) - I : int64_t(I);
+  };
+  int64_t D = Ordered(A) - Ordered(B);
+  return uint64_t(D < 0 ? -D : D);
+}
+
+int compareExact(const std::string &PathA, const std::string &PathB) {
+  ImageRGBA A = loadExr(PathA), B = loadExr(PathB);
+  if (A.Width != B.Width || A.Height != B.Height)
+    throw Error(PathA + " is " + std::to_string(A.Width) + "x" + std::to_string(A.Height) + ", " +
+                PathB + " is " + std::to_string(B.Width) + "x" + std::to_string(B.Height));
+  size_t Differ = 0;
+  double MaxAbs = 0;
+  uint64_t MaxUlp = 0;
+  for (size_t P = 0; P < size_t(A.Width) * A.Height; ++P) {
+    bool Same = true;
+    for (int C = 0; C < 3; ++C) {
+      float X = A.Pixels[4 * P + C], Y = B.Pixels[4 * P + C];
+      uint64_t U = ulpDistance(X, Y);
+      Same &= U == 0;
+      MaxUlp = std::max(MaxUlp, U);
+      MaxAbs = std::max(MaxAbs, std::fabs(double(X) - Y));
+    }
+    Differ += !Same;
+  }
+  std::printf("exact: %zu of %zu pixels differ; max |difference| %.3g, %llu ulp\n%s\n", Differ,
+              size_t(A.Width) * A.Height, MaxAbs, (unsigned long long)MaxUlp,
+              Differ ? "FAIL: images differ" : "PASS");
+  return Differ ? 1 : 0;
+}
+
 int main(int Argc, char **Argv) {
   try {
     if (Argc == 3 && std::strcmp(Argv[1], "--mean") == 0)
       return printMean(Argv[2]);
+    if (Argc == 4 && std::strcmp(Argv[1], "--exact") == 0)
+      return compareExact(Argv[2], Argv[3]);
     return compare(parse(Argc, Argv));
   } catch (const std::exception &E) {
     std::fprintf(stderr, "texrender-compare: error: %s\n", E.what());

@@ -14,6 +14,7 @@
 #endif
 #include <CL/opencl.hpp>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -40,9 +41,15 @@ public:
 
   /// Builds (or loads from the cache) a program. Name is used in messages (the file);
   /// KeyExtra joins the cache key (e.g. the text of the headers the source includes). Throws
-  /// Error with the device, the options and the build log on failure.
+  /// Error with the device, the options and the build log on failure. Safe to call from a
+  /// background thread (OpenCL 1.2 builds are thread-safe); Background says who called, for
+  /// the counts: a foreground build is one a frame waits for.
   cl::Program buildProgram(const std::string &Name, const std::string &Source,
-                           const std::string &Options, const std::string &KeyExtra = "");
+                           const std::string &Options, const std::string &KeyExtra = "",
+                           bool Background = false);
+  /// Whether buildProgram would find the program in the disk cache (no build from source).
+  bool isCached(const std::string &Source, const std::string &Options,
+                const std::string &KeyExtra = "") const;
 
   /// Creates a buffer of Bytes (at least 1) and counts it under Label in the memory tally.
   cl::Buffer allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags);
@@ -62,8 +69,12 @@ public:
   cl::Context &context() { return Ctx; }
   cl::CommandQueue &queue() { return Queue; }
 
-  unsigned kernelBuilds() const { return Builds; }
+  /// Programs built from source, in all (foreground + background) and per caller.
+  unsigned kernelBuilds() const { return Builds + BackgroundBuilds; }
+  unsigned foregroundBuilds() const { return Builds; }
+  unsigned backgroundBuilds() const { return BackgroundBuilds; }
   unsigned cacheHits() const { return CacheHits; }
+  cl::Device &device() { return Device; }
   const std::map<std::string, KernelTiming> &timings() const { return Timings; }
   void resetTimings() { Timings.clear(); }
   const std::map<std::string, size_t> &memory() const { return Memory; }
@@ -76,6 +87,11 @@ private:
     size_t WorkItems;
   };
   std::string cachePath(const std::string &Key) const;
+  std::string cacheKey(const std::string &Source, const std::string &Options,
+                       const std::string &KeyExtra) const;
+  cl::Program buildFromSource(const std::string &Name, const std::string &Source,
+                              const std::string &Options, bool Background);
+  void storeBinary(cl::Program &P, const std::string &Path);
 
   cl::Device Device;
   cl::Context Ctx;
@@ -83,8 +99,7 @@ private:
   std::string DeviceName;
   std::string DeviceKey;
   std::string CacheDir;
-  unsigned Builds = 0;
-  unsigned CacheHits = 0;
+  std::atomic<unsigned> Builds{0}, BackgroundBuilds{0}, CacheHits{0};
   std::vector<Pending> PendingEvents;
   std::map<std::string, KernelTiming> Timings;
   std::map<std::string, size_t> Memory;

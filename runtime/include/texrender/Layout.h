@@ -44,6 +44,10 @@ struct Layout {
   std::string KernelSource; // resolved path of proctex.cl
   std::string Entry;
   std::vector<std::string> WavefrontLaunches; // kernel names, in order
+  // Shape mode: the interp kernel of the same graph (kernel.interpFallback, resolved), which
+  // runs the same args.bin and renders while the shape kernel builds; and the shape count.
+  std::string InterpFallback;
+  unsigned NumShapes = 0;
   unsigned StackSlots = 0;
   unsigned StackLimit = 32;
   bool Spill = false;

@@ -11,8 +11,10 @@
 #include "texrender/Layout.h"
 #include "texrender/Scene.h"
 #include "texrender/SceneData.h"
+#include "texrender/TextureTiers.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -26,6 +28,7 @@ struct RendererOptions {
   std::string KernelDir;        // "" = kernelDirectory()
   bool Progress = false;        // a progress bar on stderr (after one second)
   size_t MaxPathsPerPass = 1u << 18;
+  TierPolicy Tier = TierPolicy::Auto; // shape-mode layouts only (TextureTiers.h)
 };
 
 /// Counts of one frame.
@@ -38,6 +41,7 @@ struct FrameStats {
   uint64_t AoWorkItemsPerLaunchMax = 0;
   unsigned Passes = 0;
   unsigned Bounces = 0;         // bounce iterations summed over passes
+  std::string Tier;             // the texture kernel that ran: interp, shape, inline, wavefront
   std::map<std::string, KernelTiming> Kernels;
 };
 
@@ -51,6 +55,8 @@ uint32_t attributeMaskOf(const Layout &L);
 class Renderer {
 public:
   Renderer(const Scene &S, const Layout &L, const RendererOptions &Opts);
+  /// Waits for background builds (their results are dropped).
+  ~Renderer();
 
   /// Renders S.Render (size, spp, depth) and returns linear RGB (3 floats per pixel, row 0
   /// at the top), averaged over the samples. Variance (optional): the estimated variance of
@@ -61,8 +67,29 @@ public:
   /// interp/wavefront/shape mode): an upload, no build.
   void applyArguments(const std::vector<uint8_t> &ArgsBin, const std::vector<std::string> &Attributes);
   /// Replaces the texture kernel and its layout (a regenerated proctex.cl): a build unless the
-  /// program cache has it.
+  /// program cache has it. Shape mode, tier auto: the interp fallback is built now and an
+  /// uncached shape kernel on the background thread.
   void setLayout(const Layout &L);
+
+  /// Shape mode, tier auto: the graph's shapes changed but the interp fallback kernel can run
+  /// the re-encoded ArgsBin. Frames render with it at once; MakeLayout (on the background
+  /// thread: texcc regenerating the graph) gives the new layout, whose shape and interp
+  /// kernels are built there too. At the first frame after they are ready, Reencode (on the
+  /// caller's thread; it must stay valid until then) fills the new layout's args.bin and
+  /// attributes with the edits made since, and the renderer switches to it.
+  void switchShapes(const std::vector<uint8_t> &ArgsBin, const std::vector<std::string> &Attributes,
+                    std::function<Layout()> MakeLayout, std::function<void(Layout &)> Reencode);
+  /// Waits for the background build in flight, if any, and switches to its kernels. Returns
+  /// the seconds waited.
+  double waitForBackgroundBuild();
+  bool backgroundBuildPending() const { return Pending != nullptr; }
+
+  TierPolicy tierPolicy() const { return Opts.Tier; }
+  const std::string &activeTier() const { return ActiveTier; }
+  /// Every texture-kernel build so far, foreground and background.
+  const std::vector<BuildEvent> &buildEvents() const { return Events; }
+  /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
+  double foregroundBuildSeconds() const;
 
   /// For tests: one jittered camera ray per pixel, the hit attributes of the first hits
   /// (Mask: bits 1 << TEXCC_ATTR_*), with AO computed when the mask has the AO bit.
@@ -81,6 +108,16 @@ private:
   void allocateWorkBuffers(size_t MaxPaths);
   void uploadLayoutData();
   void buildTextureKernel();
+  cl::Program buildForeground(const std::string &Source, const std::string &Tier,
+                              const std::string &Reason);
+  void activate(const cl::Program &P, const std::string &Tier);
+  std::vector<std::string> textureKernelNames() const;
+  void startBackgroundBuild(std::function<Layout()> MakeLayout, bool SameLayout,
+                            std::function<void(Layout &)> Reencode, const std::string &Reason);
+  void supersedePending();
+  void reapRetired(bool Wait);
+  void adoptReadyBuild();
+  void adopt(TierBuildResult &R);
   int traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes);
   void runTextures(int NumActive);
   void setSceneArgs();
@@ -99,6 +136,17 @@ private:
   std::map<std::string, cl::Kernel> K;      // fixed kernels by name
   std::vector<cl::Kernel> TextureKernels;   // proctex (one, or the wavefront launches + outputs)
   std::vector<std::string> TextureKernelNames;
+
+  // Tiers (shape mode): the programs of Lay, the one running, the background job in flight
+  // and the superseded ones still running (joined, their results dropped).
+  double Epoch = 0;                         // steadySeconds() at construction
+  std::string ActiveTier;
+  cl::Program ShapeProgram, InterpProgram;
+  std::unique_ptr<BackgroundBuild> Pending;
+  std::function<void(Layout &)> PendingReencode;
+  std::vector<std::unique_ptr<BackgroundBuild>> Retired;
+  std::vector<BuildEvent> Events;
+  unsigned FramesRendered = 0;
 
   std::map<std::string, cl::Buffer> B;      // device buffers by name
   size_t Capacity = 0;                      // paths the work buffers hold

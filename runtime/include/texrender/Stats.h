@@ -14,8 +14,12 @@ namespace texrender {
 struct FrameRecord {
   std::string EditText;        // "" for the first frame
   bool Rebuilt = false;
-  unsigned KernelBuilds = 0;   // builds performed between the previous frame and this one
+  bool BackgroundRebuild = false; // the edit regenerated the kernel on the background thread
+  unsigned KernelBuilds = 0;   // builds this frame waited for (since the previous frame)
+  unsigned BackgroundBuilds = 0; // builds the background thread finished since the previous frame
+  double BuildWaitSeconds = 0; // wall seconds of the builds this frame waited for
   double EditSeconds = 0;      // applying the edit (re-encode + upload, or regenerate + build)
+  double IdleSeconds = 0;      // a "wait" line: time waited for the background build
   FrameStats Frame;
 };
 

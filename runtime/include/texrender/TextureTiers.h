@@ -1,0 +1,94 @@
+#ifndef TEXRENDER_TEXTURETIERS_H
+#define TEXRENDER_TEXTURETIERS_H
+
+// Tiered texture execution for shape-mode outputs (docs/runtime.md, "Tiers"). A shape-mode
+// folder holds two kernels of one graph that run the same args.bin: the shape kernel
+// (proctex.cl, straight-line code per graph shape: fast per hit, but one build per new shape)
+// and its interp fallback (proctex.interp.cl: depends only on the set of functions, so it
+// survives rewirings). While the shape kernel is not built, frames render with the interp
+// tier and the shape kernel builds on a background thread; frames switch once it is ready.
+
+#include "texrender/ClContext.h"
+#include "texrender/Layout.h"
+
+#include <functional>
+#include <future>
+#include <string>
+#include <thread>
+
+namespace texrender {
+
+/// --tier: auto = tiered (interp while the shape kernel builds in the background); interp =
+/// the fallback kernel only (never builds a shape kernel); shape = the shape kernel only, and
+/// a frame waits for its build (the behaviour before tiers).
+enum class TierPolicy { Auto, Interp, Shape };
+
+/// Parses "auto" | "interp" | "shape"; throws Error naming the allowed values.
+TierPolicy parseTierPolicy(const std::string &Name);
+const char *tierPolicyName(TierPolicy P);
+
+/// One texture-kernel program built (or loaded from the program cache) for the renderer.
+struct BuildEvent {
+  std::string Kernel;        // the tier it serves: "shape", "interp", "inline", "wavefront"
+  std::string Reason;        // "initial", "edit" (a regenerated kernel), "shape change"
+  bool Background = false;   // built on the background thread (no frame waited for it)
+  double StartSeconds = 0;   // since the renderer was created
+  double ReadySeconds = -1;  // -1: not finished when stats were written
+  int FirstFrame = -1;       // the first frame it rendered (-1: none)
+  bool Superseded = false;   // a later edit made it stale before it was used
+  std::string Error;         // a failed background build: the interp tier kept rendering
+};
+
+/// What a background job produced.
+struct TierBuildResult {
+  Layout L;                  // the layout the programs belong to
+  bool SameLayout = false;   // L is the layout the renderer runs (only the shape kernel is new)
+  cl::Program Shape;         // L's shape kernel
+  cl::Program Interp;        // L's interp fallback (new layouts only)
+  double ReadySeconds = 0;
+  std::string Error;
+};
+
+/// Builds L's shape kernel and, for a new layout, its interp fallback, then launches each
+/// once over an empty range on a private queue: PoCL compiles the work-group function at the
+/// first launch, and that compile belongs to the build, not to the first frame that uses it.
+/// MakeLayout runs first, on the calling thread (e.g. texcc regenerating a rewired graph).
+/// Never throws: a failure is returned in Error.
+TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
+                               bool SameLayout, const std::string &Options, double Epoch);
+
+/// Launches each of Kernels of P once over one work-group whose items all return at once
+/// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here.
+void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels);
+
+/// A job on its own std::thread. The thread owns every OpenCL object it creates; only the
+/// programs cross over (kernels are created from them on the main thread, so no cl_kernel is
+/// ever shared for clSetKernelArg).
+class BackgroundBuild {
+public:
+  BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex);
+  ~BackgroundBuild();
+  BackgroundBuild(const BackgroundBuild &) = delete;
+  BackgroundBuild &operator=(const BackgroundBuild &) = delete;
+
+  bool ready() const;
+  void wait() const { Result.wait(); }
+  /// The result (once; after ready() or wait()).
+  TierBuildResult take() { return Result.get(); }
+  size_t eventIndex() const { return EventIndex; }
+
+private:
+  std::future<TierBuildResult> Result;
+  std::thread Thread;
+  size_t EventIndex;
+};
+
+/// Seconds on the steady clock (for build-event times).
+double steadySeconds();
+
+/// The text of a kernel source file; Error "PATH: cannot open kernel source".
+std::string readKernelSource(const std::string &Path);
+
+} // namespace texrender
+
+#endif

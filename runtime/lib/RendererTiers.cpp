@@ -1,0 +1,197 @@
+// The texture kernel of a Renderer: building it, and for shape-mode layouts the two tiers
+// (TextureTiers.h): the interp fallback renders while the shape kernel builds on a background
+// thread, and frames switch to the shape kernel at the first frame after it is ready.
+
+#include "texrender/Error.h"
+#include "texrender/Renderer.h"
+
+#include <cstdio>
+
+namespace texrender {
+
+Renderer::~Renderer() {
+  if (Pending)
+    Pending->wait();
+  for (auto &R : Retired)
+    R->wait();
+}
+
+cl::Program Renderer::buildForeground(const std::string &Source, const std::string &Tier,
+                                      const std::string &Reason) {
+  BuildEvent E;
+  E.Kernel = Tier;
+  E.Reason = Reason;
+  E.StartSeconds = steadySeconds() - Epoch;
+  cl::Program P = Cl->buildProgram(Source, readKernelSource(Source), programOptions());
+  // PoCL's compile at the first launch is part of the build the frame waits for.
+  warmUpKernels(*Cl, P, textureKernelNames());
+  E.ReadySeconds = steadySeconds() - Epoch;
+  E.FirstFrame = int(FramesRendered);
+  Events.push_back(E);
+  return P;
+}
+
+std::vector<std::string> Renderer::textureKernelNames() const {
+  std::vector<std::string> Names = Lay.WavefrontLaunches;
+  if (Lay.Mode == "wavefront")
+    Names.push_back("texcc_wf_outputs");
+  else
+    Names = {Lay.Entry};
+  return Names;
+}
+
+double Renderer::foregroundBuildSeconds() const {
+  double S = 0;
+  for (const BuildEvent &E : Events)
+    if (!E.Background && E.ReadySeconds >= 0)
+      S += E.ReadySeconds - E.StartSeconds;
+  return S;
+}
+
+void Renderer::activate(const cl::Program &P, const std::string &Tier) {
+  TextureKernels.clear();
+  ActiveTier = Tier;
+  TextureKernelNames = textureKernelNames();
+  std::string File = Tier == "interp" && Lay.Mode == "shape" ? Lay.InterpFallback : Lay.KernelSource;
+  for (const std::string &N : TextureKernelNames) {
+    try {
+      TextureKernels.push_back(cl::Kernel(P, N.c_str()));
+    } catch (const cl::Error &E) {
+      throw Error(File + ": no kernel '" + N + "' in the texture program (" +
+                  clErrorName(E.err()) + ")");
+    }
+  }
+}
+
+void Renderer::buildTextureKernel() {
+  supersedePending();
+  TextureKernels.clear();
+  TextureKernelNames.clear();
+  ShapeProgram = InterpProgram = cl::Program();
+  ActiveTier.clear();
+  if (!HasTextureWork)
+    return;
+  const char *Reason = FramesRendered ? "edit" : "initial";
+  if (Lay.Mode != "shape") {
+    activate(buildForeground(Lay.KernelSource, Lay.Mode, Reason), Lay.Mode);
+    return;
+  }
+  // Something must render the next frame: the shape kernel when the policy insists or its
+  // binary is cached (a load, no build), else the interp fallback (usually cached: it changes
+  // only with the set of functions). In auto mode the fallback is kept for later rewirings.
+  const TierPolicy P = Opts.Tier;
+  bool ShapeCached = Cl->isCached(readKernelSource(Lay.KernelSource), programOptions());
+  if (P == TierPolicy::Shape || (P == TierPolicy::Auto && ShapeCached))
+    ShapeProgram = buildForeground(Lay.KernelSource, "shape", Reason);
+  if (P != TierPolicy::Shape)
+    InterpProgram = buildForeground(Lay.InterpFallback, "interp", Reason);
+  activate(ShapeProgram() ? ShapeProgram : InterpProgram, ShapeProgram() ? "shape" : "interp");
+  if (P == TierPolicy::Auto && !ShapeProgram()) {
+    Layout Same = Lay;
+    startBackgroundBuild([Same] { return Same; }, /*SameLayout=*/true, nullptr, Reason);
+  }
+}
+
+void Renderer::switchShapes(const std::vector<uint8_t> &ArgsBin,
+                            const std::vector<std::string> &Attributes,
+                            std::function<Layout()> MakeLayout,
+                            std::function<void(Layout &)> Reencode) {
+  if (Lay.Mode != "shape" || !InterpProgram())
+    throw Error("switchShapes: needs a shape-mode layout with its interp fallback built (tier auto)");
+  applyArguments(ArgsBin, Attributes);
+  if (HasTextureWork && ActiveTier != "interp")
+    activate(InterpProgram, "interp");
+  startBackgroundBuild(std::move(MakeLayout), /*SameLayout=*/false, std::move(Reencode),
+                       "shape change");
+}
+
+void Renderer::startBackgroundBuild(std::function<Layout()> MakeLayout, bool SameLayout,
+                                    std::function<void(Layout &)> Reencode,
+                                    const std::string &Reason) {
+  supersedePending();
+  BuildEvent E;
+  E.Kernel = "shape";
+  E.Reason = Reason;
+  E.Background = true;
+  E.StartSeconds = steadySeconds() - Epoch;
+  Events.push_back(E);
+  ClContext *Ctx = Cl.get();
+  std::string Options = programOptions();
+  double Start = Epoch;
+  Pending = std::make_unique<BackgroundBuild>(
+      [Ctx, MakeLayout = std::move(MakeLayout), SameLayout, Options, Start] {
+        return buildShapeTier(*Ctx, MakeLayout, SameLayout, Options, Start);
+      },
+      Events.size() - 1);
+  PendingReencode = std::move(Reencode);
+}
+
+void Renderer::supersedePending() {
+  if (!Pending)
+    return;
+  Events[Pending->eventIndex()].Superseded = true;
+  Retired.push_back(std::move(Pending));
+  PendingReencode = nullptr;
+}
+
+void Renderer::reapRetired(bool Wait) {
+  for (auto It = Retired.begin(); It != Retired.end();) {
+    if (!Wait && !(*It)->ready()) {
+      ++It;
+      continue;
+    }
+    TierBuildResult R = (*It)->take();
+    BuildEvent &E = Events[(*It)->eventIndex()];
+    E.ReadySeconds = R.ReadySeconds;
+    E.Error = R.Error;
+    It = Retired.erase(It);
+  }
+}
+
+void Renderer::adoptReadyBuild() {
+  reapRetired(false);
+  if (!Pending || !Pending->ready())
+    return;
+  TierBuildResult R = Pending->take();
+  BuildEvent &E = Events[Pending->eventIndex()];
+  Pending.reset();
+  E.ReadySeconds = R.ReadySeconds;
+  if (!R.Error.empty()) {
+    // The interp tier renders correctly; the faster kernel is lost, and the reason reported.
+    E.Error = R.Error;
+    std::fprintf(stderr, "texrender: warning: the shape kernel failed to build; frames keep "
+                         "the interp tier: %s\n", R.Error.substr(0, R.Error.find('\n')).c_str());
+    PendingReencode = nullptr;
+    return;
+  }
+  E.FirstFrame = int(FramesRendered);
+  try {
+    adopt(R);
+  } catch (const cl::Error &Ex) {
+    throw Error(std::string("OpenCL call ") + Ex.what() + " failed: " + clErrorName(Ex.err()));
+  }
+}
+
+void Renderer::adopt(TierBuildResult &R) {
+  if (!R.SameLayout) {
+    if (PendingReencode)
+      PendingReencode(R.L);
+    PendingReencode = nullptr;
+    Lay = std::move(R.L);
+    uploadLayoutData();
+    InterpProgram = R.Interp;
+  }
+  ShapeProgram = R.Shape;
+  if (HasTextureWork)
+    activate(ShapeProgram, "shape");
+}
+
+double Renderer::waitForBackgroundBuild() {
+  double T0 = steadySeconds();
+  if (Pending)
+    Pending->wait();
+  adoptReadyBuild();
+  return steadySeconds() - T0;
+}
+
+} // namespace texrender

@@ -1,0 +1,109 @@
+#include "texrender/TextureTiers.h"
+#include "texrender/Error.h"
+
+#include "texcc_abi.h"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+
+namespace texrender {
+
+TierPolicy parseTierPolicy(const std::string &Name) {
+  if (Name == "auto")
+    return TierPolicy::Auto;
+  if (Name == "interp")
+    return TierPolicy::Interp;
+  if (Name == "shape")
+    return TierPolicy::Shape;
+  throw Error("--tier: unknown tier policy '" + Name + "' (expected auto, interp or shape)");
+}
+
+const char *tierPolicyName(TierPolicy P) {
+  switch (P) {
+  case TierPolicy::Auto: return "auto";
+  case TierPolicy::Interp: return "interp";
+  case TierPolicy::Shape: return "shape";
+  }
+  return "auto";
+}
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string readKernelSource(const std::string &Path) {
+  std::ifstream In(Path);
+  if (!In)
+    throw Error(Path + ": cannot open kernel source");
+  std::stringstream SS;
+  SS << In.rdbuf();
+  return SS.str();
+}
+
+namespace {
+
+} // namespace
+
+void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels) {
+  // The renderer's work-group size: PoCL compiles per local size.
+  cl::Buffer Dummy(Cl.context(), CL_MEM_READ_WRITE, sizeof(TexccHitAttrs) * 4);
+  cl::CommandQueue Queue(Cl.context(), Cl.device());
+  for (const std::string &Name : Kernels) {
+    cl::Kernel K(P, Name.c_str());
+    for (cl_uint Arg = 0; Arg < 9; ++Arg)
+      if (Arg == 2)
+        K.setArg(Arg, cl_int(0));
+      else
+        K.setArg(Arg, Dummy);
+    Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(64), cl::NDRange(64));
+  }
+  Queue.finish();
+}
+
+namespace {
+
+cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Entry,
+                         const std::string &Options) {
+  cl::Program P = Cl.buildProgram(Path, readKernelSource(Path), Options, "", /*Background=*/true);
+  warmUpKernels(Cl, P, {Entry});
+  return P;
+}
+
+} // namespace
+
+TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
+                               bool SameLayout, const std::string &Options, double Epoch) {
+  TierBuildResult R;
+  R.SameLayout = SameLayout;
+  try {
+    R.L = MakeLayout();
+    R.Shape = buildAndWarm(Cl, R.L.KernelSource, R.L.Entry, Options);
+    if (!SameLayout)
+      R.Interp = buildAndWarm(Cl, R.L.InterpFallback, R.L.Entry, Options);
+  } catch (const cl::Error &E) {
+    R.Error = std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err());
+  } catch (const std::exception &E) {
+    R.Error = E.what();
+  }
+  R.ReadySeconds = steadySeconds() - Epoch;
+  return R;
+}
+
+BackgroundBuild::BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex)
+    : EventIndex(EventIndex) {
+  std::packaged_task<TierBuildResult()> Task(std::move(Job));
+  Result = Task.get_future();
+  Thread = std::thread(std::move(Task));
+}
+
+BackgroundBuild::~BackgroundBuild() {
+  if (Thread.joinable())
+    Thread.join();
+}
+
+bool BackgroundBuild::ready() const {
+  return Result.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+} // namespace texrender
