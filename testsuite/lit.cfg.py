@@ -6,9 +6,13 @@ import sys
 import lit.formats
 
 config.name = "texcc"
-config.test_format = lit.formats.ShTest(not lit_config.isWindows)
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "utils"))
+from kernel_check import KernelCheckedShTest  # noqa: E402
+
+# Every passing test's proctex*.cl files are syntax-checked by clang (utils/kernel_check.py).
+config.test_format = KernelCheckedShTest(config.clang, not lit_config.isWindows)
 config.suffixes = [".cl", ".json", ".test"]
-config.excludes = ["Inputs", "Unit", "lit.cfg.py", "CMakeLists.txt"]
+config.excludes = ["Inputs", "Unit", "utils", "lit.cfg.py", "CMakeLists.txt"]
 config.test_source_root = os.path.dirname(__file__)
 config.test_exec_root = os.path.join(config.texcc_obj_root, "testsuite")
 
