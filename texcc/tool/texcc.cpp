@@ -30,8 +30,10 @@ static cl::opt<std::string> GraphPath("graph", cl::desc("Node graph (graph.json)
 static cl::opt<std::string> OutDir("o", cl::desc("Output folder"), cl::value_desc("OUTDIR"),
                                    cl::cat(TexccCategory));
 static cl::opt<std::string>
-    ModeOpt("mode", cl::desc("Evaluation mode: interp (default), inline or wavefront"),
-            cl::value_desc("interp|inline|wavefront"), cl::init("interp"),
+    ModeOpt("mode",
+            cl::desc("Evaluation mode: interp (default), inline, wavefront or shape (one body "
+                     "per graph shape, plus proctex.interp.cl)"),
+            cl::value_desc("interp|inline|wavefront|shape"), cl::init("interp"),
             cl::cat(TexccCategory));
 static cl::opt<std::string>
     TargetOpt("target", cl::desc("opencl (default): proctex.cl; host: C++ proctex.cpp"),
@@ -45,6 +47,11 @@ static cl::list<std::string> IncludeDirs("I", cl::Prefix, cl::desc("Add an inclu
                                          cl::value_desc("DIR"), cl::cat(TexccCategory));
 static cl::list<std::string> Defines("D", cl::Prefix, cl::desc("Define a macro for the sources"),
                                      cl::value_desc("NAME[=V]"), cl::cat(TexccCategory));
+static cl::list<std::string>
+    Bake("bake",
+         cl::desc("Bake constant argument ARG of node NODE into shape code as a literal, part of "
+                  "the shape (repeatable; graph.json: {\"value\": v, \"bake\": true})"),
+         cl::value_desc("NODE.ARG"), cl::cat(TexccCategory));
 static cl::opt<bool> Verbose("v", cl::desc("Log what every graph pass does (stderr)"),
                              cl::cat(TexccCategory));
 static cl::list<std::string> Dump("dump",
@@ -107,11 +114,8 @@ static int run() {
   if (GraphPath.empty())
     return fail("no graph given (--graph graph.json)");
   std::optional<cg::Mode> Mode = cg::parseMode(ModeOpt);
-  if (!Mode) {
-    if (ModeOpt == "shape")
-      return fail("--mode=shape is not implemented yet; use interp, inline or wavefront");
-    return fail("unknown mode '" + ModeOpt + "' (expected interp, inline or wavefront)");
-  }
+  if (!Mode)
+    return fail("unknown mode '" + ModeOpt + "' (expected interp, inline, wavefront or shape)");
   std::optional<cg::Target> Target = cg::parseTarget(TargetOpt);
   if (!Target)
     return fail("unknown target '" + TargetOpt + "' (expected opencl or host)");
@@ -132,6 +136,11 @@ static int run() {
   GraphDiags.print(std::cerr);
   if (!G)
     return 1;
+  for (const std::string &B : Bake) {
+    std::string Error;
+    if (!gr::markBaked(*G, B, Error))
+      return fail(Error);
+  }
 
   std::set<std::string> TextureNames;
   for (const gr::Node &N : G->Nodes)

@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
 """Equivalence of the evaluation modes on one graph: compiles it with texcc for the host target
-(the oracle) and for interp, inline and wavefront, evaluates each with texcc-eval over the same
-grid of hits, and compares every mode with the host (compare.py, max abs diff <= --tol).
+(the oracle) and for interp, inline, wavefront and shape, evaluates each with texcc-eval over the
+same grid of hits, and compares every mode with the host (compare.py, max abs diff <= --tol).
+Shape mode must also agree bit for bit (--tol 0) with its interp fallback, proctex.interp.cl,
+which the tiered runtime swaps in while a new shape's kernel builds.
 
 usage: equivalence.py --texcc TEXCC --eval TEXCC_EVAL --work DIR --grid N GRAPH [GRAPH ...]
-                      [--tol 1e-5] [--modes interp,inline,wavefront] [-- extra texcc options]
+                      [--tol 1e-5] [--modes interp,inline,wavefront,shape]
+                      [-- extra texcc options]
 Exit 0 when every mode of every graph agrees, 1 otherwise (each failure is printed).
 """
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
@@ -38,7 +42,7 @@ def main():
     ap.add_argument("--work", required=True)
     ap.add_argument("--grid", type=int, default=32)
     ap.add_argument("--tol", type=float, default=1e-5)
-    ap.add_argument("--modes", default="interp,inline,wavefront")
+    ap.add_argument("--modes", default="interp,inline,wavefront,shape")
     ap.add_argument("graphs", nargs="+")
     args = ap.parse_args(argv)
     os.makedirs(args.work, exist_ok=True)
@@ -57,6 +61,27 @@ def main():
     return 1 if failures else 0
 
 
+def compare(ref, dump, tol, label, lines):
+    r = subprocess.run([sys.executable, os.path.join(HERE, "compare.py"), ref, dump,
+                        "--tol", str(tol), "--label", label], stdout=subprocess.PIPE, text=True)
+    lines.append(r.stdout.strip())
+    return r.returncode == 0
+
+
+def check_fallback(out, dump, graph, args, lines):
+    """Evaluates shape mode's proctex.interp.cl (same layout.json and args.bin) and requires the
+    shape kernel's values bit for bit (%.9g round-trips a float)."""
+    fallback = out + "-fallback"
+    os.makedirs(fallback, exist_ok=True)
+    for name in ("layout.json", "args.bin"):
+        shutil.copyfile(os.path.join(out, name), os.path.join(fallback, name))
+    shutil.copyfile(os.path.join(out, "proctex.interp.cl"), os.path.join(fallback, "proctex.cl"))
+    fallback_dump = fallback + ".txt"
+    return (run([args.eval, fallback, "--grid", str(args.grid)], lines, fallback_dump)
+            and compare(dump, fallback_dump, 0.0, "%s shape = its interp fallback" % graph,
+                        lines))
+
+
 def check_graph(g, graph, args, modes, extra):
     """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
     lines, failures = [], 0
@@ -71,12 +96,9 @@ def check_graph(g, graph, args, modes, extra):
         dump = out + ".txt"
         ok = (run([args.texcc, "--mode=" + mode, "--graph", graph, "-o", out] + extra, lines)
               and run([args.eval, out, "--grid", str(args.grid)], lines, dump))
-        if ok:
-            r = subprocess.run([sys.executable, os.path.join(HERE, "compare.py"), ref, dump,
-                                "--tol", str(args.tol), "--label", "%s %s" % (graph, mode)],
-                               stdout=subprocess.PIPE, text=True)
-            lines.append(r.stdout.strip())
-            ok = r.returncode == 0
+        ok = ok and compare(ref, dump, args.tol, "%s %s" % (graph, mode), lines)
+        if ok and mode == "shape":
+            ok = check_fallback(out, dump, graph, args, lines)
         failures += 0 if ok else 1
     return lines, failures
 

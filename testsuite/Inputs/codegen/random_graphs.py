@@ -7,8 +7,13 @@ feeding a vector parameter is a broadcast), attributes (AO broadcast to vectors 
 constants of every parameter kind (float, int, float2..4, arrays of float..float4 and int,
 images). Some nodes are exact duplicates of earlier ones (the merge pass folds them). Every
 material is its own DAG (the nodes it reaches), so --count 20 --materials 10 gives 200 DAGs.
+With --twins K, K materials get a twin: a copy of the nodes they reach with new float constants,
+so that shape mode's bodies are shared; with --bake F, a fraction F of the int arguments are
+written {"value": v, "bake": true}. Both draw from their own random stream: the base graphs stay
+those of the seed.
 
 usage: random_graphs.py --out DIR [--count 20] [--materials 10] [--max-nodes 64] [--seed 1]
+                        [--twins K] [--bake F]
 Prints the paths of the graphs written, one per line.
 """
 import argparse
@@ -141,6 +146,59 @@ def make_graph(rng, num_nodes, num_materials):
     return graph
 
 
+def reached(graph, material):
+    """The ids of the nodes a material's BSDF tree reaches."""
+    by_id = {n["id"]: n for n in graph["nodes"]}
+    work, seen = [], set()
+
+    def refs(value):
+        if isinstance(value, dict):
+            if "node" in value:
+                work.append(value["node"])
+            for v in value.values():
+                refs(v)
+
+    refs(material)
+    while work:
+        i = work.pop()
+        if i not in seen:
+            seen.add(i)
+            refs(by_id[i]["args"])
+    return seen
+
+
+def add_twins(rng, graph, count):
+    """Twins of `count` materials over renamed copies of their nodes, float constants redrawn
+    (int constants, baked or not, are kept)."""
+    for name in sorted(graph["materials"])[:count]:
+        ids = reached(graph, graph["materials"][name])
+        rename = lambda v: {"node": "%s_%s" % (name, v["node"])} if "node" in v else v
+
+        def twin_value(v):
+            if isinstance(v, dict):
+                return rename(v)
+            if isinstance(v, float):
+                return round(rng.uniform(-1, 1), 4)
+            if isinstance(v, list):
+                return [twin_value(e) for e in v]
+            return v
+
+        for n in [n for n in graph["nodes"] if n["id"] in ids]:
+            args = {k: twin_value(v) for k, v in n["args"].items()}
+            graph["nodes"].append({"id": "%s_%s" % (name, n["id"]), "fn": n["fn"], "args": args})
+        text = json.dumps(graph["materials"][name])
+        for i in sorted(ids, key=len, reverse=True):
+            text = text.replace('"node": "%s"' % i, '"node": "%s_%s"' % (name, i))
+        graph["materials"][name + "_twin"] = json.loads(text)
+
+
+def bake_ints(rng, graph, fraction):
+    for n in graph["nodes"]:
+        for k, v in n["args"].items():
+            if isinstance(v, int) and rng.random() < fraction:
+                n["args"][k] = {"value": v, "bake": True}
+
+
 def main():
     ap = argparse.ArgumentParser(description="random texture DAGs for the equivalence tests")
     ap.add_argument("--out", required=True)
@@ -148,15 +206,21 @@ def main():
     ap.add_argument("--materials", type=int, default=10)
     ap.add_argument("--max-nodes", type=int, default=64)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--twins", type=int, default=0)
+    ap.add_argument("--bake", type=float, default=0.0)
     args = ap.parse_args()
+    extra = random.Random(args.seed + 7919)
     os.makedirs(args.out, exist_ok=True)
     rng = random.Random(args.seed)
     for g in range(args.count):
         last = g == args.count - 1
         n = args.max_nodes if last else rng.randint(4, args.max_nodes)
         path = os.path.join(args.out, "random_%02d.json" % g)
+        graph = make_graph(rng, n, args.materials)
+        bake_ints(extra, graph, args.bake)
+        add_twins(extra, graph, args.twins)
         with open(path, "w") as f:
-            json.dump(make_graph(rng, n, args.materials), f, indent=1)
+            json.dump(graph, f, indent=1)
         print(path)
 
 

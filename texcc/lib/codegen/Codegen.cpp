@@ -18,6 +18,8 @@ std::optional<Mode> parseMode(const std::string &S) {
     return Mode::Inline;
   if (S == "wavefront")
     return Mode::Wavefront;
+  if (S == "shape")
+    return Mode::Shape;
   return std::nullopt;
 }
 
@@ -37,6 +39,8 @@ const char *modeName(Mode M) {
     return "inline";
   case Mode::Wavefront:
     return "wavefront";
+  case Mode::Shape:
+    return "shape";
   }
   return "interp";
 }
@@ -65,6 +69,10 @@ static const char *evaluationSummary(Mode M, Target T) {
   case Mode::Wavefront:
     return "one kernel texcc_wf_<node> per live node (launch order: layout.json kernel.launches),\n"
            " *      then texcc_wf_outputs";
+  case Mode::Shape:
+    return "per material shape a straight-line body reading its constants from fakeStack\n"
+           " *      (layout.json kernel.shapes), and kernel texcc_proctex, which switches on the\n"
+           " *      material";
   }
   return "";
 }
@@ -108,6 +116,11 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
      << "#define TEXCC_MAX_OUTPUTS " << std::max(1u, CG.MaxOutputs) << "\n"
      << "#define TEXCC_NUM_MATERIALS " << CG.Materials.size() << "\n"
      << "#define TEXCC_SPILL " << (CG.Spill && !Host ? 1 : 0) << "\n\n";
+  if (!Host && (Opts.EvalMode == Mode::Interp || Opts.EvalMode == Mode::Shape))
+    // No a*b+c fused into one rounding: where the compiler fuses depends on how each mode's
+    // code is inlined and folded, and the tiered runtime swaps these two kernels mid-render.
+    OS << "/* interp and shape give bit-identical values: no fused multiply-add contraction. */\n"
+       << "#pragma OPENCL FP_CONTRACT OFF\n\n";
   if (Host)
     OS << "#ifndef CL_TARGET_OPENCL_VERSION\n#define CL_TARGET_OPENCL_VERSION 120\n#endif\n";
   OS << "/* ---- kernels/common/texcc_abi.h ---- */\n" << abiHeaderText();
@@ -133,6 +146,8 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
     emitInline(OS, CG);
   else if (Opts.EvalMode == Mode::Wavefront)
     emitWavefront(OS, CG);
+  else if (Opts.EvalMode == Mode::Shape)
+    emitShape(OS, CG);
   else
     emitInterp(OS, CG);
   if (Host)
@@ -144,6 +159,11 @@ std::vector<OutputFile> generateOutputs(const CompiledGraph &CG, const CodegenOp
                                         bool DumpGraph) {
   std::vector<OutputFile> Files;
   Files.push_back({kernelFileName(Opts.Tgt), generateKernel(CG, Opts)});
+  if (Opts.EvalMode == Mode::Shape && Opts.Tgt == Target::OpenCL) {
+    CodegenOptions Interp = Opts;
+    Interp.EvalMode = Mode::Interp;
+    Files.push_back({InterpFallbackFile, generateKernel(CG, Interp)});
+  }
   Files.push_back({"layout.json", generateLayout(CG, Opts)});
   Files.push_back({"args.bin", std::string(CG.ArgsBin.begin(), CG.ArgsBin.end())});
   if (DumpGraph)

@@ -117,17 +117,21 @@ std::string signatureComment(const FunctionSignature &Sig) {
   return S + ")";
 }
 
+uint32_t recordRelativeWord(const CompiledNode &N, const CompiledArg &A) {
+  uint32_t SourceBytes = (static_cast<uint32_t>(N.Args.size()) * 4 + 15) / 16 * 16;
+  return (SourceBytes + A.BlockOffset) / 4;
+}
+
 uint32_t constantWord(const CompiledNode &N, const CompiledArg &A) {
-  uint32_t SourceWords = (static_cast<uint32_t>(N.Args.size()) * 4 + 15) / 16 * 16;
-  return (N.RecordOffset + SourceWords + A.BlockOffset) / 4;
+  return N.RecordOffset / 4 + recordRelativeWord(N, A);
 }
 
 std::string hostArrayName(unsigned NodeIndex, const CompiledArg &A) {
   return "texcc_array_" + std::to_string(NodeIndex) + "_" + A.Name;
 }
 
-static std::string fakeStackConstant(const CompiledNode &N, const CompiledArg &A) {
-  std::string W = std::to_string(constantWord(N, A)) + "u";
+/// The word index W of a constant (a literal, or `rec + 4u` relative to a record).
+static std::string fakeStackConstant(const std::string &W, const CompiledArg &A) {
   switch (A.Type.Base) {
   case BaseType::Float:
     return "as_float(fakeStack[" + W + "])";
@@ -143,23 +147,28 @@ static std::string fakeStackConstant(const CompiledNode &N, const CompiledArg &A
 std::string ArgEmitter::argument(const CompiledGraph &CG, const CompiledNode &N,
                                  unsigned NodeIndex, const CompiledArg &A) const {
   const BaseType B = A.Type.Base;
+  const std::string Word =
+      RecordWord ? RecordWord(NodeIndex) + " + " + std::to_string(recordRelativeWord(N, A)) + "u"
+                 : std::to_string(constantWord(N, A)) + "u";
   if (A.Type.IsGlobalArray) {
     if (Tgt == Target::Host)
       return hostArrayName(NodeIndex, A);
-    return "(__global const " + spelling(B) + " *)((__global const uchar *)fakeStack + " +
-           std::to_string(A.ArrayByteOffset) + "u)";
+    // Relative to a record, the elements' offset is the array's {byteOffset, count} word.
+    std::string At = RecordWord ? "fakeStack[" + Word + "]" : std::to_string(A.ArrayByteOffset) + "u";
+    return "(__global const " + spelling(B) + " *)((__global const uchar *)fakeStack + " + At +
+           ")";
   }
   std::string E;
   switch (A.Src) {
   case CompiledArg::Source::Constant:
-    if (BakeConstants)
+    if (BakeConstants || (BakeMarked && A.Bake))
       return constantLiteral(B, A.Values.data(), Tgt);
-    return fakeStackConstant(N, A);
+    return fakeStackConstant(Word, A);
   case CompiledArg::Source::Attribute:
     E = "texcc_attr_" + attributeTable().at(A.AttrId).first + "(texcc_ctx)";
     break;
   case CompiledArg::Source::Node:
-    E = ChildExpr(CG, A.NodeIndex, Tgt);
+    E = ChildExpr(A.NodeIndex);
     break;
   }
   if (A.Broadcast)

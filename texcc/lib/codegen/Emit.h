@@ -7,6 +7,7 @@
 
 #include "texcc/Codegen/Codegen.h"
 
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -41,15 +42,21 @@ std::string signatureComment(const graph::FunctionSignature &Sig);
 /// The expression of a structural argument of node N (inline, wavefront, host):
 /// - Attribute: `texcc_attr_AO(texcc_ctx)`, broadcast with a vector constructor if needed.
 /// - Node: ChildExpr(child index), already of the child's return type, broadcast if needed.
-/// - Constant: a literal (BakeConstants) or a read of the record's parameter block in
-///   `fakeStack` (the argument's value can then change without a rebuild).
+/// - Constant: a literal (BakeConstants, or an argument marked "bake" with BakeMarked) or a
+///   read of the record's parameter block in `fakeStack` (the argument's value can then change
+///   without a rebuild).
 /// - Array: a pointer into `fakeStack` (OpenCL: a __global parameter cannot point at a
 ///   program-scope __constant array) or, on the host, the named static array HostArrayName.
+/// Reads from the record use absolute word indices, unless RecordWord is set: then they are
+/// relative to RecordWord(node), an expression for the record's first word (shape mode, where
+/// one body serves the records of several materials).
 struct ArgEmitter {
   Target Tgt = Target::OpenCL;
   bool BakeConstants = true;
+  bool BakeMarked = false;
   unsigned ArgIndent = 6;  // continuation indent when a call takes one argument per line
-  std::string (*ChildExpr)(const graph::CompiledGraph &, unsigned Child, Target) = nullptr;
+  std::function<std::string(unsigned Child)> ChildExpr;
+  std::function<std::string(unsigned NodeIndex)> RecordWord;
   std::string argument(const graph::CompiledGraph &CG, const graph::CompiledNode &N,
                        unsigned NodeIndex, const graph::CompiledArg &A) const;
   /// `fn(texcc_ctx, arg0, arg1, ...)` for node NodeIndex.
@@ -61,6 +68,8 @@ std::string hostArrayName(unsigned NodeIndex, const graph::CompiledArg &A);
 
 /// Word index of a parameter's first constant word inside args.bin.
 uint32_t constantWord(const graph::CompiledNode &N, const graph::CompiledArg &A);
+/// The same word relative to the record's first word (the same for every node of a function).
+uint32_t recordRelativeWord(const graph::CompiledNode &N, const graph::CompiledArg &A);
 
 /// The materials' outputs in a human line: "rusty: out0 = node 2 'mask' (float)".
 std::string describeOutputs(const graph::CompiledGraph &CG, const graph::CompiledMaterial &M);
@@ -73,6 +82,9 @@ void emitStraightLineMaterial(std::ostringstream &OS, const graph::CompiledGraph
 
 /// Mode-specific generators (the evaluation code and kernels after the user code).
 void emitInterp(std::ostringstream &OS, const graph::CompiledGraph &CG);
+void emitShape(std::ostringstream &OS, const graph::CompiledGraph &CG);
+/// `texcc_program(fakeStack, mat)`: the word offset of material mat's program (interp, shape).
+void emitProgramLocator(std::ostringstream &OS);
 void emitInline(std::ostringstream &OS, const graph::CompiledGraph &CG);
 void emitWavefront(std::ostringstream &OS, const graph::CompiledGraph &CG);
 void emitHost(std::ostringstream &OS, const graph::CompiledGraph &CG);

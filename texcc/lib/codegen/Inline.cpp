@@ -7,10 +7,6 @@ using namespace texcc::graph;
 
 namespace texcc::codegen {
 
-static std::string localOfChild(const CompiledGraph &CG, unsigned Child, Target) {
-  return nodeLocalName(CG.Nodes[Child], Child);
-}
-
 std::string materialFunctionName(const CompiledMaterial &M) {
   return "texcc_material_" + std::to_string(M.Index);
 }
@@ -30,7 +26,7 @@ void emitStraightLineMaterial(std::ostringstream &OS, const CompiledGraph &CG,
   ArgEmitter E;
   E.Tgt = T;
   E.BakeConstants = true;
-  E.ChildExpr = localOfChild;
+  E.ChildExpr = [&CG](unsigned Child) { return nodeLocalName(CG.Nodes[Child], Child); };
   for (const Instruction &I : M.Program) {
     const CompiledNode &N = CG.Nodes[I.Node];
     OS << "  const " << spelling(N.Return) << " " << nodeLocalName(N, I.Node) << " = "

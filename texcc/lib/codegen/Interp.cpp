@@ -7,14 +7,8 @@ using namespace texcc::graph;
 
 namespace texcc::codegen {
 
-static void emitDecoder(std::ostringstream &OS, bool Spill) {
-  OS << "/* Where value-stack slot s of this work-item lives: the private array, or (TEXCC_SPILL)\n"
-        " * the global scratch slice, slot s of hit gid at s*numHits + gid. */\n";
-  if (Spill)
-    OS << "#define TEXCC_SLOT(s) scratch[(s) * (uint)numHits + (uint)gid]\n";
-  else
-    OS << "#define TEXCC_SLOT(s) stack[s]\n";
-  OS << "\n/* The program of material mat: the blocks of all materials follow each other from word 0\n"
+void emitProgramLocator(std::ostringstream &OS) {
+  OS << "/* The program of material mat: the blocks of all materials follow each other from word 0\n"
         " * (numInstructions, numOutputs, 3 words per instruction, 1 per output). */\n"
         "inline uint texcc_program(__global const uint *fs, int mat) {\n"
         "  uint at = 0u;\n"
@@ -22,6 +16,17 @@ static void emitDecoder(std::ostringstream &OS, bool Spill) {
         "    at += 2u + 3u * fs[at] + fs[at + 1u];\n"
         "  return at;\n"
         "}\n\n";
+}
+
+static void emitDecoder(std::ostringstream &OS, bool Spill) {
+  OS << "/* Where value-stack slot s of this work-item lives: the private array, or (TEXCC_SPILL)\n"
+        " * the global scratch slice, slot s of hit gid at s*numHits + gid. */\n";
+  if (Spill)
+    OS << "#define TEXCC_SLOT(s) scratch[(s) * (uint)numHits + (uint)gid]\n";
+  else
+    OS << "#define TEXCC_SLOT(s) stack[s]\n";
+  OS << "\n";
+  emitProgramLocator(OS);
   const char *StackParam = Spill ? "__global const float4 *scratch, int numHits, int gid"
                                  : "const float4 *stack";
   OS << "/* Decodes one argument of a float..float4 parameter from its source word src: a constant\n"

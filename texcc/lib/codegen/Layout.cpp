@@ -16,6 +16,16 @@ static Json kernelJson(const CompiledGraph &CG, const CodegenOptions &Opts) {
     K["entry"] = HostEntry;
     return K;
   }
+  if (Opts.EvalMode == Mode::Shape) {
+    K["entry"] = KernelEntry;
+    K["interpFallback"] = InterpFallbackFile;
+    Json Shapes = Json::array();
+    std::vector<MaterialShape> Groups = groupShapes(CG);
+    for (size_t I = 0; I < Groups.size(); ++I)
+      Shapes.push_back(Json{{"id", I}, {"materials", Groups[I].Materials}});
+    K["shapes"] = std::move(Shapes);
+    return K;
+  }
   if (Opts.EvalMode != Mode::Wavefront) {
     K["entry"] = KernelEntry;
     return K;
@@ -34,7 +44,8 @@ static unsigned scratchFloat4PerHit(const CompiledGraph &CG, const CodegenOption
     return 0;
   if (Opts.EvalMode == Mode::Wavefront)
     return static_cast<unsigned>(CG.Nodes.size());
-  if (Opts.EvalMode == Mode::Interp && CG.Spill)
+  // Shape mode: for its interp fallback (the shape kernel itself needs no scratch).
+  if ((Opts.EvalMode == Mode::Interp || Opts.EvalMode == Mode::Shape) && CG.Spill)
     return CG.StackSlots;
   return 0;
 }
@@ -51,8 +62,10 @@ std::string generateLayout(const CompiledGraph &CG, const CodegenOptions &Opts) 
   for (auto It = Graph.begin(); It != Graph.end(); ++It)
     if (!L.contains(It.key()))
       L[It.key()] = It.value();
-  // Spilling is an interpreter matter: other modes have no value stack.
-  if (Opts.EvalMode != Mode::Interp || Opts.Tgt == Target::Host)
+  // Spilling is an interpreter matter: other modes have no value stack (shape mode keeps it for
+  // its interp fallback).
+  const bool Interprets = Opts.EvalMode == Mode::Interp || Opts.EvalMode == Mode::Shape;
+  if (!Interprets || Opts.Tgt == Target::Host)
     L["spill"] = false;
   return L.dump(2) + "\n";
 }

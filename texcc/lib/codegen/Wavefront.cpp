@@ -12,10 +12,6 @@ static std::string scratchAt(unsigned Node) {
   return "scratch[" + std::to_string(Node) + "u * (uint)numHits + (uint)gid]";
 }
 
-static std::string scratchOfChild(const CompiledGraph &CG, unsigned Child, Target) {
-  return scratchAt(Child) + narrowSwizzle(CG.Nodes[Child].Return);
-}
-
 static void emitUseTable(std::ostringstream &OS, const CompiledGraph &CG) {
   OS << "/* texcc_wf_uses[m][n]: whether material m's program runs node n (other materials' hits\n"
         " * skip the node's launch). */\n"
@@ -45,7 +41,9 @@ static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsi
   E.Tgt = Target::OpenCL;
   E.ArgIndent = 10;
   E.BakeConstants = false;
-  E.ChildExpr = scratchOfChild;
+  E.ChildExpr = [&CG](unsigned Child) {
+    return scratchAt(Child) + narrowSwizzle(CG.Nodes[Child].Return);
+  };
   OS << "  " << scratchAt(NodeIndex) << " =\n      "
      << widenToFloat4(N.Return, E.call(CG, NodeIndex), Target::OpenCL) << ";\n"
      << "}\n\n";

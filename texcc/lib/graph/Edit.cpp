@@ -87,6 +87,7 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
   Graph Edited = G;
   ArgValue *Slot = argumentOf(*Edited.findNode(NodeId), Arg);
   V->KeyLoc = Slot->KeyLoc;
+  V->Bake |= Slot->Bake; // a new value of a baked argument stays baked
   V->JsonPath = N->JsonPath + "/args/" + Arg;
   *Slot = std::move(*V);
 

@@ -83,6 +83,8 @@ OJson argJson(const CompiledGraph &CG, const CompiledArg &A) {
     } else {
       J["value"] = A.Values;
     }
+    if (A.Bake)
+      J["bake"] = true;
     break;
   }
   J["offset"] = A.BlockOffset;

@@ -190,6 +190,39 @@ public:
     return true;
   }
 
+  /// `{"value": 3, "bake": true}`: a literal with options. Only a number or a vector can be
+  /// baked: arrays always live in the fake stack (inline code points into it too).
+  bool parseLiteralObject(const Value &V, ArgValue &A, const std::string &JsonPath) {
+    if (!checkKeys(V, JsonPath, "argument", {"value", "bake"}))
+      return false;
+    const Value *Literal = require(V, "value", JsonPath, "argument");
+    if (!Literal)
+      return false;
+    std::string ValuePath = JsonPath + "/value";
+    if (!Literal->isNumber() && !Literal->isArray()) {
+      error(Literal->Loc, ValuePath,
+            "'value' must be a number or an array of numbers, got " +
+                json::describeKind(*Literal));
+      return false;
+    }
+    if (!parseArgValue(*Literal, A, ValuePath))
+      return false;
+    A.Loc = V.Loc;
+    A.JsonPath = JsonPath;
+    const Value *Bake = V.get("bake");
+    if (!Bake)
+      return true;
+    if (!expectKind(*Bake, Value::Kind::Bool, JsonPath + "/bake", "'bake'", "true or false"))
+      return false;
+    A.Bake = Bake->Bool;
+    if (A.Bake && A.K == ArgValue::Kind::Array) {
+      error(Bake->Loc, JsonPath + "/bake",
+            "only a number or a vector can be baked; arrays stay in the fake stack");
+      return false;
+    }
+    return true;
+  }
+
 public:
   bool parseArgValue(const Value &V, ArgValue &A, const std::string &JsonPath) {
     A.Loc = V.Loc;
@@ -203,10 +236,13 @@ public:
     case Value::Kind::Array:
       return parseArgArray(V, A, JsonPath);
     case Value::Kind::Object:
+      if (V.get("value") || V.get("bake"))
+        return parseLiteralObject(V, A, JsonPath);
       return parseArgRef(V, A, JsonPath);
     default:
       error(V.Loc, JsonPath,
-            "expected a number, an array, or an object with 'node', 'attr' or 'image'; got " +
+            "expected a number, an array, or an object with 'node', 'attr', 'image' or "
+            "'value'; got " +
                 json::describeKind(V));
       return false;
     }
@@ -303,6 +339,12 @@ private:
       ArgValue A;
       A.KeyLoc = M->KeyLoc;
       if (!parseArgValue(*M->Val, A, InPath)) {
+        Ok = false;
+        continue;
+      }
+      if (A.Bake) {
+        error(A.Loc, InPath, "BSDF input '" + In + "' cannot be baked; 'bake' is for node "
+                             "arguments");
         Ok = false;
         continue;
       }

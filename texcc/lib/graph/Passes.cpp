@@ -147,7 +147,7 @@ void mergeIdenticalNodes(CompiledGraph &CG, std::ostream *Log) {
       else if (A.Src == CompiledArg::Source::Attribute)
         Key += std::to_string(A.AttrId);
       else
-        Key += constantKey(A);
+        Key += constantKey(A) + (A.Bake ? "k" : "");
       Key += ";";
     }
     auto [It, Inserted] = ClassOfKey.emplace(Key, static_cast<unsigned>(Survivor.size()));

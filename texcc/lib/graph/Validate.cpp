@@ -212,6 +212,7 @@ private:
 
   bool resolveConstant(const Node &N, const Param &P, const ArgValue &A, CompiledArg &CA) {
     BaseType B = P.Type.Base;
+    CA.Bake = A.Bake;
     if (B == BaseType::Sampler)
       return mismatch(N, P, A, "; bind an image with {\"image\": name}");
     if (A.K == ArgValue::Kind::Number) {
@@ -234,6 +235,13 @@ private:
     if (P.Type.IsGlobalArray) {
       if (A.K != ArgValue::Kind::Vector && A.K != ArgValue::Kind::Array)
         return mismatch(N, P, A);
+      if (A.Bake) {
+        error(A.Loc,
+              "node '" + N.Id + "': argument '" + P.Name + "' (" + spelling(P.Type) +
+                  ") cannot be baked; arrays stay in the fake stack",
+              A.JsonPath);
+        return false;
+      }
       return resolveArray(N, P, A, CA);
     }
     switch (A.K) {

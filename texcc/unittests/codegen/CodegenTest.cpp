@@ -109,11 +109,12 @@ bool contains(const std::string &Text, const std::string &Part) {
   return Text.find(Part) != std::string::npos;
 }
 
-TEST(CodegenModes, ParsesTheThreeModesAndRejectsShape) {
+TEST(CodegenModes, ParsesTheFourModes) {
   EXPECT_EQ(parseMode("interp"), Mode::Interp);
   EXPECT_EQ(parseMode("inline"), Mode::Inline);
   EXPECT_EQ(parseMode("wavefront"), Mode::Wavefront);
-  EXPECT_FALSE(parseMode("shape").has_value());
+  EXPECT_EQ(parseMode("shape"), Mode::Shape);
+  EXPECT_FALSE(parseMode("Shape").has_value());
   EXPECT_EQ(parseTarget("host"), Target::Host);
   EXPECT_FALSE(parseTarget("cuda").has_value());
 }

@@ -14,10 +14,10 @@
 
 namespace texcc::codegen {
 
-enum class Mode { Interp, Inline, Wavefront };
+enum class Mode { Interp, Inline, Wavefront, Shape };
 enum class Target { OpenCL, Host };
 
-/// "interp" | "inline" | "wavefront"; std::nullopt for anything else ("shape" included).
+/// "interp" | "inline" | "wavefront" | "shape"; std::nullopt for anything else.
 std::optional<Mode> parseMode(const std::string &S);
 std::optional<Target> parseTarget(const std::string &S);
 const char *modeName(Mode M);
@@ -35,7 +35,7 @@ struct CodegenOptions {
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).
-constexpr const char *KernelEntry = "texcc_proctex";          // interp, inline
+constexpr const char *KernelEntry = "texcc_proctex";          // interp, inline, shape
 constexpr const char *WavefrontOutputsEntry = "texcc_wf_outputs";
 constexpr const char *HostEntry = "texcc_host_evaluate";     // target host (extern "C")
 /// "texcc_wf_<NodeIndex>".
@@ -43,6 +43,10 @@ std::string wavefrontKernelName(unsigned NodeIndex);
 
 /// "proctex.cl" or "proctex.cpp".
 std::string kernelFileName(Target T);
+/// Shape mode also writes the interp kernel of the same graph (same args.bin, same entry), which
+/// the runtime runs while a new shape's kernel builds (tiered execution): layout.json
+/// kernel.interpFallback.
+constexpr const char *InterpFallbackFile = "proctex.interp.cl";
 
 /// The generated kernel text: header comment, TEXCC_* macros, the verbatim ABI and device
 /// headers (or the host prelude), the user code, then the mode's evaluation code and kernels.
@@ -67,7 +71,8 @@ struct OutputFile {
   std::string Contents;
 };
 
-/// proctex.cl|proctex.cpp, layout.json, args.bin, and graph.dot when DumpGraph.
+/// proctex.cl|proctex.cpp, proctex.interp.cl (shape mode, OpenCL), layout.json, args.bin, and
+/// graph.dot when DumpGraph.
 std::vector<OutputFile> generateOutputs(const graph::CompiledGraph &CG,
                                         const CodegenOptions &Opts, bool DumpGraph);
 

@@ -39,6 +39,7 @@ struct CompiledArg {
   unsigned NodeIndex = 0;     // Source::Node: index into CompiledGraph::Nodes
   int AttrId = -1;            // Source::Attribute: attributeTable() index
   bool Broadcast = false;     // a float value feeding a float2..4 parameter
+  bool Bake = false;          // Source::Constant: a literal in shape code, part of the shape
   /// Source::Constant. Scalars/vectors: Values has componentCount() entries (already
   /// broadcast). Int and sam2D (image index) are stored as floats here and written as int32.
   /// Arrays: Values holds ArrayCount * componentCount(Type.Base) entries, row after row.
@@ -134,6 +135,21 @@ bool validateGraph(const Graph &G, const SignatureMap &Sigs, const CompileOption
 /// the passes and encodes args.bin. std::nullopt when any error was reported.
 std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
                                           const CompileOptions &Opts, DiagnosticSink &Diags);
+
+/// The shape of a material's program (shape mode): per instruction its function and, per
+/// argument, whether it is a constant (a baked one with its value), which earlier instruction
+/// or attribute it reads and whether it is broadcast; then which instructions are the outputs.
+/// Constant values other than baked ones, record offsets and stack slots are not part of it:
+/// materials of equal keys run the same code on their own records.
+std::string shapeKey(const CompiledGraph &CG, const CompiledMaterial &M);
+
+/// The materials that have texture outputs, grouped by shapeKey(), groups in the order of
+/// their first material, materials in index order. Shape k's body is texcc_shape_<k>.
+struct MaterialShape {
+  std::string Key;
+  std::vector<unsigned> Materials;
+};
+std::vector<MaterialShape> groupShapes(const CompiledGraph &CG);
 
 /// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
 std::string layoutJson(const CompiledGraph &CG);

@@ -28,6 +28,9 @@ struct ArgValue {
   std::vector<std::vector<double>> Rows;    // Array of arrays (each row one element)
   bool IsArrayOfRows = false;
   bool IsInteger = false;                   // Number written without fraction/exponent
+  /// `{"value": 3, "bake": true}` or `texcc --bake NODE.ARG`: shape (and inline) code has the
+  /// value as a literal and it is part of the material's shape; interp still reads args.bin.
+  bool Bake = false;
   std::string Ref;                          // NodeRef / AttrRef / ImageRef target
   SourceLoc Loc;                            // where the value starts
   std::string JsonPath;                     // e.g. "/nodes/1/args/stops"
@@ -81,6 +84,11 @@ const std::vector<std::string> &bsdfTypes();
 /// "{\"node\": \"n\"}"), as the live-edit API receives it. Reports errors against File.
 std::optional<ArgValue> parseArgValue(const std::string &File, const std::string &Text,
                                       DiagnosticSink &Diags);
+
+/// Marks the constant argument ARG of node NODE as baked (`texcc --bake NODE.ARG`; the node id
+/// is everything before the last '.'). On an unknown node or argument, or an argument that is
+/// not a number or a vector, returns false and says why in Error.
+bool markBaked(Graph &G, const std::string &NodeDotArg, std::string &Error);
 
 /// Parses graph.json text. Reports malformed JSON (with line:col), wrong value kinds, unknown
 /// keys, duplicate ids, unknown BSDF types and inputs. Returns std::nullopt on any error.

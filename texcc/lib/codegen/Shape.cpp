@@ -1,0 +1,94 @@
+// shape: one straight-line body texcc_shape_<k> per distinct material shape (graph::shapeKey:
+// the program's functions and wiring, not its constant values); materials of one shape share
+// the body. Every unbaked constant is read from the material's own records, found through its
+// program in fakeStack (instruction j's record at word prog + 4 + 3j), so shape mode uses
+// interp's args.bin unchanged and a parameter edit is an upload. Values live in locals: no value
+// stack. Baked arguments ("bake": true, --bake) are literals.
+#include "Emit.h"
+
+#include <unordered_map>
+
+using namespace texcc::graph;
+
+namespace texcc::codegen {
+
+static std::string shapeFunctionName(unsigned K) { return "texcc_shape_" + std::to_string(K); }
+
+static std::string materialList(const CompiledGraph &CG, const MaterialShape &S) {
+  std::string L;
+  for (unsigned M : S.Materials)
+    L += (L.empty() ? "" : ", ") + std::to_string(M) + " '" + CG.Materials[M].Name + "'";
+  return L;
+}
+
+/// Whether the body reads node N's record: an unbaked constant or an array argument.
+static bool readsRecord(const CompiledNode &N) {
+  for (const CompiledArg &A : N.Args)
+    if (A.Src == CompiledArg::Source::Constant && (!A.Bake || A.Type.IsGlobalArray))
+      return true;
+  return false;
+}
+
+/// The body of shape K, written from its first material; locals s<j> and record words r<j> are
+/// named by program position j, which is what the materials of a shape have in common.
+static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
+                          const MaterialShape &S, unsigned K) {
+  const CompiledMaterial &M = CG.Materials[S.Materials.front()];
+  OS << "/* shape " << K << ": " << M.Program.size()
+     << (M.Program.size() == 1 ? " instruction" : " instructions") << "; materials "
+     << materialList(CG, S) << " */\n"
+     << "inline void " << shapeFunctionName(K)
+     << "(const TexccCtx *texcc_ctx, __global const uint *fakeStack,\n"
+     << "    const uint prog, __global float4 *out) {\n";
+  std::unordered_map<unsigned, size_t> Position;
+  ArgEmitter E;
+  E.Tgt = Target::OpenCL;
+  E.BakeConstants = false;
+  E.BakeMarked = true;
+  E.ChildExpr = [&Position](unsigned Child) { return "s" + std::to_string(Position.at(Child)); };
+  E.RecordWord = [&Position](unsigned Node) { return "r" + std::to_string(Position.at(Node)); };
+  for (size_t J = 0; J < M.Program.size(); ++J) {
+    const unsigned NodeIndex = M.Program[J].Node;
+    const CompiledNode &N = CG.Nodes[NodeIndex];
+    Position[NodeIndex] = J;
+    if (readsRecord(N))
+      OS << "  const uint r" << J << " = fakeStack[prog + " << 4 + 3 * J
+         << "u] / 4u; /* the record, in words */\n";
+    OS << "  const " << spelling(N.Return) << " s" << J << " = " << E.call(CG, NodeIndex)
+       << ";\n";
+  }
+  for (size_t O = 0; O < M.Outputs.size(); ++O) {
+    const BaseType T = CG.Nodes[M.Outputs[O].Node].Return;
+    OS << "  out[" << O << "] = "
+       << widenToFloat4(T, "s" + std::to_string(Position.at(M.Outputs[O].Node)), Target::OpenCL)
+       << ";\n";
+  }
+  OS << "}\n\n";
+}
+
+void emitShape(std::ostringstream &OS, const CompiledGraph &CG) {
+  const std::vector<MaterialShape> Shapes = groupShapes(CG);
+  if (!Shapes.empty())
+    emitProgramLocator(OS);
+  for (unsigned K = 0; K < Shapes.size(); ++K)
+    emitShapeBody(OS, CG, Shapes[K], K);
+  OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
+  emitKernelPrologue(OS, "");
+  if (!Shapes.empty())
+    OS << "  __global float4 *out = outputs + gid * TEXCC_MAX_OUTPUTS;\n"
+       << "  const uint prog = texcc_program(fakeStack, mat);\n"
+       << "  switch (mat) {\n";
+  for (unsigned K = 0; K < Shapes.size(); ++K) {
+    for (unsigned Mat : Shapes[K].Materials)
+      OS << "  case " << Mat << ": /* '" << CG.Materials[Mat].Name << "' */\n";
+    OS << "    " << shapeFunctionName(K) << "(texcc_ctx, fakeStack, prog, out);\n"
+       << "    break;\n";
+  }
+  if (!Shapes.empty())
+    OS << "  default:\n"
+       << "    break;\n"
+       << "  }\n";
+  OS << "}\n";
+}
+
+} // namespace texcc::codegen
