@@ -1,6 +1,7 @@
 // texcc-fe: a development driver for the front end alone. Prints the rewritten user code of
 // every file (as it would be pasted into proctex.cl), then the texture signatures as JSON.
 #include "texcc/Frontend/Frontend.h"
+#include "texcc/Frontend/StackGuard.h"
 
 #include "llvm/Support/CommandLine.h"
 #include "llvm/Support/JSON.h"
@@ -38,9 +39,7 @@ static json::Object describe(const texcc::graph::FunctionSignature &Sig,
       {"reachable", strings({Reachable.begin(), Reachable.end()})}};
 }
 
-int main(int argc, char **argv) {
-  cl::HideUnrelatedOptions(FeCategory);
-  cl::ParseCommandLineOptions(argc, argv, "texcc-fe: runs texcc's front end on user textures\n");
+static int run() {
   fe::FrontendOptions Opts;
   Opts.IncludeDirs.assign(IncludeDirs.begin(), IncludeDirs.end());
   Opts.Defines.assign(Defines.begin(), Defines.end());
@@ -57,4 +56,10 @@ int main(int argc, char **argv) {
     Sigs[Name] = describe(Sig, Result->Reachable[Name]);
   outs() << "// texcc-fe signatures:\n" << formatv("{0:2}", json::Value(std::move(Sigs))) << "\n";
   return 0;
+}
+
+int main(int argc, char **argv) {
+  cl::HideUnrelatedOptions(FeCategory);
+  cl::ParseCommandLineOptions(argc, argv, "texcc-fe: runs texcc's front end on user textures\n");
+  return fe::runWithLargeStack(run, "texcc-fe");
 }

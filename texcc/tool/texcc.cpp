@@ -3,6 +3,7 @@
 #include "texcc/Codegen/Codegen.h"
 #include "texcc/Config.h"
 #include "texcc/Frontend/Frontend.h"
+#include "texcc/Frontend/StackGuard.h"
 #include "texcc/Graph/Compile.h"
 #include "texcc/Graph/Graph.h"
 #include "texcc/Version.h"
@@ -72,6 +73,8 @@ static int fail(const std::string &Message) {
 }
 
 static bool readFile(const std::string &Path, std::string &Text) {
+  if (fs::is_directory(Path)) // an ifstream opens a folder, and reads it as an empty file
+    return false;
   std::ifstream IS(Path, std::ios::binary);
   if (!IS)
     return false;
@@ -130,7 +133,8 @@ static int run() {
 
   std::string GraphText;
   if (!readFile(GraphPath, GraphText))
-    return fail("cannot read graph '" + GraphPath + "'");
+    return fail("cannot read graph '" + GraphPath + "'" +
+                (fs::is_directory(GraphPath.getValue()) ? ": it is a folder" : ""));
   gr::DiagnosticSink GraphDiags;
   std::optional<gr::Graph> G = gr::parseGraph(GraphPath, GraphText, GraphDiags);
   GraphDiags.print(std::cerr);
@@ -191,5 +195,5 @@ int main(int argc, char **argv) {
   cl::ParseCommandLineOptions(argc, argv,
                               "texcc: compiles procedural textures (OpenCL C) and a node graph "
                               "into an OpenCL kernel\n");
-  return run();
+  return texcc::frontend::runWithLargeStack(run, "texcc");
 }

@@ -50,6 +50,11 @@ public:
 
   std::optional<Value> run() {
     Value V;
+    // A UTF-8 byte-order mark (some editors write one) is skipped, as RFC 8259 allows;
+    // columns on line 1 still count its bytes.
+    if (Text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+      for (int I = 0; I < 3; ++I)
+        advance();
     skipSpace();
     if (Failed)
       return std::nullopt;
@@ -140,14 +145,18 @@ private:
     return fail(here(), "expected a JSON value, got " + describeHere());
   }
 
-  bool parseWord(Value &V) {
+  /// A bare word; a number's sign may come before it (Sign, at SignLoc), so that "-Infinity"
+  /// is quoted whole, where it starts.
+  bool parseWord(Value &V, const std::string &Sign = "", std::optional<SourceLoc> SignLoc = {}) {
     if (peek() == '\'')
       return fail(here(), "strings must use double quotes");
     size_t Start = Pos;
-    SourceLoc L = here();
+    SourceLoc L = SignLoc ? *SignLoc : here();
     while (!atEnd() && (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '_'))
       advance();
     std::string Word = Text.substr(Start, Pos - Start);
+    if (!Sign.empty())
+      Word = Sign + Word;
     if (Word == "true" || Word == "false") {
       V.K = Value::Kind::Bool;
       V.Bool = Word == "true";
@@ -157,8 +166,9 @@ private:
       V.K = Value::Kind::Null;
       return true;
     }
-    if (Word == "NaN" || Word == "nan" || Word == "Infinity" || Word == "inf" ||
-        Word == "infinity")
+    std::string Unsigned = Sign.empty() ? Word : Word.substr(Sign.size());
+    if (Unsigned == "NaN" || Unsigned == "nan" || Unsigned == "Infinity" || Unsigned == "inf" ||
+        Unsigned == "infinity")
       return fail(L, "'" + Word + "' is not a number: graph values must be finite");
     return fail(L, "unexpected '" + Word + "'; expected a JSON value");
   }
@@ -171,7 +181,7 @@ private:
       advance();
     if (std::isalpha(static_cast<unsigned char>(peek()))) {
       Value Dummy;
-      return parseWord(Dummy) && fail(L, "invalid number");
+      return parseWord(Dummy, "-", L) && fail(L, "invalid number");
     }
     if (peek() == '0') {
       advance();
@@ -208,8 +218,17 @@ private:
     V.IsInteger = Integer;
     V.Number = std::strtod(V.Text.c_str(), nullptr);
     if (!std::isfinite(V.Number))
-      return fail(L, "number '" + V.Text + "' is out of range");
+      return fail(L, "number " + quotedNumber(V.Text) + " is out of range");
     return true;
+  }
+
+  /// A number as written, or for a very long one its ends and its length: a diagnostic stays
+  /// one readable line.
+  static std::string quotedNumber(const std::string &Number) {
+    if (Number.size() <= 40)
+      return "'" + Number + "'";
+    return "'" + Number.substr(0, 16) + "..." + Number.substr(Number.size() - 8) + "' (" +
+           std::to_string(Number.size()) + " characters)";
   }
 
   static void appendUtf8(std::string &Out, unsigned CP) {

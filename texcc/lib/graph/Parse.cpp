@@ -7,6 +7,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <unordered_map>
 
 namespace texcc::graph {
@@ -67,6 +68,20 @@ std::string pointerSegment(const std::string &Key) {
 class GraphParser {
 public:
   GraphParser(const std::string &Path, DiagnosticSink &Diags) : Path(Path), Diags(Diags) {}
+
+  /// Ids and material names are copied into the generated code's comments and into one-line
+  /// diagnostics: "" when Name is safe there, else what is wrong with it.
+  static std::string unprintableName(const std::string &Name) {
+    for (unsigned char C : Name)
+      if (C < 0x20 || C == 0x7f) {
+        char Buf[48];
+        std::snprintf(Buf, sizeof Buf, "a control character (U+%04X)", C);
+        return Buf;
+      }
+    if (Name.find("*/") != std::string::npos)
+      return "'*/' (it would end a comment of the generated kernel)";
+    return "";
+  }
 
   void error(const SourceLoc &L, const std::string &JsonPath, const std::string &Msg) {
     Diags.error(L, Msg + " [" + (JsonPath.empty() ? "/" : JsonPath) + "]");
@@ -263,6 +278,9 @@ private:
       if (N.Id.empty()) {
         error(Id->Loc, JsonPath + "/id", "a node id must not be empty");
         Ok = false;
+      } else if (std::string Why = unprintableName(N.Id); !Why.empty()) {
+        error(Id->Loc, JsonPath + "/id", "a node id must not contain " + Why);
+        Ok = false;
       }
     } else {
       Ok = false;
@@ -430,6 +448,10 @@ private:
       Material Mat;
       Mat.Name = M.Key;
       Mat.Loc = M.KeyLoc;
+      if (std::string Why = unprintableName(M.Key); !Why.empty()) {
+        error(M.KeyLoc, "/materials", "a material name must not contain " + Why);
+        Ok = false;
+      }
       Ok &= parseBsdf(*M.Val, "/materials/" + pointerSegment(M.Key),
                       "material '" + M.Key + "'", Mat.Root);
       G.Materials.push_back(std::move(Mat));

@@ -217,8 +217,10 @@ private:
       return mismatch(N, P, A, "; bind an image with {\"image\": name}");
     if (A.K == ArgValue::Kind::Number) {
       double V = A.Numbers.front();
-      if (B == BaseType::Int && (V != std::floor(V) || std::fabs(V) > 2147483647.0))
+      if (B == BaseType::Int && V != std::floor(V))
         return mismatch(N, P, A, " (" + json::formatNumber(V) + " is not an int)");
+      if (B == BaseType::Int && std::fabs(V) > 2147483647.0)
+        return mismatch(N, P, A, " (" + json::formatNumber(V) + " is outside the 32-bit int range)");
       CA.Values.assign(componentCount(B), V);
       return true;
     }
@@ -425,9 +427,17 @@ private:
     size_t First = 0;
     while (Stack[First].first != Target)
       ++First;
+    // A long cycle prints its first and last nodes only: the diagnostic stays one line.
+    const size_t Length = Stack.size() - First, Ends = 8;
     std::string Path;
-    for (size_t I = First; I < Stack.size(); ++I)
+    for (size_t I = First; I < Stack.size(); ++I) {
+      if (Length > 2 * Ends && I == First + Ends) {
+        Path += "... (" + std::to_string(Length - 2 * Ends) + " more) -> ";
+        I = Stack.size() - Ends - 1;
+        continue;
+      }
       Path += "'" + CG.Nodes[Stack[I].first].Id + "' -> ";
+    }
     Path += "'" + CG.Nodes[Target].Id + "'";
     const Node &N = G.Nodes[Target];
     error(N.IdLoc.Line ? N.IdLoc : N.Loc, "cycle in the node graph: " + Path,

@@ -1,0 +1,45 @@
+"""Runs a command and succeeds only if it exited with exactly the expected status.
+
+  check_exit.py CODE [--empty DIR]... [--timeout S] -- COMMAND [ARG...]
+
+lit's `not` accepts any non-zero status; the reliability corpus wants exactly 1 (an error
+reported), never a signal (a crash) or a hang. The command's stdout and stderr pass through.
+--empty DIR: DIR must be missing or empty afterwards (no partial output, no temporaries).
+"""
+import os
+import subprocess
+import sys
+
+
+def main():
+    args = sys.argv[1:]
+    if "--" not in args:
+        sys.exit("check_exit.py: usage: CODE [--empty DIR]... [--timeout S] -- COMMAND...")
+    split = args.index("--")
+    opts, command = args[:split], args[split + 1:]
+    expected, empty_dirs, timeout = int(opts[0]), [], 25.0
+    rest = opts[1:]
+    while rest:
+        flag, value, rest = rest[0], rest[1], rest[2:]
+        if flag == "--empty":
+            empty_dirs.append(value)
+        elif flag == "--timeout":
+            timeout = float(value)
+        else:
+            sys.exit(f"check_exit.py: unknown option {flag}")
+    try:
+        status = subprocess.run(command, timeout=timeout).returncode
+    except subprocess.TimeoutExpired:
+        sys.exit(f"check_exit.py: '{command[0]}' did not finish within {timeout:g} s (a hang)")
+    if status < 0:
+        sys.exit(f"check_exit.py: '{command[0]}' was killed by signal {-status} (a crash)")
+    if status != expected:
+        sys.exit(f"check_exit.py: '{command[0]}' exited with {status}, expected {expected}")
+    for d in empty_dirs:
+        left = sorted(os.listdir(d)) if os.path.isdir(d) else []
+        if left:
+            sys.exit(f"check_exit.py: {d} is not empty: {', '.join(left)}")
+
+
+if __name__ == "__main__":
+    main()
