@@ -11,6 +11,7 @@ import tempfile
 import time
 
 import accuracy
+import ao
 import common
 import edits
 import report
@@ -19,7 +20,7 @@ import stability
 import table1
 
 FIGURES = [("table1", table1), ("edits", edits), ("resources", resources),
-           ("accuracy", accuracy), ("stability", stability)]
+           ("accuracy", accuracy), ("stability", stability), ("ao", ao)]
 
 
 def main():

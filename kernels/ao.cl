@@ -1,10 +1,32 @@
-/* ao.cl: ambient occlusion as two kernels. ao_trace runs numActive * aoSamples work-items in one
- * launch (work-item k traces AO ray k % aoSamples of hit k / aoSamples: cosine-weighted around
- * the shading normal, any-hit, up to aoDistance; only hits whose material's textures read AO
- * trace, the other work-items return at once); ao_reduce averages each hit's rays into
- * TexccHitAttrs.uvAO.z (1 = unoccluded) and counts the AO rays traced. */
+/* ao.cl: ambient occlusion. The default is two kernels: ao_trace runs numActive * aoSamples
+ * work-items in one launch (work-item k traces AO ray k % aoSamples of hit k / aoSamples:
+ * cosine-weighted around the shading normal, any-hit, up to aoDistance; only hits whose
+ * material's textures read AO trace, the other work-items return at once); ao_reduce averages
+ * each hit's rays into TexccHitAttrs.uvAO.z (1 = unoccluded) and counts the AO rays traced.
+ * ao_loop is the alternative the paper argues against, kept to measure it (texrender
+ * --ao-method=loop): one work-item per hit traces its aoSamples rays in a loop. Both trace
+ * the very same rays (ao_occluded), so the images are identical. */
 #include "rt_bvh.h"
 #include "rt_surface.h"
+
+/* Whether hit i's material reads AO (the other hits trace no AO rays). */
+inline bool ao_wanted(RtHit h, __global const RtTriAttr *triAttrs, __global const RtMesh *meshes,
+                      __global const RtMaterial *materials) {
+  return h.tri >= 0 && materials[meshes[triAttrs[h.tri].mesh].material].readsAo;
+}
+
+/* AO ray j of the path p's hit h: 1 if it hits something within aoDistance. */
+inline int ao_occluded(__global const RtBvhNode *nodes, __global const RtTri *tris,
+                       __global const RtTriAttr *triAttrs, __global const RtPath *p, RtHit h,
+                       int j, float aoDistance, float eps, uint seed) {
+  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
+  uint rng = rt_seed(p->rng, (uint)j, seed ^ 0xA0A0A0A0u);
+  float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
+  float3 dir = rt_to_world(rt_sample_cosine(u1, u2), s.ns);
+  float3 o = rt_offset(s, dir, eps);
+  RtHit ah = rt_trace(nodes, tris, o, dir, 0.0f, aoDistance, 1);
+  return ah.tri >= 0 ? 1 : 0;
+}
 
 __kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tris,
                        __global const RtTriAttr *triAttrs, __global const RtPath *paths,
@@ -18,18 +40,12 @@ __kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tr
   int i = k / aoSamples;
   int j = k % aoSamples;
   RtHit h = hits[i];
-  if (h.tri < 0 || !materials[meshes[triAttrs[h.tri].mesh].material].readsAo) {
+  if (!ao_wanted(h, triAttrs, meshes, materials)) {
     occluded[k] = 0;
     return;
   }
-  __global const RtPath *p = &paths[active[i]];
-  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
-  uint rng = rt_seed(p->rng, (uint)j, seed ^ 0xA0A0A0A0u);
-  float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
-  float3 dir = rt_to_world(rt_sample_cosine(u1, u2), s.ns);
-  float3 o = rt_offset(s, dir, eps);
-  RtHit ah = rt_trace(nodes, tris, o, dir, 0.0f, aoDistance, 1);
-  occluded[k] = ah.tri >= 0 ? 1 : 0;
+  occluded[k] = (uchar)ao_occluded(nodes, tris, triAttrs, &paths[active[i]], h, j, aoDistance,
+                                   eps, seed);
 }
 
 __kernel void ao_reduce(__global const uchar *occluded, __global const RtHit *hits,
@@ -37,12 +53,30 @@ __kernel void ao_reduce(__global const uchar *occluded, __global const RtHit *hi
                         __global const RtMaterial *materials, int numActive, int aoSamples,
                         __global TexccHitAttrs *attrs, __global uint *counters) {
   int i = get_global_id(0);
-  if (i >= numActive || hits[i].tri < 0 ||
-      !materials[meshes[triAttrs[hits[i].tri].mesh].material].readsAo)
+  if (i >= numActive || !ao_wanted(hits[i], triAttrs, meshes, materials))
     return;
   atomic_add(&counters[RT_COUNT_AO_RAYS], (uint)aoSamples);
   int n = 0;
   for (int j = 0; j < aoSamples; ++j)
     n += occluded[i * aoSamples + j];
+  attrs[i].uvAO.z = 1.0f - (float)n / (float)aoSamples;
+}
+
+__kernel void ao_loop(__global const RtBvhNode *nodes, __global const RtTri *tris,
+                      __global const RtTriAttr *triAttrs, __global const RtPath *paths,
+                      __global const int *active, int numActive, __global const RtHit *hits,
+                      __global const RtMesh *meshes, __global const RtMaterial *materials,
+                      int aoSamples, float aoDistance, float eps, uint seed,
+                      __global TexccHitAttrs *attrs, __global uint *counters) {
+  int i = get_global_id(0);
+  if (i >= numActive)
+    return;
+  RtHit h = hits[i];
+  if (!ao_wanted(h, triAttrs, meshes, materials))
+    return;
+  atomic_add(&counters[RT_COUNT_AO_RAYS], (uint)aoSamples);
+  int n = 0;
+  for (int j = 0; j < aoSamples; ++j)
+    n += ao_occluded(nodes, tris, triAttrs, &paths[active[i]], h, j, aoDistance, eps, seed);
   attrs[i].uvAO.z = 1.0f - (float)n / (float)aoSamples;
 }

@@ -39,7 +39,7 @@ struct KernelFile {
 const std::vector<KernelFile> &fixedKernels() {
   static const std::vector<KernelFile> Files = {
       {"raygen.cl", {"raygen"}},       {"closest_hit.cl", {"closest_hit"}},
-      {"hit_attributes.cl", {"hit_attributes"}}, {"ao.cl", {"ao_trace", "ao_reduce"}},
+      {"hit_attributes.cl", {"hit_attributes"}}, {"ao.cl", {"ao_trace", "ao_reduce", "ao_loop"}},
       {"shade.cl", {"shade"}},         {"shadow.cl", {"shadow"}},
       {"compact.cl", {"compact"}},     {"accumulate.cl", {"accumulate"}}};
   return Files;
@@ -196,7 +196,7 @@ void Renderer::allocateWorkBuffers(size_t N) {
                          : Lay.Spill             ? Lay.StackSlots
                                                  : 0;
   B["textureScratch"] = Cl->allocate("textureScratch", std::max<size_t>(1, N * ScratchPerHit) * sizeof(cl_float4), RW);
-  if (runsAo())
+  if (runsAo() && !Opts.AoPerHitLoop)
     B["aoOccluded"] = Cl->allocate("aoOccluded", N * Settings.AoSamples, RW);
   Capacity = N;
   CapacityAo = Settings.AoSamples;
@@ -240,24 +240,8 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
       HA.setArg(10, B["hitMaterial"]);
       Cl->launch(HA, Count, "hit_attributes");
     }
-    if (runsAo()) {
-      cl::Kernel &AT = K["ao_trace"];
-      AT.setArg(0, B["bvhNodes"]), AT.setArg(1, B["triangles"]);
-      AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Cur);
-      AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, B["meshes"]);
-      AT.setArg(8, B["materials"]), AT.setArg(9, cl_int(Settings.AoSamples));
-      AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_float(1e-4f));
-      AT.setArg(12, cl_uint(Settings.Seed)), AT.setArg(13, B["aoOccluded"]);
-      Cl->launch(AT, size_t(Count) * Settings.AoSamples, "ao_trace");
-      Stats.AoWorkItemsPerLaunchMax =
-          std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, uint64_t(Count) * Settings.AoSamples);
-      cl::Kernel &AR = K["ao_reduce"];
-      AR.setArg(0, B["aoOccluded"]), AR.setArg(1, B["hits"]), AR.setArg(2, B["triangleAttributes"]);
-      AR.setArg(3, B["meshes"]), AR.setArg(4, B["materials"]), AR.setArg(5, cl_int(Count));
-      AR.setArg(6, cl_int(Settings.AoSamples)), AR.setArg(7, B["hitAttributes"]);
-      AR.setArg(8, B["counters"]);
-      Cl->launch(AR, Count, "ao_reduce");
-    }
+    if (runsAo())
+      runAo(Cur, Count, Stats);
     if (StopAfterAttributes)
       return 1;
     if (HasTextureWork)

@@ -34,8 +34,11 @@ json frameJson(const FrameStats &F) {
       {"primary", rayJson(F.PrimaryRays, kernelSeconds(F, "closest_hit_primary"))},
       {"bounce", rayJson(F.BounceRays, kernelSeconds(F, "closest_hit_bounce"))},
       {"shadow", rayJson(F.ShadowRays, kernelSeconds(F, "shadow"))},
-      {"ao", rayJson(F.AoRays, kernelSeconds(F, "ao_trace"))}};
+      {"ao", rayJson(F.AoRays, kernelSeconds(F, "ao_trace") + kernelSeconds(F, "ao_loop"))}};
+  // The AO rays are traced by ao_trace, or by ao_loop with --ao-method=loop.
   auto AO = F.Kernels.find("ao_trace");
+  if (AO == F.Kernels.end())
+    AO = F.Kernels.find("ao_loop");
   J["ao"] = {{"launches", AO == F.Kernels.end() ? 0u : AO->second.Launches},
              {"workItems", AO == F.Kernels.end() ? 0ull : (unsigned long long)AO->second.WorkItems},
              {"maxWorkItemsPerLaunch", F.AoWorkItemsPerLaunchMax}};

@@ -30,6 +30,8 @@ const char *Usage =
     "  --size WxH           image size\n"
     "  --max-depth N        path length, Mitsuba's max_depth (1 = emitters, 2 = direct, -1 = unlimited)\n"
     "  --ao-samples N       AO rays per hit      --ao-distance D   AO ray length\n"
+    "  --ao-method=parallel|loop  parallel (default): one work-item per AO ray, all rays of\n"
+    "                       all hits in one launch; loop: one work-item per hit (to compare)\n"
     "  --seed N             random seed\n"
     "  --set NODE.ARG=VALUE live edit before rendering (repeatable)\n"
     "  --edit-script FILE   render, then per line apply an edit (set NODE.ARG=VALUE |\n"
@@ -51,7 +53,7 @@ struct Options {
   std::optional<float> AoDistance;
   std::vector<std::string> Sets;
   int Device = 0;
-  bool Quiet = false, ListDevices = false;
+  bool Quiet = false, ListDevices = false, AoLoop = false;
   TierPolicy Tier = TierPolicy::Auto;
 };
 
@@ -141,6 +143,11 @@ Options parseArgs(int Argc, char **Argv) {
       O.Device = toInt(A, Next());
     } else if (A == "--list-devices") {
       O.ListDevices = true;
+    } else if (A == "--ao-method") {
+      std::string M = Next();
+      if (M != "parallel" && M != "loop")
+        throw Error("--ao-method: expected parallel or loop, got '" + M + "'");
+      O.AoLoop = M == "loop";
     } else if (A == "--stats") {
       O.Stats = Next();
     } else if (A == "--variance") {
@@ -256,6 +263,7 @@ int run(int Argc, char **Argv) {
   RO.CacheDir = O.CacheDir;
   RO.KernelDir = O.KernelDir;
   RO.Progress = !O.Quiet && isatty(2);
+  RO.AoPerHitLoop = O.AoLoop;
   RO.Tier = O.Tier;
   Renderer R(S, L, RO);
   std::unique_ptr<LiveEditor> Editor;

@@ -29,6 +29,10 @@ struct RendererOptions {
   bool Progress = false;        // a progress bar on stderr (after one second)
   size_t MaxPathsPerPass = 1u << 18;
   TierPolicy Tier = TierPolicy::Auto; // shape-mode layouts only (TextureTiers.h)
+  /// --ao-method=loop: one work-item per hit loops over its AO rays (ao_loop) instead of one
+  /// work-item per AO ray (ao_trace + ao_reduce). Same rays, same image; kept to measure the
+  /// paper's claim that the parallel launch is faster (bench/ao.py).
+  bool AoPerHitLoop = false;
 };
 
 /// Counts of one frame.
@@ -119,6 +123,8 @@ private:
   void adoptReadyBuild();
   void adopt(TierBuildResult &R);
   int traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes);
+  /// AO of the Count hits of the active list: ao_trace + ao_reduce, or ao_loop.
+  void runAo(const cl::Buffer &Active, int Count, FrameStats &Stats);
   void runTextures(int NumActive);
   void setSceneArgs();
   std::string programOptions() const;

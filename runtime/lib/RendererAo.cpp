@@ -1,0 +1,39 @@
+// Ambient occlusion of a Renderer: by default every AO ray of every hit in one launch
+// (ao_trace, hits x aoSamples work-items) and a reduction (ao_reduce), as the paper proposes;
+// with RendererOptions::AoPerHitLoop the per-hit loop it argues against (ao_loop), which
+// traces the same rays and gives the same AO, so that the two can be timed on one image.
+
+#include "texrender/Renderer.h"
+
+#include <algorithm>
+
+namespace texrender {
+
+void Renderer::runAo(const cl::Buffer &Active, int Count, FrameStats &Stats) {
+  const cl_int Samples = Settings.AoSamples;
+  cl::Kernel &AT = K[Opts.AoPerHitLoop ? "ao_loop" : "ao_trace"];
+  AT.setArg(0, B["bvhNodes"]), AT.setArg(1, B["triangles"]);
+  AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Active);
+  AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, B["meshes"]);
+  AT.setArg(8, B["materials"]), AT.setArg(9, Samples);
+  AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_float(1e-4f));
+  AT.setArg(12, cl_uint(Settings.Seed));
+  if (Opts.AoPerHitLoop) {
+    AT.setArg(13, B["hitAttributes"]), AT.setArg(14, B["counters"]);
+    Cl->launch(AT, size_t(Count), "ao_loop");
+    Stats.AoWorkItemsPerLaunchMax = std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, Count);
+    return;
+  }
+  AT.setArg(13, B["aoOccluded"]);
+  Cl->launch(AT, size_t(Count) * Samples, "ao_trace");
+  Stats.AoWorkItemsPerLaunchMax =
+      std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, uint64_t(Count) * Samples);
+  cl::Kernel &AR = K["ao_reduce"];
+  AR.setArg(0, B["aoOccluded"]), AR.setArg(1, B["hits"]), AR.setArg(2, B["triangleAttributes"]);
+  AR.setArg(3, B["meshes"]), AR.setArg(4, B["materials"]), AR.setArg(5, cl_int(Count));
+  AR.setArg(6, Samples), AR.setArg(7, B["hitAttributes"]);
+  AR.setArg(8, B["counters"]);
+  Cl->launch(AR, Count, "ao_reduce");
+}
+
+} // namespace texrender
