@@ -33,6 +33,24 @@ std::string readMaybeGzipped(const std::string &Path) {
   return Out;
 }
 
+/// Blanks the `vw` (skin weight) lines, keeping their line breaks so that tinyobjloader's line
+/// numbers stay right. They are a tinyobjloader extension that texrender never reads, and its
+/// parser converts their joint ids from float to int unchecked: "vw 0 1e38 1" is undefined
+/// behaviour inside it (found by fuzz-obj). Lines end at '\n' or '\r', as tinyobjloader's do.
+void blankSkinWeightLines(std::string &Text) {
+  size_t Begin = 0;
+  while (Begin < Text.size()) {
+    size_t End = Text.find_first_of("\r\n", Begin);
+    if (End == std::string::npos)
+      End = Text.size();
+    size_t First = Text.find_first_not_of(" \t", Begin);
+    if (First != std::string::npos && First + 2 < End && Text.compare(First, 2, "vw") == 0 &&
+        (Text[First + 2] == ' ' || Text[First + 2] == '\t'))
+      Text.replace(Begin, End - Begin, End - Begin, ' ');
+    Begin = End + 1;
+  }
+}
+
 Vec3 sub(const Vec3 &A, const Vec3 &B) { return {A[0] - B[0], A[1] - B[1], A[2] - B[2]}; }
 Vec3 cross(const Vec3 &A, const Vec3 &B) {
   return {A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
@@ -77,6 +95,7 @@ void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
 
 TriangleMesh loadObj(const std::string &Path) {
   std::string Text = readMaybeGzipped(Path);
+  blankSkinWeightLines(Text);
   tinyobj::ObjReaderConfig Cfg;
   Cfg.triangulate = true;
   Cfg.vertex_color = false;
