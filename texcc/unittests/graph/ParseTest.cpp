@@ -123,7 +123,7 @@ TEST(Parse, WrongKindsAndUnknownKeys) {
   EXPECT_EQ(parseErrors(R"({"texcc": 1, "nodes": [{"id": "a", "fn": "f",
       "args": {"x": "0.5"}}], "materials": {}})"),
             "g.json:2:21: error: expected a number, an array, or an object with 'node', "
-            "'attr' or 'image'; got a string [/nodes/0/args/x]\n");
+            "'attr', 'image' or 'value'; got a string [/nodes/0/args/x]\n");
   EXPECT_EQ(parseErrors(R"({"texcc": 1, "nodes": [{"id": "a", "fn": "f",
       "args": {"x": {"nod": "b"}}}], "materials": {}})"),
             "g.json:2:22: error: unknown key 'nod' in reference; expected 'node', 'attr' or "
@@ -191,6 +191,26 @@ TEST(Parse, ArgValueText) {
   EXPECT_EQ(V->Numbers, std::vector<double>{0.5});
   EXPECT_FALSE(parseArgValue("n.x", "[1,", D));
   EXPECT_EQ(text(D), "n.x:1:4: error: expected a value or ']', got end of file\n");
+}
+
+TEST(Parse, BakedArguments) {
+  // {"value": v, "bake": b}: the value's own kind, marked or not; "bake" defaults to false.
+  DiagnosticSink D;
+  auto V = parseArgValue("e", R"({"value": [1, 0, 0], "bake": true})", D);
+  ASSERT_TRUE(V);
+  EXPECT_EQ(V->K, ArgValue::Kind::Vector);
+  EXPECT_TRUE(V->Bake);
+  V = parseArgValue("e", R"({"value": 2})", D);
+  ASSERT_TRUE(V);
+  EXPECT_EQ(V->K, ArgValue::Kind::Number);
+  EXPECT_TRUE(V->IsInteger);
+  EXPECT_FALSE(V->Bake);
+  V = parseArgValue("e", "3", D);
+  ASSERT_TRUE(V);
+  EXPECT_FALSE(V->Bake);
+  EXPECT_EQ(text(D), "");
+  EXPECT_FALSE(parseArgValue("n.x", R"({"value": 2, "bake": "yes"})", D));
+  EXPECT_EQ(text(D), "n.x:1:22: error: 'bake' must be true or false, got a string [/bake]\n");
 }
 
 } // namespace
