@@ -37,6 +37,9 @@ const char *Usage =
     "  --edit-script FILE   render, then per line apply an edit (set NODE.ARG=VALUE |\n"
     "                       rewire NODE.ARG=SOURCE | wait) and render again; frame k is also\n"
     "                       written as OUT.frameK.EXT\n"
+    "  --interactive        render, then read edits from standard input (same lines as an\n"
+    "                       edit script; 'quit' or end of input stops): each is applied,\n"
+    "                       the frame re-rendered into OUT, its edit-to-frame latency printed\n"
     "  --tier=auto|interp|shape  shape-mode textures: auto renders with the interp fallback\n"
     "                       while the shape kernel builds in the background; interp: the\n"
     "                       fallback only; shape: wait for the shape kernel's build\n"
@@ -53,7 +56,7 @@ struct Options {
   std::optional<float> AoDistance;
   std::vector<std::string> Sets;
   int Device = 0;
-  bool Quiet = false, ListDevices = false, AoLoop = false;
+  bool Quiet = false, ListDevices = false, AoLoop = false, Interactive = false;
   TierPolicy Tier = TierPolicy::Auto;
 };
 
@@ -148,6 +151,8 @@ Options parseArgs(int Argc, char **Argv) {
       if (M != "parallel" && M != "loop")
         throw Error("--ao-method: expected parallel or loop, got '" + M + "'");
       O.AoLoop = M == "loop";
+    } else if (A == "--interactive") {
+      O.Interactive = true;
     } else if (A == "--stats") {
       O.Stats = Next();
     } else if (A == "--variance") {
@@ -231,6 +236,59 @@ private:
   double WaitSeconds = 0;
 };
 
+/// Applies E to the renderer and renders the next frame (Image), counting its builds.
+FrameRecord renderAfterEdit(const Edit &E, LiveEditor &Editor, Renderer &R, BuildCounter &Builds,
+                            std::vector<float> &Image) {
+  FrameRecord F;
+  F.EditText = E.Text;
+  EditResult Res = Editor.apply(E, R);
+  F.EditSeconds = Res.Seconds;
+  F.IdleSeconds = Res.IdleSeconds;
+  F.Rebuilt = Res.Rebuilt;
+  F.BackgroundRebuild = Res.Background;
+  Image = R.render(F.Frame);
+  Builds.record(F);
+  return F;
+}
+
+/// One line on standard output per interactive frame: what the edit cost until the frame was
+/// there, split, and whether it built a kernel.
+void printLatency(size_t K, const FrameRecord &F) {
+  std::printf("frame %zu: '%s': edit %.4f s + frame %.4f s = %.4f s to frame; %u kernel "
+              "build(s) waited for%s%s\n",
+              K, F.EditText.c_str(), F.EditSeconds, F.Frame.Seconds, F.EditSeconds + F.Frame.Seconds,
+              F.KernelBuilds, F.Frame.Tier.empty() ? "" : "; tier ", F.Frame.Tier.c_str());
+  std::fflush(stdout);
+}
+
+/// --interactive: edits from standard input until 'quit' or its end. A bad edit is reported
+/// and skipped (the session goes on); the image OUT is rewritten after every frame.
+void interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Renderer &R,
+                        BuildCounter &Builds, std::vector<float> &Image,
+                        std::vector<FrameRecord> &Frames) {
+  const bool Tty = isatty(0);
+  std::string Line;
+  for (;;) {
+    if (Tty)
+      std::fprintf(stderr, "edit> ");
+    if (!std::getline(std::cin, Line))
+      break;
+    size_t B = Line.find_first_not_of(" \t\r");
+    if (B == std::string::npos || Line[B] == '#')
+      continue;
+    if (Line.compare(B, 4, "quit") == 0)
+      break;
+    try {
+      Frames.push_back(renderAfterEdit(parseEdit(Line), Editor, R, Builds, Image));
+    } catch (const Error &E) {
+      std::fprintf(stderr, "texrender: error: %s\n", E.what());
+      continue;
+    }
+    printLatency(Frames.size() - 1, Frames.back());
+    writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
+  }
+}
+
 int run(int Argc, char **Argv) {
   double T0 = now();
   Options O = parseArgs(Argc, Argv);
@@ -267,7 +325,7 @@ int run(int Argc, char **Argv) {
   RO.Tier = O.Tier;
   Renderer R(S, L, RO);
   std::unique_ptr<LiveEditor> Editor;
-  if (!Sets.empty() || !Script.empty())
+  if (!Sets.empty() || !Script.empty() || O.Interactive)
     Editor = std::make_unique<LiveEditor>(L);
 
   std::vector<FrameRecord> Frames;
@@ -287,19 +345,12 @@ int run(int Argc, char **Argv) {
   if (!Script.empty())
     writeImage(frameName(O.Output, 0), S.Render.Width, S.Render.Height, Image);
   for (size_t K = 0; K < Script.size(); ++K) {
-    FrameRecord F;
-    F.EditText = Script[K].Text;
-    EditResult Res = Editor->apply(Script[K], R);
-    F.EditSeconds = Res.Seconds;
-    F.IdleSeconds = Res.IdleSeconds;
-    F.Rebuilt = Res.Rebuilt;
-    F.BackgroundRebuild = Res.Background;
-    Image = R.render(F.Frame);
-    Builds.record(F);
-    Frames.push_back(F);
+    Frames.push_back(renderAfterEdit(Script[K], *Editor, R, Builds, Image));
     writeImage(frameName(O.Output, K + 1), S.Render.Width, S.Render.Height, Image);
   }
   writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
+  if (O.Interactive)
+    interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty()) {
     std::ofstream Out(O.Stats);
     if (!Out)
