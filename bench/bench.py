@@ -13,13 +13,15 @@ import time
 import accuracy
 import ao
 import common
+import edit_session
 import edits
 import report
 import resources
 import stability
 import table1
 
-FIGURES = [("table1", table1), ("edits", edits), ("resources", resources),
+FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
+           ("resources", resources),
            ("accuracy", accuracy), ("stability", stability), ("ao", ao)]
 
 

@@ -163,6 +163,66 @@ def edits_section(d):
     return lines
 
 
+def edit_session_section(d):
+    if not d:
+        return ["## 2b. A 20-edit session per mode", "", "Not measured yet (`bench/run --only "
+                "edit_session`).", ""]
+    lines = ["## 2b. A 20-edit session per mode, tiered shape execution", "",
+             "`bench/inputs/edit/session.txt` on the atrium with rust "
+             "(`graph-session.json`), %s, 1 spp, one `texrender --edit-script` process per "
+             "configuration, edits applied back to back (each followed by one frame): 14 "
+             "argument edits, 5 rewirings over the kernel's functions (each changes a shape), "
+             "1 rewiring onto a function no kernel has yet. Edit to frame = texrender's "
+             "editSeconds + renderSeconds per frame (wall clock). A frame *waits* when a "
+             "texture-kernel build ran in the foreground before it. PoCL's kernel cache off, "
+             "texrender's program cache holding only the fixed kernels at the start." % d["size"],
+             "", "| configuration | total (20 edits) | median | worst (edit) | frames that "
+             "waited for a build | builds: foreground + background | frames per tier |",
+             "|---|---|---|---|---|---|---|"]
+    for r in d["rows"]:
+        tiers = {}
+        for t in r["tiers"]:
+            tiers[t] = tiers.get(t, 0) + 1
+        lines.append("| %s | **%s s** | %s s | %s s (`%s`) | %s | %d + %d | %s |" % (
+            r["mode"], fmt(r["totalSeconds"]), fmt(r["medianSeconds"]), fmt(r["worstSeconds"]),
+            r["worstEdit"], ", ".join("%d" % i for i in r["framesWaiting"]) or "none",
+            r["foregroundBuilds"], r["backgroundBuilds"],
+            ", ".join("%s %d" % kv for kv in sorted(tiers.items()))))
+    lines += [""] + edit_session_notes(d) + per_hit_lines(d)
+    return lines
+
+
+def edit_session_notes(d):
+    rows = {r["mode"]: r for r in d["rows"]}
+    tiered = rows.get("shape+tiered")
+    if not tiered:
+        return []
+    waits = [f for f in tiered["frames"] if f["kernelBuilds"] or f["buildWaitSeconds"] > 0]
+    out = ["In the tiered run, %d of 20 frames waited for a build%s. A frame waits in tiered "
+           "mode only when the interp fallback itself cannot run the edited graph (a function "
+           "it lacks, or more value-stack slots than its `TEXCC_STACK_SLOTS`); then that "
+           "fallback is rebuilt in the foreground and the shape kernel still builds in the "
+           "background." % (len(waits), (": " + "; ".join(
+               "frame %d `%s` (%.2f s)" % (f["index"], f["edit"], f["buildWaitSeconds"])
+               for f in waits)) if waits else ""), ""]
+    return out
+
+
+def per_hit_lines(d):
+    if not d.get("perHit"):
+        return []
+    lines = ["Per-hit texture cost on the same scene (unedited graph, %s, %d spp; texture "
+             "kernels' device time from stats.json over the texture stage's work-items, which "
+             "include misses and untextured hits):" % (d["size"], d["perHitSpp"]), "",
+             "| kernel | tier | work-items | texture device time | ms per 1M work-items |",
+             "|---|---|---|---|---|"]
+    for h in d["perHit"]:
+        lines.append("| %s | %s | %d | %s s | **%s** |" % (
+            h["mode"], h["tier"], h["hits"], fmt(h["textureSeconds"]),
+            fmt(h["msPerMillionHits"])))
+    return lines + [""]
+
+
 def worst(kernels, key):
     values = [k.get(key) for k in kernels.values() if k.get(key) is not None]
     return max(values) if values else None
@@ -339,12 +399,13 @@ def tail_sections():
 
 
 def write(args=None):
-    results = {n: common.load(n) for n in ("table1", "edits", "resources", "accuracy",
-                                           "stability", "ao")}
+    results = {n: common.load(n) for n in ("table1", "edits", "edit_session", "resources",
+                                           "accuracy", "stability", "ao")}
     if not any(results.values()):
         raise common.BenchError("no results in bench/results: run bench/run first")
     lines = HEADER.splitlines() + [""] + machine_section(results)
     lines += table1_section(results["table1"]) + edits_section(results["edits"])
+    lines += edit_session_section(results["edit_session"])
     lines += resources_section(results["resources"]) + accuracy_section(results["accuracy"])
     lines += stability_section(results["stability"]) + ao_section(results["ao"])
     lines += tail_sections()

@@ -272,6 +272,15 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
       });
 }
 
+bool LiveEditor::fallbackRuns(const Renderer &R) const {
+  // The editor knows only the kernel's functions, so a compiled edit needs no new one; what
+  // it may need is more value-stack slots than the graph had, which the fallback's headroom
+  // may hold, or more outputs, which no kernel of this layout has.
+  const auto &CG = Editor->compiled();
+  return Lay.Mode == "shape" && R.tierPolicy() != TierPolicy::Shape && !CG.Spill &&
+         CG.StackSlots <= R.fallbackStackSlots() && CG.MaxOutputs <= Lay.MaxOutputs;
+}
+
 LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
   if (Lay.Mode == "inline")
     return Plan::Regenerate;
@@ -286,10 +295,10 @@ LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer
                                    : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
   if (!Ok)
     throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
-  if (Editor->needsRebuild())
+  if (Editor->needsRebuild() && !fallbackRuns(R))
     return Plan::Regenerate;
   // The wiring is code in wavefront mode (the launches) and in a shape kernel (its shapes).
-  if (!Structural || Lay.Mode == "interp")
+  if ((!Structural && !Editor->needsRebuild()) || Lay.Mode == "interp")
     return Plan::Upload;
   if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Interp)
     return Plan::Upload;

@@ -22,7 +22,9 @@ cl::Program Renderer::buildForeground(const std::string &Source, const std::stri
   E.Kernel = Tier;
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
-  cl::Program P = Cl->buildProgram(Source, readKernelSource(Source), programOptions());
+  const bool Fallback = Lay.Mode == "shape" && Tier == "interp";
+  std::string Text = Fallback ? interpFallbackSource(Lay, FallbackSlots) : readKernelSource(Source);
+  cl::Program P = Cl->buildProgram(Source, Text, programOptions());
   // PoCL's compile at the first launch is part of the build the frame waits for.
   warmUpKernels(*Cl, P, textureKernelNames());
   E.ReadySeconds = steadySeconds() - Epoch;
@@ -80,7 +82,7 @@ void Renderer::buildTextureKernel() {
   // binary is cached (a load, no build), else the interp fallback (usually cached: it changes
   // only with the set of functions). In auto mode the fallback is kept for later rewirings.
   const TierPolicy P = Opts.Tier;
-  bool ShapeCached = Cl->isCached(readKernelSource(Lay.KernelSource), programOptions());
+  const bool ShapeCached = Cl->isCached(readKernelSource(Lay.KernelSource), programOptions());
   if (P == TierPolicy::Shape || (P == TierPolicy::Auto && ShapeCached))
     ShapeProgram = buildForeground(Lay.KernelSource, "shape", Reason);
   if (P != TierPolicy::Shape)
@@ -180,6 +182,7 @@ void Renderer::adopt(TierBuildResult &R) {
     Lay = std::move(R.L);
     uploadLayoutData();
     InterpProgram = R.Interp;
+    FallbackSlots = R.FallbackSlots;
   }
   ShapeProgram = R.Shape;
   if (HasTextureWork)

@@ -3,6 +3,7 @@
 
 #include "texcc_abi.h"
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -63,14 +64,30 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
 
 namespace {
 
-cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Entry,
-                         const std::string &Options) {
-  cl::Program P = Cl.buildProgram(Path, readKernelSource(Path), Options, "", /*Background=*/true);
+cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Source,
+                         const std::string &Entry, const std::string &Options) {
+  cl::Program P = Cl.buildProgram(Path, Source, Options, "", /*Background=*/true);
   warmUpKernels(Cl, P, {Entry});
   return P;
 }
 
 } // namespace
+
+std::string interpFallbackSource(const Layout &L, unsigned &Capacity) {
+  std::string Source = readKernelSource(L.InterpFallback);
+  Capacity = L.StackSlots;
+  const std::string Define = "#define TEXCC_STACK_SLOTS ";
+  size_t At = Source.find(Define);
+  if (L.Spill || At == std::string::npos)
+    return Source;
+  size_t End = Source.find('\n', At);
+  Capacity = std::min(L.StackLimit, std::max(2 * L.StackSlots, L.StackSlots + 4));
+  Capacity = std::max(Capacity, L.StackSlots);
+  Source.replace(At, End - At, Define + std::to_string(Capacity) +
+                                   " /* texrender: headroom for rewirings (was " +
+                                   std::to_string(L.StackSlots) + ") */");
+  return Source;
+}
 
 TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
                                bool SameLayout, const std::string &Options, double Epoch) {
@@ -78,9 +95,11 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
   R.SameLayout = SameLayout;
   try {
     R.L = MakeLayout();
-    R.Shape = buildAndWarm(Cl, R.L.KernelSource, R.L.Entry, Options);
+    R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource), R.L.Entry,
+                           Options);
     if (!SameLayout)
-      R.Interp = buildAndWarm(Cl, R.L.InterpFallback, R.L.Entry, Options);
+      R.Interp = buildAndWarm(Cl, R.L.InterpFallback, interpFallbackSource(R.L, R.FallbackSlots),
+                              R.L.Entry, Options);
   } catch (const cl::Error &E) {
     R.Error = std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err());
   } catch (const std::exception &E) {

@@ -63,6 +63,9 @@ private:
   enum class Plan { Upload, Regenerate, SwitchShapes };
 
   Plan plan(const Edit &E, bool Structural, const Renderer &R);
+  /// Shape mode: whether the running interp fallback can run the edited graph even though
+  /// the graph library says the kernel it was made for cannot (value-stack headroom).
+  bool fallbackRuns(const Renderer &R) const;
   void regenerate(Renderer &R);
   void regenerateInBackground(Renderer &R);
   Regeneration writeEditedGraph();

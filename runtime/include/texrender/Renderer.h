@@ -90,6 +90,8 @@ public:
 
   TierPolicy tierPolicy() const { return Opts.Tier; }
   const std::string &activeTier() const { return ActiveTier; }
+  /// The value-stack slots the built interp fallback holds (interpFallbackSource); 0: none.
+  unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
   /// Every texture-kernel build so far, foreground and background.
   const std::vector<BuildEvent> &buildEvents() const { return Events; }
   /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
@@ -148,6 +150,7 @@ private:
   double Epoch = 0;                         // steadySeconds() at construction
   std::string ActiveTier;
   cl::Program ShapeProgram, InterpProgram;
+  unsigned FallbackSlots = 0;
   std::unique_ptr<BackgroundBuild> Pending;
   std::function<void(Layout &)> PendingReencode;
   std::vector<std::unique_ptr<BackgroundBuild>> Retired;

@@ -45,9 +45,17 @@ struct TierBuildResult {
   bool SameLayout = false;   // L is the layout the renderer runs (only the shape kernel is new)
   cl::Program Shape;         // L's shape kernel
   cl::Program Interp;        // L's interp fallback (new layouts only)
+  unsigned FallbackSlots = 0; // its value-stack capacity (interpFallbackSource)
   double ReadySeconds = 0;
   std::string Error;
 };
+
+/// The interp fallback's source, with the value stack given headroom: TEXCC_STACK_SLOTS is
+/// the exact peak of the graph it was made from, and a rewiring that needs one or two slots
+/// more would otherwise need a new fallback (and a frame waiting for its build). The capacity,
+/// max(2 N, N + 4) capped at the stack limit, goes to Capacity; a spilling layout keeps its N
+/// (the spill buffer is sized by it). The shape kernel keeps its values in locals.
+std::string interpFallbackSource(const Layout &L, unsigned &Capacity);
 
 /// Builds L's shape kernel and, for a new layout, its interp fallback, then launches each
 /// once over an empty range on a private queue: PoCL compiles the work-group function at the
