@@ -36,6 +36,7 @@
 /* Counters in the device statistics buffer. */
 #define RT_COUNT_SHADOW_RAYS 0
 #define RT_COUNT_AO_RAYS 1
+#define RT_COUNT_NONFINITE 2 /* samples dropped by accumulate because they were NaN or infinite */
 #define RT_COUNT_SLOTS 4
 
 /* A flattened BVH node: an inner node's children are at leftFirst and leftFirst+1; a leaf

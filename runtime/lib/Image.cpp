@@ -11,7 +11,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 namespace texrender {
 
@@ -68,28 +72,65 @@ ImageRGBA loadExr(const std::string &Path) {
   return Img;
 }
 
+void writeAtomically(const std::string &Path,
+                     const std::function<void(const std::string &)> &Write) {
+  namespace fs = std::filesystem;
+  fs::path Target(Path);
+  fs::path Temp = Target.parent_path() /
+                  ("." + Target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  std::error_code Ignored;
+  try {
+    Write(Temp.string());
+  } catch (...) {
+    fs::remove(Temp, Ignored);
+    throw;
+  }
+  std::error_code EC;
+  fs::rename(Temp, Target, EC);
+  if (EC) {
+    fs::remove(Temp, Ignored);
+    throw Error(Path + ": cannot write: " + EC.message());
+  }
+}
+
+void writeTextFile(const std::string &Path, const std::string &Text) {
+  writeAtomically(Path, [&](const std::string &Temp) {
+    std::ofstream Out(Temp, std::ios::binary);
+    Out << Text;
+    Out.close();
+    if (!Out)
+      throw Error(Path + ": cannot write: " + std::strerror(errno));
+  });
+}
+
+static void writeExr(const std::string &Path, const std::string &Temp, int Width, int Height,
+                     const std::vector<float> &RGB) {
+  const char *Err = nullptr;
+  if (SaveEXR(RGB.data(), Width, Height, 3, 0, Temp.c_str(), &Err) != TINYEXR_SUCCESS) {
+    std::string Why = Err ? Err : "unknown error";
+    if (Err)
+      FreeEXRErrorMessage(Err);
+    throw Error(Path + ": cannot write EXR: " + Why);
+  }
+}
+
+static void writePng(const std::string &Path, const std::string &Temp, int Width, int Height,
+                     const std::vector<float> &RGB) {
+  std::vector<unsigned char> Bytes(RGB.size());
+  for (size_t I = 0; I < RGB.size(); ++I)
+    Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
+  if (!stbi_write_png(Temp.c_str(), Width, Height, 3, Bytes.data(), Width * 3))
+    throw Error(Path + ": cannot write PNG");
+}
+
 void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
   std::string Ext = std::filesystem::path(Path).extension().string();
   std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
-  if (Ext == ".exr") {
-    const char *Err = nullptr;
-    if (SaveEXR(RGB.data(), Width, Height, 3, 0, Path.c_str(), &Err) != TINYEXR_SUCCESS) {
-      std::string Why = Err ? Err : "unknown error";
-      if (Err)
-        FreeEXRErrorMessage(Err);
-      throw Error(Path + ": cannot write EXR: " + Why);
-    }
-    return;
-  }
-  if (Ext == ".png") {
-    std::vector<unsigned char> Bytes(RGB.size());
-    for (size_t I = 0; I < RGB.size(); ++I)
-      Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
-    if (!stbi_write_png(Path.c_str(), Width, Height, 3, Bytes.data(), Width * 3))
-      throw Error(Path + ": cannot write PNG");
-    return;
-  }
-  throw Error(Path + ": unknown image format '" + Ext + "' (expected .png or .exr)");
+  if (Ext != ".exr" && Ext != ".png")
+    throw Error(Path + ": unknown image format '" + Ext + "' (expected .png or .exr)");
+  writeAtomically(Path, [&](const std::string &Temp) {
+    (Ext == ".exr" ? writeExr : writePng)(Path, Temp, Width, Height, RGB);
+  });
 }
 
 } // namespace texrender

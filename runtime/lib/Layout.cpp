@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -103,6 +104,51 @@ struct LayoutReader {
 
 } // namespace
 
+/// Per node: whether it reads AO (its function's call tree, or an argument) directly or through
+/// the nodes it depends on. Memoized and with an explicit stack: a DAG with much sharing must
+/// not take exponential time, nor a 5000-deep chain recursion. An unknown node (or a cycle,
+/// which texcc never writes) counts as reading AO.
+static std::vector<bool> nodesReadingAo(const std::vector<json> &Nodes,
+                                        const std::map<unsigned, bool> &FnReadsAo) {
+  enum State : char { Unvisited, Open, Done };
+  std::vector<State> St(Nodes.size(), Unvisited);
+  std::vector<bool> Reads(Nodes.size(), false);
+  auto Children = [&](size_t I) {
+    std::vector<size_t> C;
+    for (auto &A : Nodes[I].value("args", json::array()))
+      if (A.value("source", "") == "node")
+        C.push_back(A.value("node", Nodes.size()));
+    return C;
+  };
+  for (size_t Root = 0; Root < Nodes.size(); ++Root) {
+    std::vector<size_t> Stack{Root};
+    while (!Stack.empty()) {
+      size_t I = Stack.back();
+      if (St[I] == Done) {
+        Stack.pop_back();
+        continue;
+      }
+      std::vector<size_t> Kids = Children(I);
+      if (St[I] == Unvisited) {
+        St[I] = Open;
+        for (size_t C : Kids)
+          if (C < Nodes.size() && St[C] == Unvisited)
+            Stack.push_back(C);
+        continue;
+      }
+      bool R = FnReadsAo.count(Nodes[I].value("fnId", 0u)) > 0;
+      for (auto &A : Nodes[I].value("args", json::array()))
+        R |= A.value("source", "") == "attr" && A.value("attr", "") == "AO";
+      for (size_t C : Kids)
+        R |= C >= Nodes.size() || St[C] != Done || Reads[C];
+      Reads[I] = R;
+      St[I] = Done;
+      Stack.pop_back();
+    }
+  }
+  return Reads;
+}
+
 Layout loadLayout(const std::string &OutDir) {
   Layout L;
   L.Dir = OutDir;
@@ -110,6 +156,7 @@ Layout loadLayout(const std::string &OutDir) {
   L.Text = readFile(File);
   LayoutReader R{File};
   json J;
+  std::optional<size_t> ArgsBinSize;
   try {
     J = json::parse(L.Text);
   } catch (const json::parse_error &E) {
@@ -123,6 +170,8 @@ Layout loadLayout(const std::string &OutDir) {
       R.fail("/mode", "unknown mode '" + L.Mode + "'");
     if (J.contains("target") && J["target"] != "opencl")
       R.fail("/target", "texrender runs OpenCL output only (texcc --target=opencl)");
+    if (J.contains("argsBin") && J["argsBin"].contains("size"))
+      ArgsBinSize = J["argsBin"]["size"].get<size_t>();
     L.GraphPath = J.value("graph", "");
     if (!L.GraphPath.empty() && fs::path(L.GraphPath).is_relative())
       L.GraphPath = (fs::path(OutDir) / L.GraphPath).lexically_normal().string();
@@ -165,21 +214,8 @@ Layout loadLayout(const std::string &OutDir) {
     if (J.contains("nodes"))
       for (auto &N : J["nodes"])
         Nodes.push_back(N);
-    std::function<bool(size_t, int)> NodeReadsAo = [&](size_t I, int Depth) {
-      if (I >= Nodes.size() || Depth > 10000)
-        return true; // unknown: assume it does
-      const json &N = Nodes[I];
-      if (FnReadsAo.count(N.value("fnId", 0u)))
-        return true;
-      for (auto &A : N.value("args", json::array())) {
-        std::string Src = A.value("source", "");
-        if (Src == "attr" && A.value("attr", "") == "AO")
-          return true;
-        if (Src == "node" && NodeReadsAo(A.value("node", size_t(0)), Depth + 1))
-          return true;
-      }
-      return false;
-    };
+    std::vector<bool> ReadsAo = nodesReadingAo(Nodes, FnReadsAo);
+    auto NodeReadsAo = [&](size_t I) { return I >= ReadsAo.size() || ReadsAo[I]; };
     const json &Ms = R.get(J, "materials", "");
     for (size_t I = 0; I < Ms.size(); ++I) {
       std::string P = "/materials/" + std::to_string(I);
@@ -190,7 +226,9 @@ Layout loadLayout(const std::string &OutDir) {
         for (auto &O : Ms[I]["outputs"])
         {
           M.OutputComponents.push_back(componentsOf(O.value("type", "float")));
-          M.ReadsAo |= Nodes.empty() ? true : NodeReadsAo(O.value("node", size_t(0)), 0);
+          size_t Node = O.value("node", size_t(0));
+          M.ReadsAo |= Nodes.empty() ? true : NodeReadsAo(Node);
+          M.OutputNodes.push_back(Node < Nodes.size() ? Nodes[Node].value("id", "?") : "?");
         }
       M.Bsdf = R.bsdf(R.get(Ms[I], "bsdf", P), P + "/bsdf");
       L.Materials.push_back(M);
@@ -198,8 +236,16 @@ Layout loadLayout(const std::string &OutDir) {
   } catch (const json::exception &E) {
     throw Error(File + ": malformed layout: " + E.what());
   }
-  std::string Args = readFile((fs::path(OutDir) / "args.bin").string(), true);
+  std::string ArgsPath = (fs::path(OutDir) / "args.bin").string();
+  std::string Args = readFile(ArgsPath, true);
   L.ArgsBin.assign(Args.begin(), Args.end());
+  // The kernels index args.bin by layout.json's offsets: a short (truncated, or stale) file
+  // would have them read past the buffer.
+  size_t Declared = ArgsBinSize ? *ArgsBinSize : L.ArgsBin.size();
+  if (L.ArgsBin.size() != Declared)
+    throw Error(ArgsPath + ": " + std::to_string(L.ArgsBin.size()) + " bytes, but " + File +
+                " says " + std::to_string(Declared) +
+                " (a truncated or stale texcc output: run texcc again)");
   return L;
 }
 

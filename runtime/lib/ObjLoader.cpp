@@ -5,7 +5,10 @@
 #include <tiny_obj_loader.h>
 #include <zlib.h>
 
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -61,6 +64,46 @@ Vec3 normalized(const Vec3 &V) {
   return L > 0 ? Vec3{V[0] / L, V[1] / L, V[2] / L} : Vec3{0, 0, 0};
 }
 
+/// tinyobjloader reads a coordinate it cannot parse ("nan", "x") as 0 and one too large for a
+/// float as infinity, silently. Every number of the v, vn and vt lines must be a finite float.
+void checkVertexNumbers(const std::string &Path, const std::string &Text) {
+  size_t LineNo = 0;
+  for (size_t Pos = 0; Pos < Text.size();) {
+    size_t End = Text.find('\n', Pos);
+    if (End == std::string::npos)
+      End = Text.size();
+    ++LineNo;
+    const char *P = Text.c_str() + Pos, *Stop = Text.c_str() + End;
+    while (P < Stop && (*P == ' ' || *P == '\t'))
+      ++P;
+    bool Vertex = P + 1 < Stop && P[0] == 'v' &&
+                  (P[1] == ' ' || P[1] == '\t' ||
+                   ((P[1] == 'n' || P[1] == 't') && P + 2 < Stop && (P[2] == ' ' || P[2] == '\t')));
+    for (P += Vertex ? (P[1] == ' ' || P[1] == '\t' ? 1 : 2) : 0; Vertex && P < Stop;) {
+      while (P < Stop && (*P == ' ' || *P == '\t' || *P == '\r'))
+        ++P;
+      if (P >= Stop || *P == '#')
+        break;
+      const char *Token = P;
+      while (P < Stop && *P != ' ' && *P != '\t' && *P != '\r')
+        ++P;
+      std::string Word(Token, P);
+      char *NumEnd = nullptr;
+      double D = std::strtod(Word.c_str(), &NumEnd);
+      if (NumEnd != Word.c_str() + Word.size() || !std::isfinite(D) || std::fabs(D) > FLT_MAX)
+        throw Error(Path + ":" + std::to_string(LineNo) + ": invalid OBJ: '" + Word +
+                    "' is not a finite number");
+    }
+    Pos = End + 1;
+  }
+}
+
+std::string formatVec3(const Vec3 &V) {
+  char Buf[96];
+  std::snprintf(Buf, sizeof Buf, "%g, %g, %g", V[0], V[1], V[2]);
+  return Buf;
+}
+
 /// Smooth normals for the triangles whose file gave none: the area-weighted average of the
 /// normals of the faces sharing the corner's position within 60 degrees (creases stay sharp).
 void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
@@ -95,6 +138,7 @@ void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
 
 TriangleMesh loadObj(const std::string &Path) {
   std::string Text = readMaybeGzipped(Path);
+  checkVertexNumbers(Path, Text);
   blankSkinWeightLines(Text);
   tinyobj::ObjReaderConfig Cfg;
   Cfg.triangulate = true;
@@ -110,6 +154,7 @@ TriangleMesh loadObj(const std::string &Path) {
   TriangleMesh M;
   std::vector<int> PosIndex;
   std::vector<bool> HasNormals;
+  size_t Degenerate = 0;
   for (const auto &Shape : Reader.GetShapes()) {
     const auto &Idx = Shape.mesh.indices;
     for (size_t F = 0; F + 2 < Idx.size(); F += 3) {
@@ -122,6 +167,9 @@ TriangleMesh loadObj(const std::string &Path) {
           throw Error(Path + ": invalid OBJ: vertex index out of range");
         P[C] = {A.vertices[3 * I.vertex_index], A.vertices[3 * I.vertex_index + 1],
                 A.vertices[3 * I.vertex_index + 2]};
+        if (!std::isfinite(P[C][0]) || !std::isfinite(P[C][1]) || !std::isfinite(P[C][2]))
+          throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.vertex_index + 1) +
+                      " has a non-finite coordinate (" + formatVec3(P[C]) + ")");
         if (I.normal_index >= 0 && 3 * size_t(I.normal_index) + 2 < A.normals.size())
           N[C] = normalized({A.normals[3 * I.normal_index], A.normals[3 * I.normal_index + 1],
                              A.normals[3 * I.normal_index + 2]});
@@ -130,6 +178,13 @@ TriangleMesh loadObj(const std::string &Path) {
         UV[C] = {0, 0};
         if (I.texcoord_index >= 0 && 2 * size_t(I.texcoord_index) + 1 < A.texcoords.size())
           UV[C] = {A.texcoords[2 * I.texcoord_index], A.texcoords[2 * I.texcoord_index + 1]};
+      }
+      // A zero-area face is never hit, has no normal, and as a light would have an infinite
+      // sampling density: drop it.
+      Vec3 Area = cross(sub(P[1], P[0]), sub(P[2], P[0]));
+      if (!(dot(Area, Area) > 0)) {
+        ++Degenerate;
+        continue;
       }
       int Order[3] = {0, 1, 2};
       if (FileNormals) {
@@ -150,6 +205,9 @@ TriangleMesh loadObj(const std::string &Path) {
       HasNormals.push_back(FileNormals);
     }
   }
+  if (M.Positions.empty() && Degenerate > 0)
+    throw Error(Path + ": OBJ file has no faces of non-zero area (" + std::to_string(Degenerate) +
+                " degenerate)");
   if (M.Positions.empty())
     throw Error(Path + ": OBJ file has no faces");
   generateNormals(M, PosIndex, HasNormals);

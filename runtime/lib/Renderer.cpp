@@ -218,6 +218,40 @@ void Renderer::runTextures(int NumActive) {
   }
 }
 
+void Renderer::checkTextureOutputs(const cl::Buffer &Active, int NumActive) {
+  const size_t N = size_t(NumActive), Outs = Lay.MaxOutputs;
+  std::vector<cl_int> Material(N);
+  std::vector<cl_float4> Values(N * Outs);
+  Cl->read(B["hitMaterial"], Material.data(), bytes(Material));
+  Cl->read(B["textureOutputs"], Values.data(), bytes(Values));
+  for (size_t I = 0; I < N; ++I) {
+    if (Material[I] < 0 || size_t(Material[I]) >= Lay.Materials.size())
+      continue;
+    const LayoutMaterial &M = Lay.Materials[Material[I]];
+    for (size_t O = 0; O < M.OutputComponents.size() && O < Outs; ++O) {
+      const cl_float4 &V = Values[I * Outs + O];
+      int C = 0;
+      while (C < M.OutputComponents[O] && std::isfinite(V.s[C]))
+        ++C;
+      if (C == M.OutputComponents[O])
+        continue;
+      // Only now fetch which path (and so which pixel) the hit belongs to.
+      cl_int Path = 0;
+      RtPath P{};
+      Cl->read(Active, &Path, sizeof Path, I * sizeof(cl_int));
+      Cl->read(B["paths"], &P, sizeof P, size_t(Path) * sizeof(RtPath));
+      const std::string Node = O < M.OutputNodes.size() ? M.OutputNodes[O] : "?";
+      char Where[160];
+      std::snprintf(Where, sizeof Where, "%s at pixel (%u, %u), path depth %d",
+                    std::isnan(V.s[C]) ? "NaN" : V.s[C] > 0 ? "+inf" : "-inf",
+                    P.pixel % unsigned(Settings.Width), P.pixel / unsigned(Settings.Width),
+                    P.depth);
+      throw Error("--check-nan: material '" + M.Name + "': node '" + Node + "' (texture output " +
+                  std::to_string(O) + ", component " + std::to_string(C) + ") returned " + Where);
+    }
+  }
+}
+
 /// Runs the bounce loop over NumPaths fresh paths (in activeA). Returns the bounces done.
 int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes) {
   cl::Buffer Cur = B["activeA"], Next = B["activeB"];
@@ -246,6 +280,8 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
       return 1;
     if (HasTextureWork)
       runTextures(Count);
+    if (HasTextureWork && Opts.CheckNan)
+      checkTextureOutputs(Cur, Count);
     cl::Kernel &SH = K["shade"];
     SH.setArg(0, B["triangles"]), SH.setArg(1, B["triangleAttributes"]), SH.setArg(2, B["meshes"]);
     SH.setArg(3, B["materials"]), SH.setArg(4, B["bsdfNodes"]), SH.setArg(5, B["lights"]);
@@ -318,7 +354,7 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       Stats.Bounces += traceBounces(N, Stats, false);
       cl::Kernel &AC = K["accumulate"];
       AC.setArg(0, B["paths"]), AC.setArg(1, cl_int(NumPixels)), AC.setArg(2, cl_int(Now));
-      AC.setArg(3, B["sums"]), AC.setArg(4, B["sumsSquared"]);
+      AC.setArg(3, B["sums"]), AC.setArg(4, B["sumsSquared"]), AC.setArg(5, B["counters"]);
       Cl->launch(AC, NumPixels, "accumulate");
       Done += Now;
       ++Stats.Passes;
@@ -339,6 +375,7 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     Cl->read(B["counters"], Counters, sizeof Counters);
     Stats.ShadowRays = Counters[RT_COUNT_SHADOW_RAYS];
     Stats.AoRays = Counters[RT_COUNT_AO_RAYS];
+    Stats.NonFiniteSamples = Counters[RT_COUNT_NONFINITE];
     Stats.Kernels = Cl->timings();
     std::vector<float> RGB(NumPixels * 3);
     for (size_t P = 0; P < NumPixels; ++P)

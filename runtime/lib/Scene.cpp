@@ -149,6 +149,15 @@ void parseCamera(const Reader &R, const json &J, Camera &C) {
     if (C.FovAxis != "x" && C.FovAxis != "y" && C.FovAxis != "smaller")
       R.fail("/camera/fovAxis", "unknown axis '" + C.FovAxis + "' (expected x, y or smaller)");
   }
+  // Without a view direction, or with up along it, the camera basis is NaN: every pixel
+  // would be a non-finite sample.
+  Vec3 D{C.Target[0] - C.Position[0], C.Target[1] - C.Position[1], C.Target[2] - C.Position[2]};
+  if (D[0] == 0 && D[1] == 0 && D[2] == 0)
+    R.fail("/camera/target", "the target is the camera position: no view direction");
+  Vec3 X{D[1] * C.Up[2] - D[2] * C.Up[1], D[2] * C.Up[0] - D[0] * C.Up[2],
+         D[0] * C.Up[1] - D[1] * C.Up[0]};
+  if (X[0] == 0 && X[1] == 0 && X[2] == 0)
+    R.fail("/camera/up", "'up' is parallel to the view direction (or zero)");
 }
 
 void parseRender(const Reader &R, const json &J, RenderSettings &S) {
@@ -199,6 +208,8 @@ std::string jsonReason(const json::exception &E) {
 } // namespace
 
 Scene loadScene(const std::string &Path) {
+  if (std::filesystem::is_directory(Path)) // an ifstream opens a folder and reads nothing
+    throw Error(Path + ": cannot open scene file: it is a folder");
   std::ifstream In(Path);
   if (!In)
     throw Error(Path + ": cannot open scene file");

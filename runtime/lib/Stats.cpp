@@ -28,6 +28,7 @@ json frameJson(const FrameStats &F) {
   J["renderSeconds"] = F.Seconds;
   J["kernelSeconds"] = Sum;
   J["passes"] = F.Passes;
+  J["nonFiniteSamples"] = F.NonFiniteSamples;
   J["bounces"] = F.Bounces;
   J["kernels"] = Kernels;
   J["rays"] = {

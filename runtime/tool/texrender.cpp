@@ -43,8 +43,11 @@ const char *Usage =
     "  --tier=auto|interp|shape  shape-mode textures: auto renders with the interp fallback\n"
     "                       while the shape kernel builds in the background; interp: the\n"
     "                       fallback only; shape: wait for the shape kernel's build\n"
+    "                       (default: auto with --edit-script or --interactive, else shape)\n"
     "  --device N           OpenCL device (default 0; --list-devices lists them)\n"
     "  --stats FILE         write stats.json\n"
+    "  --check-nan          stop with an error at the first NaN or infinite texture output,\n"
+    "                       naming the material, the node and the pixel\n"
     "  --variance FILE.exr  write the per-pixel variance of the image (for statistical tests)\n"
     "  --kernels DIR        fixed kernels folder (default: next to the executable)\n"
     "  --cache-dir DIR      program-binary cache (default $XDG_CACHE_HOME/texcc); --no-cache\n"
@@ -56,8 +59,8 @@ struct Options {
   std::optional<float> AoDistance;
   std::vector<std::string> Sets;
   int Device = 0;
-  bool Quiet = false, ListDevices = false, AoLoop = false, Interactive = false;
-  TierPolicy Tier = TierPolicy::Auto;
+  std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
+  bool Quiet = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
 
 int toInt(const std::string &Opt, const std::string &V) {
@@ -80,6 +83,18 @@ float toFloat(const std::string &Opt, const std::string &V) {
   } catch (...) {
   }
   throw Error(Opt + ": expected a number, got '" + V + "'");
+}
+
+/// Every output's folder is checked before the render: a run that fails at its end must not
+/// leave some of its outputs written and others not.
+void checkOutputPath(const std::string &Path) {
+  if (Path.empty())
+    return;
+  fs::path Dir = fs::path(Path).parent_path();
+  if (!Dir.empty() && !fs::is_directory(Dir))
+    throw Error(Path + ": cannot write: '" + Dir.string() + "' is not a folder");
+  if (fs::is_directory(Path))
+    throw Error(Path + ": cannot write: it is a folder");
 }
 
 Options parseArgs(int Argc, char **Argv) {
@@ -153,6 +168,8 @@ Options parseArgs(int Argc, char **Argv) {
       O.AoLoop = M == "loop";
     } else if (A == "--interactive") {
       O.Interactive = true;
+    } else if (A == "--check-nan") {
+      O.CheckNan = true;
     } else if (A == "--stats") {
       O.Stats = Next();
     } else if (A == "--variance") {
@@ -184,6 +201,8 @@ Options parseArgs(int Argc, char **Argv) {
   std::string Ext = fs::path(O.Output).extension().string();
   if (Ext != ".png" && Ext != ".exr" && Ext != ".PNG" && Ext != ".EXR")
     throw Error("-o " + O.Output + ": unknown image format (expected .png or .exr)");
+  for (const std::string *Out : {&O.Output, &O.Stats, &O.Variance})
+    checkOutputPath(*Out);
   return O;
 }
 
@@ -321,8 +340,11 @@ int run(int Argc, char **Argv) {
   RO.CacheDir = O.CacheDir;
   RO.KernelDir = O.KernelDir;
   RO.Progress = !O.Quiet && isatty(2);
+  RO.CheckNan = O.CheckNan;
   RO.AoPerHitLoop = O.AoLoop;
-  RO.Tier = O.Tier;
+  // Tiered pays off when edits follow; a single render waits for the shape build instead
+  // (docs/runtime.md, Tiers: the interp frame is slower and the background build competes).
+  RO.Tier = O.Tier.value_or(!Script.empty() || O.Interactive ? TierPolicy::Auto : TierPolicy::Shape);
   Renderer R(S, L, RO);
   std::unique_ptr<LiveEditor> Editor;
   if (!Sets.empty() || !Script.empty() || O.Interactive)
@@ -351,12 +373,8 @@ int run(int Argc, char **Argv) {
   writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
   if (O.Interactive)
     interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
-  if (!O.Stats.empty()) {
-    std::ofstream Out(O.Stats);
-    if (!Out)
-      throw Error(O.Stats + ": cannot write stats");
-    Out << statsJson(R, L, Frames, now() - T0).dump(2) << "\n";
-  }
+  if (!O.Stats.empty())
+    writeTextFile(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
   return 0;
 }
 

@@ -4,6 +4,7 @@
 // Image files: textures in (8-bit sRGB or HDR to linear RGBA float), renders out (PNG in sRGB
 // 8-bit, EXR in linear float), and EXR in (for tests and comparisons).
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,16 @@ ImageRGBA loadTexture(const std::string &Path);
 ImageRGBA loadExr(const std::string &Path);
 
 /// Writes RGB (3 floats per pixel, linear) as .png (sRGB 8-bit) or .exr (float), chosen by
-/// the extension; anything else is an error.
+/// the extension; anything else is an error. Atomic, like every texrender output.
 void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
+
+/// Runs Write on a temporary name next to Path (a hidden file in the same folder) and renames
+/// it to Path only when Write has succeeded, so that a crash, a kill or an error never leaves a
+/// half-written Path: the reader sees the old file or the complete new one. On an error the
+/// temporary is removed and the error is rethrown.
+void writeAtomically(const std::string &Path, const std::function<void(const std::string &)> &Write);
+/// writeAtomically for a text file (stats.json).
+void writeTextFile(const std::string &Path, const std::string &Text);
 
 float srgbToLinear(float V);
 float linearToSrgb(float V);

@@ -28,6 +28,7 @@ struct LayoutMaterial {
   std::string Name;
   int Index = 0;
   std::vector<int> OutputComponents; // per texture output: 1..4
+  std::vector<std::string> OutputNodes; // per texture output: the id of the node computing it
   bool ReadsAo = false;              // a node its outputs depend on reads AO
   LayoutBsdf Bsdf;
 };

@@ -27,6 +27,7 @@ struct RendererOptions {
   std::string CacheDir = defaultCacheDir();
   std::string KernelDir;        // "" = kernelDirectory()
   bool Progress = false;        // a progress bar on stderr (after one second)
+  bool CheckNan = false;        // --check-nan: stop at the first non-finite texture output
   size_t MaxPathsPerPass = 1u << 18;
   TierPolicy Tier = TierPolicy::Auto; // shape-mode layouts only (TextureTiers.h)
   /// --ao-method=loop: one work-item per hit loops over its AO rays (ao_loop) instead of one
@@ -43,6 +44,7 @@ struct FrameStats {
   uint64_t ShadowRays = 0;
   uint64_t AoRays = 0;
   uint64_t AoWorkItemsPerLaunchMax = 0;
+  uint64_t NonFiniteSamples = 0; // NaN or infinite path samples, dropped from the image
   unsigned Passes = 0;
   unsigned Bounces = 0;         // bounce iterations summed over passes
   std::string Tier;             // the texture kernel that ran: interp, shape, inline, wavefront
@@ -128,6 +130,9 @@ private:
   /// AO of the Count hits of the active list: ao_trace + ao_reduce, or ao_loop.
   void runAo(const cl::Buffer &Active, int Count, FrameStats &Stats);
   void runTextures(int NumActive);
+  /// --check-nan: throws, naming the material, the node and the pixel, if a texture output
+  /// of the NumActive hits in Active is NaN or infinite.
+  void checkTextureOutputs(const cl::Buffer &Active, int NumActive);
   void setSceneArgs();
   std::string programOptions() const;
 

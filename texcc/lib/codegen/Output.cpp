@@ -3,6 +3,7 @@
 #include "texcc/Codegen/Codegen.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,28 @@ static void removeAll(const std::vector<fs::path> &Paths) {
     fs::remove(P, Ignored);
 }
 
+/// A texcc killed while writing leaves its hidden temporaries (".proctex.cl.tmp<pid>",
+/// ".proctex.cl.old.tmp<pid>"); the next run into the folder removes those of processes that
+/// no longer exist.
+static void removeStaleTemporaries(const std::string &Dir, const std::vector<OutputFile> &Files) {
+  std::error_code EC;
+  for (const fs::directory_entry &E : fs::directory_iterator(Dir, EC)) {
+    const std::string Name = E.path().filename().string();
+    for (const OutputFile &F : Files)
+      for (const std::string Prefix : {"." + F.Name + ".tmp", "." + F.Name + ".old.tmp"}) {
+        if (Name.compare(0, Prefix.size(), Prefix) != 0)
+          continue;
+        const std::string Pid = Name.substr(Prefix.size());
+        if (Pid.empty() || Pid.find_first_not_of("0123456789") != std::string::npos)
+          continue;
+        if (::kill(static_cast<pid_t>(std::stol(Pid)), 0) != 0 && errno == ESRCH) {
+          std::error_code Ignored;
+          fs::remove(E.path(), Ignored);
+        }
+      }
+  }
+}
+
 bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile> &Files,
                             std::string &Error) {
   std::error_code EC;
@@ -31,6 +54,7 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
       Error = "cannot write '" + (fs::path(Dir) / F.Name).string() + "': it is a folder";
       return false;
     }
+  removeStaleTemporaries(Dir, Files);
   const std::string Suffix = ".tmp" + std::to_string(static_cast<long>(::getpid()));
   std::vector<fs::path> Temps;
   for (const OutputFile &F : Files) {
@@ -45,15 +69,21 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
       return false;
     }
   }
-  // Put the new files in place one by one, keeping each old one aside until all are in, so
-  // that a failure half way can restore the previous outputs exactly.
+  // Put the new files in place one by one, keeping a hard link to each old one until all are
+  // in, so that a failure half way can restore the previous outputs exactly. The old file
+  // stays under its name until rename() replaces it in one step: a process killed at any
+  // point leaves every output name with its old or its new complete contents, never missing.
   std::vector<std::pair<fs::path, fs::path>> Saved; // target, backup
   std::vector<fs::path> Placed;
   for (size_t I = 0; I < Files.size() && !EC; ++I) {
     fs::path Target = fs::path(Dir) / Files[I].Name;
     if (fs::exists(fs::symlink_status(Target))) {
       fs::path Backup = fs::path(Dir) / ("." + Files[I].Name + ".old" + Suffix);
-      fs::rename(Target, Backup, EC);
+      fs::create_hard_link(Target, Backup, EC);
+      if (EC) { // a file system without hard links: a copy does as well, more slowly
+        EC.clear();
+        fs::copy_file(Target, Backup, fs::copy_options::overwrite_existing, EC);
+      }
       if (EC)
         break;
       Saved.push_back({Target, Backup});

@@ -90,7 +90,7 @@ TEST(Parse, NonFiniteAndHugeNumbers) {
   EXPECT_EQ(parseErrors("{\"texcc\": 1, \"nodes\": [NaN]}"),
             "g.json:1:24: error: 'NaN' is not a number: graph values must be finite\n");
   EXPECT_EQ(parseErrors("{\"texcc\": 1, \"nodes\": [-Infinity]}"),
-            "g.json:1:25: error: 'Infinity' is not a number: graph values must be finite\n");
+            "g.json:1:24: error: '-Infinity' is not a number: graph values must be finite\n");
   EXPECT_EQ(parseErrors("{\"texcc\": 1, \"x\": 1e400}"),
             "g.json:1:19: error: number '1e400' is out of range\n");
   EXPECT_NE(parseErrors(R"({"texcc": 1, "nodes": [{"id": "a", "fn": "leaf",
