@@ -3,6 +3,7 @@
 //             [--set NODE.ARG=VALUE]... [--edit-script FILE] [--device N]
 //             -o image.png|image.exr [--stats stats.json]
 // Exit 0 on success, 1 on any error, with a one-line reason first.
+#include "texcc/StackGuard.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
 #include "texrender/LiveEdit.h"
@@ -380,7 +381,8 @@ int run(int Argc, char **Argv) {
 
 } // namespace
 
-int main(int Argc, char **Argv) {
+/// run() with every error turned into its one-line reason and exit status 1.
+static int runAndReport(int Argc, char **Argv) {
   try {
     return run(Argc, Argv);
   } catch (const Error &E) {
@@ -392,4 +394,10 @@ int main(int Argc, char **Argv) {
     std::fprintf(stderr, "texrender: error: %s\n", E.what());
   }
   return 1;
+}
+
+int main(int Argc, char **Argv) {
+  // PoCL compiles kernels with clang in this process, recursively: a texture kernel holding a
+  // huge expression needs a deep stack (docs/reliability.md).
+  return texcc::runWithLargeStack([&] { return runAndReport(Argc, Argv); }, "texrender");
 }

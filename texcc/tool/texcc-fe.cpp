@@ -1,7 +1,7 @@
 // texcc-fe: a development driver for the front end alone. Prints the rewritten user code of
 // every file (as it would be pasted into proctex.cl), then the texture signatures as JSON.
 #include "texcc/Frontend/Frontend.h"
-#include "texcc/Frontend/StackGuard.h"
+#include "texcc/StackGuard.h"
 
 #include "llvm/Support/CommandLine.h"
 #include "llvm/Support/JSON.h"
@@ -61,5 +61,5 @@ static int run() {
 int main(int argc, char **argv) {
   cl::HideUnrelatedOptions(FeCategory);
   cl::ParseCommandLineOptions(argc, argv, "texcc-fe: runs texcc's front end on user textures\n");
-  return fe::runWithLargeStack(run, "texcc-fe");
+  return texcc::runWithLargeStack(run, "texcc-fe");
 }

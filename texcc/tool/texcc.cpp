@@ -3,9 +3,9 @@
 #include "texcc/Codegen/Codegen.h"
 #include "texcc/Config.h"
 #include "texcc/Frontend/Frontend.h"
-#include "texcc/Frontend/StackGuard.h"
 #include "texcc/Graph/Compile.h"
 #include "texcc/Graph/Graph.h"
+#include "texcc/StackGuard.h"
 #include "texcc/Version.h"
 
 #include "llvm/Support/CommandLine.h"
@@ -195,5 +195,5 @@ int main(int argc, char **argv) {
   cl::ParseCommandLineOptions(argc, argv,
                               "texcc: compiles procedural textures (OpenCL C) and a node graph "
                               "into an OpenCL kernel\n");
-  return texcc::frontend::runWithLargeStack(run, "texcc");
+  return texcc::runWithLargeStack(run, "texcc");
 }

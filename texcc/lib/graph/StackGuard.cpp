@@ -1,5 +1,6 @@
-// A large, guarded stack for the drivers (see StackGuard.h for why).
-#include "texcc/Frontend/StackGuard.h"
+// A large, guarded stack for the tools (see StackGuard.h for why). It lives in the graph
+// library because that is the LLVM-free library both texcc and texrender link.
+#include "texcc/StackGuard.h"
 
 #include <csignal>
 #include <cstdio>
@@ -9,7 +10,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-namespace texcc::frontend {
+namespace texcc {
 
 namespace {
 
@@ -99,4 +100,4 @@ int runWithLargeStack(const std::function<int()> &Main, const char *Tool, size_t
   return Result;
 }
 
-} // namespace texcc::frontend
+} // namespace texcc
