@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The sanitizer run (docs/fuzzing.md): builds the `asan` preset (build-asan/, GCC's
+# AddressSanitizer + UndefinedBehaviorSanitizer, Debug) and runs every test under it: the lit
+# suite and the GoogleTest unit tests, as scripts/test.sh does for build/. Extra arguments go
+# to lit. Exit status: lit's (any sanitizer report fails the test that caused it).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build-asan"
+"$root/scripts/setup.sh"
+cd "$root"
+[ -f "$build/build.ninja" ] || cmake --preset asan
+cmake --build --preset asan
+
+# Every report is fatal: UBSan in GCC's default (recovering) mode would only print and go on.
+# LeakSanitizer stays on for our code; scripts/lsan.supp lists the leaks that belong to the
+# OpenCL stack (PoCL, the ICD loader, the LLVM inside PoCL) and why.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+exec "$root/.venv/bin/lit" -s "$build/testsuite" "$build/testsuite/Unit" "$@"
