@@ -16,6 +16,10 @@ import json
 import os
 import sys
 
+# The chain is the stack-sizing tests' own (same add(a, b) signature as tex.cl's).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "graph"))
+from gen_graph import chain  # noqa: E402
+
 
 def material(root):
     return {"m": {"bsdf": "emission", "color": 1.0, "strength": {"node": root}}}
@@ -24,13 +28,6 @@ def material(root):
 def write_graph(path, nodes, root):
     with open(path, "w", encoding="utf-8") as f:
         json.dump({"texcc": 1, "nodes": nodes, "materials": material(root)}, f, indent=0)
-
-
-def chain(n):
-    nodes = [{"id": "n0", "fn": "add", "args": {"a": 0.0, "b": 1.0}}]
-    for i in range(1, n):
-        nodes.append({"id": f"n{i}", "fn": "add", "args": {"a": {"node": f"n{i-1}"}, "b": 1.0}})
-    return nodes, f"n{n-1}"
 
 
 def tree(n):
