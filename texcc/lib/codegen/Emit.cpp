@@ -144,8 +144,8 @@ static std::string fakeStackConstant(const std::string &W, const CompiledArg &A)
   }
 }
 
-std::string ArgEmitter::argument(const CompiledGraph &CG, const CompiledNode &N,
-                                 unsigned NodeIndex, const CompiledArg &A) const {
+std::string ArgEmitter::argument(const CompiledNode &N, unsigned NodeIndex,
+                                 const CompiledArg &A) const {
   const BaseType B = A.Type.Base;
   const std::string Word =
       RecordWord ? RecordWord(NodeIndex) + " + " + std::to_string(recordRelativeWord(N, A)) + "u"
@@ -154,7 +154,8 @@ std::string ArgEmitter::argument(const CompiledGraph &CG, const CompiledNode &N,
     if (Tgt == Target::Host)
       return hostArrayName(NodeIndex, A);
     // Relative to a record, the elements' offset is the array's {byteOffset, count} word.
-    std::string At = RecordWord ? "fakeStack[" + Word + "]" : std::to_string(A.ArrayByteOffset) + "u";
+    std::string At =
+        RecordWord ? "fakeStack[" + Word + "]" : std::to_string(A.ArrayByteOffset) + "u";
     return "(__global const " + spelling(B) + " *)((__global const uchar *)fakeStack + " + At +
            ")";
   }
@@ -182,7 +183,7 @@ std::string ArgEmitter::call(const CompiledGraph &CG, unsigned NodeIndex) const 
   std::vector<std::string> Args{"texcc_ctx"};
   size_t Length = Sig.RenamedName.size();
   for (const CompiledArg &A : N.Args) {
-    Args.push_back(argument(CG, N, NodeIndex, A));
+    Args.push_back(argument(N, NodeIndex, A));
     Length += Args.back().size() + 2;
   }
   // Long calls get one argument per line.

@@ -57,8 +57,8 @@ struct ArgEmitter {
   unsigned ArgIndent = 6;  // continuation indent when a call takes one argument per line
   std::function<std::string(unsigned Child)> ChildExpr;
   std::function<std::string(unsigned NodeIndex)> RecordWord;
-  std::string argument(const graph::CompiledGraph &CG, const graph::CompiledNode &N,
-                       unsigned NodeIndex, const graph::CompiledArg &A) const;
+  std::string argument(const graph::CompiledNode &N, unsigned NodeIndex,
+                       const graph::CompiledArg &A) const;
   /// `fn(texcc_ctx, arg0, arg1, ...)` for node NodeIndex.
   std::string call(const graph::CompiledGraph &CG, unsigned NodeIndex) const;
 };
