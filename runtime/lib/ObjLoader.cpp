@@ -104,6 +104,36 @@ std::string formatVec3(const Vec3 &V) {
   return Buf;
 }
 
+/// One triangle's corners as the file gives them (FileNormals: every corner has a normal).
+struct Face {
+  Vec3 P[3], N[3];
+  Vec2 UV[3];
+  bool FileNormals = true;
+};
+
+Face readFace(const tinyobj::attrib_t &A, const tinyobj::index_t *Idx, const std::string &Path) {
+  Face Fc;
+  for (int C = 0; C < 3; ++C) {
+    const tinyobj::index_t &I = Idx[C];
+    if (I.vertex_index < 0 || 3 * size_t(I.vertex_index) + 2 >= A.vertices.size())
+      throw Error(Path + ": invalid OBJ: vertex index out of range");
+    Fc.P[C] = {A.vertices[3 * I.vertex_index], A.vertices[3 * I.vertex_index + 1],
+               A.vertices[3 * I.vertex_index + 2]};
+    if (!std::isfinite(Fc.P[C][0]) || !std::isfinite(Fc.P[C][1]) || !std::isfinite(Fc.P[C][2]))
+      throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.vertex_index + 1) +
+                  " has a non-finite coordinate (" + formatVec3(Fc.P[C]) + ")");
+    if (I.normal_index >= 0 && 3 * size_t(I.normal_index) + 2 < A.normals.size())
+      Fc.N[C] = normalized({A.normals[3 * I.normal_index], A.normals[3 * I.normal_index + 1],
+                            A.normals[3 * I.normal_index + 2]});
+    else
+      Fc.FileNormals = false;
+    Fc.UV[C] = {0, 0};
+    if (I.texcoord_index >= 0 && 2 * size_t(I.texcoord_index) + 1 < A.texcoords.size())
+      Fc.UV[C] = {A.texcoords[2 * I.texcoord_index], A.texcoords[2 * I.texcoord_index + 1]};
+  }
+  return Fc;
+}
+
 /// Smooth normals for the triangles whose file gave none: the area-weighted average of the
 /// normals of the faces sharing the corner's position within 60 degrees (creases stay sharp).
 void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
@@ -158,27 +188,10 @@ TriangleMesh loadObj(const std::string &Path) {
   for (const auto &Shape : Reader.GetShapes()) {
     const auto &Idx = Shape.mesh.indices;
     for (size_t F = 0; F + 2 < Idx.size(); F += 3) {
-      bool FileNormals = true;
-      Vec3 P[3], N[3];
-      Vec2 UV[3];
-      for (int C = 0; C < 3; ++C) {
-        const auto &I = Idx[F + C];
-        if (I.vertex_index < 0 || 3 * size_t(I.vertex_index) + 2 >= A.vertices.size())
-          throw Error(Path + ": invalid OBJ: vertex index out of range");
-        P[C] = {A.vertices[3 * I.vertex_index], A.vertices[3 * I.vertex_index + 1],
-                A.vertices[3 * I.vertex_index + 2]};
-        if (!std::isfinite(P[C][0]) || !std::isfinite(P[C][1]) || !std::isfinite(P[C][2]))
-          throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.vertex_index + 1) +
-                      " has a non-finite coordinate (" + formatVec3(P[C]) + ")");
-        if (I.normal_index >= 0 && 3 * size_t(I.normal_index) + 2 < A.normals.size())
-          N[C] = normalized({A.normals[3 * I.normal_index], A.normals[3 * I.normal_index + 1],
-                             A.normals[3 * I.normal_index + 2]});
-        else
-          FileNormals = false;
-        UV[C] = {0, 0};
-        if (I.texcoord_index >= 0 && 2 * size_t(I.texcoord_index) + 1 < A.texcoords.size())
-          UV[C] = {A.texcoords[2 * I.texcoord_index], A.texcoords[2 * I.texcoord_index + 1]};
-      }
+      Face Fc = readFace(A, &Idx[F], Path);
+      const bool FileNormals = Fc.FileNormals;
+      const Vec3 *P = Fc.P, *N = Fc.N;
+      const Vec2 *UV = Fc.UV;
       // A zero-area face is never hit, has no normal, and as a light would have an infinite
       // sampling density: drop it.
       Vec3 Area = cross(sub(P[1], P[0]), sub(P[2], P[0]));
