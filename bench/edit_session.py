@@ -11,10 +11,12 @@ kernel build or build seconds (buildWaitSeconds) before it. PoCL's kernel cache 
 (POCL_KERNEL_CACHE=0) and texrender's program cache starts with only the fixed kernels, so
 every texture-kernel build is a real one.
 
-The per-hit cost renders the unedited graph once per configuration (no edits) and divides
-the texture kernels' device time (OpenCL profiling, stats.json) by the work-items of the
-texture stage (hit_attributes' work-items: every active path of every bounce, misses and
-untextured hits included, which return at once)."""
+The per-hit cost renders the unedited graph per configuration (no edits; 3 alternating
+repetitions quick, 5 full; minimum and median) and divides the texture kernels' device time
+(OpenCL profiling, stats.json) by the work-items of the texture stage (hit_attributes'
+work-items: every active path of every bounce, misses and untextured hits included, which
+return at once). shape runs its shape kernel (--tier=shape); "shape (interp fallback)" runs
+the same folder's proctex.interp.cl (--tier=interp)."""
 import os
 import shutil
 
@@ -74,32 +76,45 @@ def session(tools, name, mode, extra, opts):
             "textureBuilds": stats.get("textureBuilds", [])}
 
 
-def per_hit(tools, name, mode, extra, opts):
-    folder = os.path.join(tools.work, "perhit-" + name.replace("+", "-"))
-    common.texcc(tools, os.path.join(EDIT_DIR, "graph.json"), folder, mode)
-    stats, _, _ = common.texrender(tools, SCENE, folder, "perhit-" + name.replace("+", "-"),
-                                   opts + extra)
+def per_hit(tools, name, mode, extra, opts, rep):
+    folder = os.path.join(tools.work, "perhit-" + name.replace("+", "-").replace(" ", "-"))
+    if rep == 0:
+        common.texcc(tools, os.path.join(EDIT_DIR, "graph.json"), folder, mode)
+    stats, _, _ = common.texrender(tools, SCENE, folder, "perhit-%d" % rep, opts + extra)
     hits = stats["kernels"]["hit_attributes"]["workItems"]
-    seconds = common.texture_kernel_seconds(stats)
     return {"mode": name, "tier": stats["frames"][0]["tier"], "hits": hits,
-            "textureSeconds": seconds, "msPerMillionHits": 1e3 * seconds / hits * 1e6}
+            "textureSeconds": common.texture_kernel_seconds(stats)}
+
+
+def per_hit_rows(tools, quick):
+    """Alternating repetitions (the shared machine's load varies); the minimum is the
+    least-disturbed figure, the median is shown beside it."""
+    size = "256x256" if quick else "512x512"
+    opts = ["--size", size, "--spp", "2" if quick else "8"]
+    configs = CONFIGS[:4] + (("shape (interp fallback)", "shape", ["--tier=interp"]),)
+    samples = {name: [] for name, _, _ in configs}
+    for rep in range(3 if quick else 5):
+        for name, mode, extra in configs:
+            common.log("per-hit cost rep %d: %s" % (rep + 1, name))
+            samples[name].append(per_hit(tools, name, mode, extra, opts, rep))
+    rows = []
+    for name, runs in samples.items():
+        ms = [1e3 * r["textureSeconds"] / r["hits"] * 1e6 for r in runs]
+        rows.append({"mode": name, "tier": runs[0]["tier"], "hits": runs[0]["hits"],
+                     "msPerMillionHits": min(ms), "medianMsPerMillionHits": common.median(ms),
+                     "samples": ms})
+    return rows, int(opts[-1])
 
 
 def measure(tools, quick):
     size = "256x256" if quick else "512x512"
     opts = ["--size", size, "--spp", "1"]
-    rows, hits = [], []
+    rows = []
     with common.no_pocl_cache():
         for name, mode, extra in CONFIGS:
             common.log("edit session: %s" % name)
             rows.append(session(tools, name, mode, extra, opts))
-    hit_opts = ["--size", size, "--spp", "2" if quick else "8"]
-    # Per-hit cost: the program cache of the session runs is warm; --tier=interp measures the
-    # shape folder's fallback kernel, --tier=shape its shape kernel.
-    for name, mode, extra in CONFIGS[:3] + (("shape", "shape", ["--tier=shape"]),
-                                            ("shape (interp fallback)", "shape",
-                                             ["--tier=interp"])):
-        common.log("per-hit cost: %s" % name)
-        hits.append(per_hit(tools, name, mode, extra, hit_opts))
+    # The program cache of the session runs is warm: these runs measure kernels, not builds.
+    hits, hit_spp = per_hit_rows(tools, quick)
     return {"size": size, "spp": 1, "edits": 20, "rows": rows, "perHit": hits,
-            "perHitSpp": int(hit_opts[-1]), "poclKernelCache": False}
+            "perHitSpp": hit_spp, "poclKernelCache": False}

@@ -211,15 +211,16 @@ def edit_session_notes(d):
 def per_hit_lines(d):
     if not d.get("perHit"):
         return []
-    lines = ["Per-hit texture cost on the same scene (unedited graph, %s, %d spp; texture "
+    lines = ["Per-hit texture cost on the same scene (unedited `graph.json`, %s, %d spp; texture "
              "kernels' device time from stats.json over the texture stage's work-items, which "
-             "include misses and untextured hits):" % (d["size"], d["perHitSpp"]), "",
-             "| kernel | tier | work-items | texture device time | ms per 1M work-items |",
+             "include misses and untextured hits; minimum and median of %d alternating runs):" % (
+                 d["size"], d["perHitSpp"], len(d["perHit"][0]["samples"])), "",
+             "| kernel | tier | work-items | ms per 1M work-items (min) | median |",
              "|---|---|---|---|---|"]
     for h in d["perHit"]:
-        lines.append("| %s | %s | %d | %s s | **%s** |" % (
-            h["mode"], h["tier"], h["hits"], fmt(h["textureSeconds"]),
-            fmt(h["msPerMillionHits"])))
+        lines.append("| %s | %s | %d | **%s** | %s |" % (
+            h["mode"], h["tier"], h["hits"], fmt(h["msPerMillionHits"]),
+            fmt(h["medianMsPerMillionHits"])))
     return lines + [""]
 
 

@@ -302,8 +302,10 @@ LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer
     return Plan::Upload;
   if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Interp)
     return Plan::Upload;
+  // The fallback may still be building behind a shape kernel (neither was cached): then the
+  // edit regenerates in the foreground, as with --tier=shape.
   if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Auto)
-    return Plan::SwitchShapes;
+    return R.fallbackStackSlots() ? Plan::SwitchShapes : Plan::Regenerate;
   return Plan::Regenerate;
 }
 

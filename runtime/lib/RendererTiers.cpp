@@ -16,15 +16,13 @@ Renderer::~Renderer() {
     R->wait();
 }
 
-cl::Program Renderer::buildForeground(const std::string &Source, const std::string &Tier,
-                                      const std::string &Reason) {
+cl::Program Renderer::buildForeground(const std::string &Path, const std::string &Source,
+                                      const std::string &Tier, const std::string &Reason) {
   BuildEvent E;
   E.Kernel = Tier;
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
-  const bool Fallback = Lay.Mode == "shape" && Tier == "interp";
-  std::string Text = Fallback ? interpFallbackSource(Lay, FallbackSlots) : readKernelSource(Source);
-  cl::Program P = Cl->buildProgram(Source, Text, programOptions());
+  cl::Program P = Cl->buildProgram(Path, Source, programOptions());
   // PoCL's compile at the first launch is part of the build the frame waits for.
   warmUpKernels(*Cl, P, textureKernelNames());
   E.ReadySeconds = steadySeconds() - Epoch;
@@ -75,22 +73,34 @@ void Renderer::buildTextureKernel() {
     return;
   const char *Reason = FramesRendered ? "edit" : "initial";
   if (Lay.Mode != "shape") {
-    activate(buildForeground(Lay.KernelSource, Lay.Mode, Reason), Lay.Mode);
+    activate(buildForeground(Lay.KernelSource, readKernelSource(Lay.KernelSource), Lay.Mode,
+                             Reason),
+             Lay.Mode);
     return;
   }
-  // Something must render the next frame: the shape kernel when the policy insists or its
-  // binary is cached (a load, no build), else the interp fallback (usually cached: it changes
-  // only with the set of functions). In auto mode the fallback is kept for later rewirings.
+  buildShapeTiers(Reason);
+}
+
+void Renderer::buildShapeTiers(const char *Reason) {
+  // Something must render the next frame. A kernel whose binary is cached is a load, not a
+  // build: use it. With neither cached, tier auto builds the shape kernel first (on PoCL it
+  // builds faster than the fallback, whose switch holds every function) and the fallback
+  // behind it, for later rewirings.
   const TierPolicy P = Opts.Tier;
-  const bool ShapeCached = Cl->isCached(readKernelSource(Lay.KernelSource), programOptions());
-  if (P == TierPolicy::Shape || (P == TierPolicy::Auto && ShapeCached))
-    ShapeProgram = buildForeground(Lay.KernelSource, "shape", Reason);
-  if (P != TierPolicy::Shape)
-    InterpProgram = buildForeground(Lay.InterpFallback, "interp", Reason);
+  const std::string ShapeText = readKernelSource(Lay.KernelSource);
+  const std::string FallbackText = interpFallbackSource(Lay, FallbackSlots);
+  const bool ShapeCached = Cl->isCached(ShapeText, programOptions());
+  const bool FallbackCached = Cl->isCached(FallbackText, programOptions());
+  const bool Auto = P == TierPolicy::Auto;
+  if (P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached)))
+    ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, "shape", Reason);
+  if (P == TierPolicy::Interp || (Auto && FallbackCached))
+    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, "interp", Reason);
   activate(ShapeProgram() ? ShapeProgram : InterpProgram, ShapeProgram() ? "shape" : "interp");
-  if (P == TierPolicy::Auto && !ShapeProgram()) {
+  if (Auto && (!ShapeProgram() || !InterpProgram())) {
     Layout Same = Lay;
-    startBackgroundBuild([Same] { return Same; }, /*SameLayout=*/true, nullptr, Reason);
+    TierJob Job{/*SameLayout=*/true, /*Shape=*/!ShapeProgram(), /*Interp=*/!InterpProgram()};
+    startBackgroundBuild([Same] { return Same; }, Job, nullptr, Reason);
   }
 }
 
@@ -103,17 +113,27 @@ void Renderer::switchShapes(const std::vector<uint8_t> &ArgsBin,
   applyArguments(ArgsBin, Attributes);
   if (HasTextureWork && ActiveTier != "interp")
     activate(InterpProgram, "interp");
-  startBackgroundBuild(std::move(MakeLayout), /*SameLayout=*/false, std::move(Reencode),
+  startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true}, std::move(Reencode),
                        "shape change");
 }
 
-void Renderer::startBackgroundBuild(std::function<Layout()> MakeLayout, bool SameLayout,
+void Renderer::startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
                                     std::function<void(Layout &)> Reencode,
                                     const std::string &Reason) {
   supersedePending();
+  Queued = QueuedBuild{std::move(MakeLayout), Job, std::move(Reencode), Reason};
+  launchQueued();
+}
+
+void Renderer::launchQueued() {
+  // One build thread at a time: a superseded build cannot be cancelled, and letting it finish
+  // before the next one starts keeps rapid edits from piling up builds on the same cores.
+  reapRetired(false);
+  if (!Queued || Pending || !Retired.empty())
+    return;
   BuildEvent E;
-  E.Kernel = "shape";
-  E.Reason = Reason;
+  E.Kernel = Queued->Job.Shape ? "shape" : "interp";
+  E.Reason = Queued->Reason;
   E.Background = true;
   E.StartSeconds = steadySeconds() - Epoch;
   Events.push_back(E);
@@ -121,14 +141,16 @@ void Renderer::startBackgroundBuild(std::function<Layout()> MakeLayout, bool Sam
   std::string Options = programOptions();
   double Start = Epoch;
   Pending = std::make_unique<BackgroundBuild>(
-      [Ctx, MakeLayout = std::move(MakeLayout), SameLayout, Options, Start] {
-        return buildShapeTier(*Ctx, MakeLayout, SameLayout, Options, Start);
+      [Ctx, MakeLayout = std::move(Queued->MakeLayout), Job = Queued->Job, Options, Start] {
+        return buildShapeTier(*Ctx, MakeLayout, Job, Options, Start);
       },
       Events.size() - 1);
-  PendingReencode = std::move(Reencode);
+  PendingReencode = std::move(Queued->Reencode);
+  Queued.reset();
 }
 
 void Renderer::supersedePending() {
+  Queued.reset();
   if (!Pending)
     return;
   Events[Pending->eventIndex()].Superseded = true;
@@ -151,7 +173,7 @@ void Renderer::reapRetired(bool Wait) {
 }
 
 void Renderer::adoptReadyBuild() {
-  reapRetired(false);
+  launchQueued();
   if (!Pending || !Pending->ready())
     return;
   TierBuildResult R = Pending->take();
@@ -166,7 +188,8 @@ void Renderer::adoptReadyBuild() {
     PendingReencode = nullptr;
     return;
   }
-  E.FirstFrame = int(FramesRendered);
+  if (R.Shape() || !R.SameLayout)
+    E.FirstFrame = int(FramesRendered); // it renders this frame (an interp-only job does not)
   try {
     adopt(R);
   } catch (const cl::Error &Ex) {
@@ -181,19 +204,26 @@ void Renderer::adopt(TierBuildResult &R) {
     PendingReencode = nullptr;
     Lay = std::move(R.L);
     uploadLayoutData();
+  }
+  if (R.Interp()) {
     InterpProgram = R.Interp;
     FallbackSlots = R.FallbackSlots;
   }
-  ShapeProgram = R.Shape;
+  if (R.Shape())
+    ShapeProgram = R.Shape;
   if (HasTextureWork)
-    activate(ShapeProgram, "shape");
+    activate(ShapeProgram() ? ShapeProgram : InterpProgram, ShapeProgram() ? "shape" : "interp");
 }
 
 double Renderer::waitForBackgroundBuild() {
   double T0 = steadySeconds();
-  if (Pending)
-    Pending->wait();
-  adoptReadyBuild();
+  while (Pending || Queued || !Retired.empty()) {
+    reapRetired(/*Wait=*/true);
+    launchQueued();
+    if (Pending)
+      Pending->wait();
+    adoptReadyBuild();
+  }
   return steadySeconds() - T0;
 }
 

@@ -7,6 +7,9 @@
 #include <chrono>
 #include <fstream>
 #include <sstream>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 namespace texrender {
 
@@ -90,14 +93,15 @@ std::string interpFallbackSource(const Layout &L, unsigned &Capacity) {
 }
 
 TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
-                               bool SameLayout, const std::string &Options, double Epoch) {
+                               TierJob Job, const std::string &Options, double Epoch) {
   TierBuildResult R;
-  R.SameLayout = SameLayout;
+  R.SameLayout = Job.SameLayout;
   try {
     R.L = MakeLayout();
-    R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource), R.L.Entry,
-                           Options);
-    if (!SameLayout)
+    if (Job.Shape)
+      R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource),
+                             R.L.Entry, Options);
+    if (Job.Interp)
       R.Interp = buildAndWarm(Cl, R.L.InterpFallback, interpFallbackSource(R.L, R.FallbackSlots),
                               R.L.Entry, Options);
   } catch (const cl::Error &E) {
@@ -113,7 +117,12 @@ BackgroundBuild::BackgroundBuild(std::function<TierBuildResult()> Job, size_t Ev
     : EventIndex(EventIndex) {
   std::packaged_task<TierBuildResult()> Task(std::move(Job));
   Result = Task.get_future();
-  Thread = std::thread(std::move(Task));
+  Thread = std::thread([Task = std::move(Task)]() mutable {
+    // Frames first: on a CPU device the build competes with the renderer for the same cores
+    // (Linux: a thread's nice value is its own).
+    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), 19);
+    Task();
+  });
 }
 
 BackgroundBuild::~BackgroundBuild() {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,8 @@ struct RendererOptions {
   bool Progress = false;        // a progress bar on stderr (after one second)
   bool CheckNan = false;        // --check-nan: stop at the first non-finite texture output
   size_t MaxPathsPerPass = 1u << 18;
-  TierPolicy Tier = TierPolicy::Auto; // shape-mode layouts only (TextureTiers.h)
+  TierPolicy Tier = TierPolicy::Shape; // shape-mode layouts only (TextureTiers.h); texrender
+                                       // picks auto for edit sessions
   /// --ao-method=loop: one work-item per hit loops over its AO rays (ao_loop) instead of one
   /// work-item per AO ray (ao_trace + ao_reduce). Same rays, same image; kept to measure the
   /// paper's claim that the parallel launch is faster (bench/ao.py).
@@ -88,7 +90,7 @@ public:
   /// Waits for the background build in flight, if any, and switches to its kernels. Returns
   /// the seconds waited.
   double waitForBackgroundBuild();
-  bool backgroundBuildPending() const { return Pending != nullptr; }
+  bool backgroundBuildPending() const { return Pending || Queued; }
 
   TierPolicy tierPolicy() const { return Opts.Tier; }
   const std::string &activeTier() const { return ActiveTier; }
@@ -116,13 +118,15 @@ private:
   void allocateWorkBuffers(size_t MaxPaths);
   void uploadLayoutData();
   void buildTextureKernel();
-  cl::Program buildForeground(const std::string &Source, const std::string &Tier,
-                              const std::string &Reason);
+  void buildShapeTiers(const char *Reason);
+  cl::Program buildForeground(const std::string &Path, const std::string &Source,
+                              const std::string &Tier, const std::string &Reason);
   void activate(const cl::Program &P, const std::string &Tier);
   std::vector<std::string> textureKernelNames() const;
-  void startBackgroundBuild(std::function<Layout()> MakeLayout, bool SameLayout,
+  void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
                             std::function<void(Layout &)> Reencode, const std::string &Reason);
   void supersedePending();
+  void launchQueued();
   void reapRetired(bool Wait);
   void adoptReadyBuild();
   void adopt(TierBuildResult &R);
@@ -159,6 +163,14 @@ private:
   std::unique_ptr<BackgroundBuild> Pending;
   std::function<void(Layout &)> PendingReencode;
   std::vector<std::unique_ptr<BackgroundBuild>> Retired;
+  // The newest build requested while a superseded one still runs: it starts when that ends.
+  struct QueuedBuild {
+    std::function<Layout()> MakeLayout;
+    TierJob Job;
+    std::function<void(Layout &)> Reencode;
+    std::string Reason;
+  };
+  std::optional<QueuedBuild> Queued;
   std::vector<BuildEvent> Events;
   unsigned FramesRendered = 0;
 

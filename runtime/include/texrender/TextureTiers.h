@@ -42,9 +42,9 @@ struct BuildEvent {
 /// What a background job produced.
 struct TierBuildResult {
   Layout L;                  // the layout the programs belong to
-  bool SameLayout = false;   // L is the layout the renderer runs (only the shape kernel is new)
-  cl::Program Shape;         // L's shape kernel
-  cl::Program Interp;        // L's interp fallback (new layouts only)
+  bool SameLayout = false;   // L is the layout the renderer runs
+  cl::Program Shape;         // L's shape kernel (if the job built it)
+  cl::Program Interp;        // L's interp fallback (if the job built it)
   unsigned FallbackSlots = 0; // its value-stack capacity (interpFallbackSource)
   double ReadySeconds = 0;
   std::string Error;
@@ -57,13 +57,20 @@ struct TierBuildResult {
 /// (the spill buffer is sized by it). The shape kernel keeps its values in locals.
 std::string interpFallbackSource(const Layout &L, unsigned &Capacity);
 
-/// Builds L's shape kernel and, for a new layout, its interp fallback, then launches each
-/// once over an empty range on a private queue: PoCL compiles the work-group function at the
-/// first launch, and that compile belongs to the build, not to the first frame that uses it.
-/// MakeLayout runs first, on the calling thread (e.g. texcc regenerating a rewired graph).
-/// Never throws: a failure is returned in Error.
+/// What a background job builds.
+struct TierJob {
+  bool SameLayout = false; // for the layout the renderer runs, else for MakeLayout's new one
+  bool Shape = true;       // the layout's shape kernel
+  bool Interp = false;     // the layout's interp fallback
+};
+
+/// Builds the programs Job names for the layout MakeLayout gives (run first, on the calling
+/// thread: e.g. texcc regenerating a rewired graph), then launches each once over an empty
+/// range on a private queue: PoCL compiles the work-group function at the first launch, and
+/// that compile belongs to the build, not to the first frame that uses it. Never throws: a
+/// failure is returned in Error.
 TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
-                               bool SameLayout, const std::string &Options, double Epoch);
+                               TierJob Job, const std::string &Options, double Epoch);
 
 /// Launches each of Kernels of P once over one work-group whose items all return at once
 /// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here.
