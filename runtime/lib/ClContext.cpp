@@ -1,6 +1,7 @@
 #include "texrender/ClContext.h"
 #include "texrender/Error.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -195,8 +196,16 @@ cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_fl
     Memory[Label] = Bytes;
     return B;
   } catch (const cl::Error &E) {
+    // Say why: an image too large for the device fails here, on its per-pixel buffers.
+    const double GiB = double(1u << 30);
+    char Limits[160];
+    std::snprintf(Limits, sizeof Limits,
+                  " (%.1f GiB; the device allows %.1f GiB per buffer, %.1f GiB in all)",
+                  double(Bytes) / GiB,
+                  double(Device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>()) / GiB,
+                  double(Device.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>()) / GiB);
     throw Error("cannot allocate " + std::to_string(Bytes) + " bytes for " + Label + " on '" +
-                DeviceName + "': " + clErrorName(E.err()));
+                DeviceName + "': " + clErrorName(E.err()) + Limits);
   }
 }
 
