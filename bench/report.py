@@ -199,10 +199,12 @@ def edit_session_notes(d):
         return []
     waits = [f for f in tiered["frames"] if f["kernelBuilds"] or f["buildWaitSeconds"] > 0]
     out = ["In the tiered run, %d of 20 frames waited for a build%s. A frame waits in tiered "
-           "mode only when the interp fallback itself cannot run the edited graph (a function "
-           "it lacks, or more value-stack slots than its `TEXCC_STACK_SLOTS`); then that "
-           "fallback is rebuilt in the foreground and the shape kernel still builds in the "
-           "background." % (len(waits), (": " + "; ".join(
+           "mode only when the interp fallback cannot run the edited graph: a function it "
+           "lacks (a new one, or one a regeneration dropped), more value-stack slots than its "
+           "headroom, or a fallback still building behind a foreground shape build; then the "
+           "shape kernel is built in the foreground and the fallback behind it. The other "
+           "rewirings rendered at once with the interp tier while texcc and the builds ran on "
+           "the background thread (nice 19)." % (len(waits), (": " + "; ".join(
                "frame %d `%s` (%.2f s)" % (f["index"], f["edit"], f["buildWaitSeconds"])
                for f in waits)) if waits else ""), ""]
     return out
