@@ -1,4 +1,5 @@
 #include "texrender/Image.h"
+#include "texcc/StaleTemporaries.h"
 #include "texrender/Error.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -78,6 +79,7 @@ void writeAtomically(const std::string &Path,
   fs::path Target(Path);
   fs::path Temp = Target.parent_path() /
                   ("." + Target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  texcc::removeStaleTemporaries(Target.parent_path().string(), {Target.filename().string()});
   std::error_code Ignored;
   try {
     Write(Temp.string());

@@ -1,9 +1,9 @@
 // Atomic output: every file goes to a temporary name in OUTDIR first; only when all are written
 // are they renamed into place, so an error leaves the previous outputs as they were.
 #include "texcc/Codegen/Codegen.h"
+#include "texcc/StaleTemporaries.h"
 
 #include <cerrno>
-#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -19,28 +19,6 @@ static void removeAll(const std::vector<fs::path> &Paths) {
     fs::remove(P, Ignored);
 }
 
-/// A texcc killed while writing leaves its hidden temporaries (".proctex.cl.tmp<pid>",
-/// ".proctex.cl.old.tmp<pid>"); the next run into the folder removes those of processes that
-/// no longer exist.
-static void removeStaleTemporaries(const std::string &Dir, const std::vector<OutputFile> &Files) {
-  std::error_code EC;
-  for (const fs::directory_entry &E : fs::directory_iterator(Dir, EC)) {
-    const std::string Name = E.path().filename().string();
-    for (const OutputFile &F : Files)
-      for (const std::string Prefix : {"." + F.Name + ".tmp", "." + F.Name + ".old.tmp"}) {
-        if (Name.compare(0, Prefix.size(), Prefix) != 0)
-          continue;
-        const std::string Pid = Name.substr(Prefix.size());
-        if (Pid.empty() || Pid.find_first_not_of("0123456789") != std::string::npos)
-          continue;
-        if (::kill(static_cast<pid_t>(std::stol(Pid)), 0) != 0 && errno == ESRCH) {
-          std::error_code Ignored;
-          fs::remove(E.path(), Ignored);
-        }
-      }
-  }
-}
-
 bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile> &Files,
                             std::string &Error) {
   std::error_code EC;
@@ -54,7 +32,10 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
       Error = "cannot write '" + (fs::path(Dir) / F.Name).string() + "': it is a folder";
       return false;
     }
-  removeStaleTemporaries(Dir, Files);
+  std::vector<std::string> Names;
+  for (const OutputFile &F : Files)
+    Names.push_back(F.Name);
+  texcc::removeStaleTemporaries(Dir, Names);
   const std::string Suffix = ".tmp" + std::to_string(static_cast<long>(::getpid()));
   std::vector<fs::path> Temps;
   for (const OutputFile &F : Files) {
