@@ -239,10 +239,10 @@ def resources_section(d):
              "-Rpass-analysis=kernel-resource-usage`, libclc `amdgcn--amdhsa.bc` linked. NVPTX: "
              "`-target nvptx64-nvidia-cuda`, libclc `nvptx64--nvidiacl.bc` linked, then `ptxas -v "
              "--gpu-name sm_80` (%s). OpenCL C 1.2, `-O3`, `-D__OPENCL_VERSION__=120` (clang does "
-             "not define it; texcc_abi.h tests it) and `-fgnu89-inline`: texcc declares helpers "
-             "`inline` without `static`, which under C99 rules leaves an undefined external when "
-             "clang does not inline them (ptxas: `Unresolved extern function "
-             "'texcc_material_0'` for scratches/inline); PoCL accepts it. Wavefront: the "
+             "not define it; texcc_abi.h tests it). Every helper texcc and the kernels define is "
+             "`static inline` (a plain C99 `inline` leaves an undefined external where clang "
+             "does not inline it: ptxas rejected scratches/inline with `Unresolved extern "
+             "function 'texcc_material_0'` before). Wavefront: the "
              "largest value over its kernels (count in brackets). Exact commands: "
              "`bench/results/resources.json`." % (d["clang"], d["rows"][0]["ptxas"] or
                                                   "ptxas not found: NVPTX not measured"), "",

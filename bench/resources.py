@@ -14,7 +14,7 @@ GRAPHS = {"rust": "examples/rust/graph.json", "scratches": "examples/scratches/g
 CLC = ("/usr/lib/clc", "/usr/share/clc")
 CLANG = "clang-15"
 CL_FLAGS = ["-x", "cl", "-cl-std=CL1.2", "-D__OPENCL_VERSION__=120", "-Xclang",
-            "-finclude-default-header", "-O3", "-fgnu89-inline"]
+            "-finclude-default-header", "-O3"]
 
 
 def libclc(name):
@@ -101,7 +101,7 @@ def entries_of(src):
 def measure(tools, quick):
     rows = []
     for tex, graph in GRAPHS.items():
-        for mode in common.MODES:
+        for mode in common.MODES + ("shape",):
             folder = os.path.join(tools.work, "res-%s-%s" % (tex, mode))
             common.texcc(tools, os.path.join(common.ROOT, graph), folder, mode)
             src = os.path.join(folder, "proctex.cl")

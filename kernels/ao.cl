@@ -10,13 +10,13 @@
 #include "rt_surface.h"
 
 /* Whether hit i's material reads AO (the other hits trace no AO rays). */
-inline bool ao_wanted(RtHit h, __global const RtTriAttr *triAttrs, __global const RtMesh *meshes,
+static inline bool ao_wanted(RtHit h, __global const RtTriAttr *triAttrs, __global const RtMesh *meshes,
                       __global const RtMaterial *materials) {
   return h.tri >= 0 && materials[meshes[triAttrs[h.tri].mesh].material].readsAo;
 }
 
 /* AO ray j of the path p's hit h: 1 if it hits something within aoDistance. */
-inline int ao_occluded(__global const RtBvhNode *nodes, __global const RtTri *tris,
+static inline int ao_occluded(__global const RtBvhNode *nodes, __global const RtTri *tris,
                        __global const RtTriAttr *triAttrs, __global const RtPath *p, RtHit h,
                        int j, float aoDistance, float eps, uint seed) {
   RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);

@@ -6,14 +6,14 @@
 #include "rt_bsdf.h"
 #include "rt_surface.h"
 
-inline float4 rt_input(RtBsdfInput in, __global const float4 *outputs, int base) {
+static inline float4 rt_input(RtBsdfInput in, __global const float4 *outputs, int base) {
   if (in.output < 0)
     return in.value;
   float4 v = outputs[base + in.output];
   return in.components == 1 ? (float4)(v.x) : v;
 }
 
-inline int rt_pick_light(__global const float *cdf, int n, float u) {
+static inline int rt_pick_light(__global const float *cdf, int n, float u) {
   int lo = 0, hi = n - 1;
   while (lo < hi) {
     int mid = (lo + hi) / 2;
@@ -27,7 +27,7 @@ inline int rt_pick_light(__global const float *cdf, int n, float u) {
 
 /* Radiance arriving from the environment (sky and sun) along d, MIS-weighted against the pdf
  * with which next-event estimation would have chosen d. */
-inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, float3 d,
+static inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, float3 d,
                              float bsdfPdf, int specular) {
   float3 le = (float3)(0.0f);
   if (prm.skyLight >= 0) {
@@ -47,7 +47,7 @@ inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, 
 
 /* Samples a light from the surface point; returns the direction, the distance limit, the
  * emitted radiance and the solid-angle pdf (0: no contribution). */
-inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
+static inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
                              __global const RtTri *tris, RtShadeParams prm, float3 p,
                              uint *rng, float3 *wi, float *tmax, float3 *le) {
   int li = rt_pick_light(cdf, prm.numLights, rt_rand(rng));

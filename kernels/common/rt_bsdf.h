@@ -8,29 +8,29 @@
 #include "rt_types.h"
 
 /* roughness is perceptual: alpha = roughness^2, kept away from 0 (use `mirror` for a delta). */
-inline float rt_ggx_alpha(float roughness) {
+static inline float rt_ggx_alpha(float roughness) {
   float r = clamp(roughness, 0.0f, 1.0f);
   return fmax(r * r, 1e-3f);
 }
 
-inline float rt_ggx_d(float cosH, float a2) {
+static inline float rt_ggx_d(float cosH, float a2) {
   float c2 = cosH * cosH;
   float den = c2 * (a2 - 1.0f) + 1.0f;
   return a2 / (RT_PI * den * den);
 }
 
-inline float rt_ggx_g1(float cosV, float a2) {
+static inline float rt_ggx_g1(float cosV, float a2) {
   return 2.0f * cosV / (cosV + sqrt(a2 + (1.0f - a2) * cosV * cosV));
 }
 
-inline float3 rt_schlick(float3 f0, float cosD) {
+static inline float3 rt_schlick(float3 f0, float cosD) {
   float m = 1.0f - clamp(cosD, 0.0f, 1.0f);
   float m5 = m * m * m * m * m;
   return f0 + (1.0f - f0) * m5;
 }
 
 /* f and pdf of a non-delta leaf (diffuse or glossy). */
-inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float3 n, float3 wo,
+static inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float3 n, float3 wo,
                            float3 wi, float *pdf) {
   float cosI = dot(wi, n), cosO = dot(wo, n);
   *pdf = 0.0f;
@@ -56,7 +56,7 @@ inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float3 n, fl
 }
 
 /* Samples wi for a leaf; returns the weight f*cos/pdf (0 when the sample is invalid). */
-inline float3 rt_bsdf_sample(int type, float3 color, float roughness, float3 n, float3 wo,
+static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, float3 n, float3 wo,
                              float u1, float u2, float3 *wi, float *pdf, int *delta) {
   *delta = 0;
   if (type == RT_BSDF_MIRROR) {

@@ -8,7 +8,7 @@
 
 
 /* Moeller-Trumbore; returns t in (tmin, tmax) or a negative value, with barycentrics. */
-inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3 d, float tmin,
+static inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3 d, float tmin,
                               float tmax, float *bu, float *bv) {
   float3 e1 = tri->e1.xyz, e2 = tri->e2.xyz;
   float3 p = cross(d, e2);
@@ -33,7 +33,7 @@ inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3 d, flo
 }
 
 /* Slab test; returns the entry distance or a value > tmax on a miss. */
-inline float rt_intersect_box(__global const RtBvhNode *n, float3 o, float3 invd, float tmax) {
+static inline float rt_intersect_box(__global const RtBvhNode *n, float3 o, float3 invd, float tmax) {
   float3 bmin = (float3)(n->bmin[0], n->bmin[1], n->bmin[2]);
   float3 bmax = (float3)(n->bmax[0], n->bmax[1], n->bmax[2]);
   float3 t0 = (bmin - o) * invd;
@@ -44,7 +44,7 @@ inline float rt_intersect_box(__global const RtBvhNode *n, float3 o, float3 invd
   return tn <= tf ? tn : INFINITY;
 }
 
-inline float3 rt_safe_inverse(float3 d) {
+static inline float3 rt_safe_inverse(float3 d) {
   const float tiny = 1e-30f;
   return (float3)(1.0f / (fabs(d.x) > tiny ? d.x : copysign(tiny, d.x)),
                   1.0f / (fabs(d.y) > tiny ? d.y : copysign(tiny, d.y)),
@@ -53,7 +53,7 @@ inline float3 rt_safe_inverse(float3 d) {
 
 /* Traverses the BVH. anyHit: stop at the first intersection (shadow and AO rays). Returns the
  * hit (tri = -1 on a miss). */
-inline RtHit rt_trace(__global const RtBvhNode *nodes, __global const RtTri *tris, float3 o,
+static inline RtHit rt_trace(__global const RtBvhNode *nodes, __global const RtTri *tris, float3 o,
                       float3 d, float tmin, float tmax, int anyHit) {
   RtHit hit;
   hit.t = tmax;

@@ -15,7 +15,7 @@ typedef struct RtSurface {
   int tri;
 } RtSurface;
 
-inline RtSurface rt_surface(__global const RtTri *tris, __global const RtTriAttr *attrs,
+static inline RtSurface rt_surface(__global const RtTri *tris, __global const RtTriAttr *attrs,
                             float3 o, float3 d, RtHit h) {
   RtSurface s;
   __global const RtTri *t = &tris[h.tri];
@@ -45,7 +45,7 @@ inline RtSurface rt_surface(__global const RtTri *tris, __global const RtTriAttr
 
 /* Where a ray leaving the surface starts: offset along the geometric normal, on the side of
  * the outgoing direction, by an amount that grows with the magnitude of the position. */
-inline float3 rt_offset(RtSurface s, float3 dir, float eps) {
+static inline float3 rt_offset(RtSurface s, float3 dir, float eps) {
   float scale = eps * (1.0f + rt_max3(fabs(s.p)));
   return s.p + (dot(dir, s.ng) >= 0.0f ? scale : -scale) * s.ng;
 }

@@ -18,22 +18,22 @@ typedef struct TexccCtx {
 #define TEXCC_CTX_ARG texcc_ctx
 
 /* readAttr("Name") lowers to texcc_attr_Name(texcc_ctx). */
-inline float3 texcc_attr_WorldPos(const TexccCtx *c) { return c->hit.worldPos.xyz; }
-inline float3 texcc_attr_ObjectPos(const TexccCtx *c) { return c->hit.objectPos.xyz; }
-inline float3 texcc_attr_Normal(const TexccCtx *c) { return c->hit.normal.xyz; }
-inline float3 texcc_attr_GeomNormal(const TexccCtx *c) { return c->hit.geomNormal.xyz; }
-inline float3 texcc_attr_Tangent(const TexccCtx *c) { return c->hit.tangent.xyz; }
-inline float2 texcc_attr_TexCoord0(const TexccCtx *c) { return c->hit.uvAO.xy; }
-inline float texcc_attr_AO(const TexccCtx *c) { return c->hit.uvAO.z; }
-inline float3 texcc_attr_ViewDir(const TexccCtx *c) { return c->hit.viewDir.xyz; }
+static inline float3 texcc_attr_WorldPos(const TexccCtx *c) { return c->hit.worldPos.xyz; }
+static inline float3 texcc_attr_ObjectPos(const TexccCtx *c) { return c->hit.objectPos.xyz; }
+static inline float3 texcc_attr_Normal(const TexccCtx *c) { return c->hit.normal.xyz; }
+static inline float3 texcc_attr_GeomNormal(const TexccCtx *c) { return c->hit.geomNormal.xyz; }
+static inline float3 texcc_attr_Tangent(const TexccCtx *c) { return c->hit.tangent.xyz; }
+static inline float2 texcc_attr_TexCoord0(const TexccCtx *c) { return c->hit.uvAO.xy; }
+static inline float texcc_attr_AO(const TexccCtx *c) { return c->hit.uvAO.z; }
+static inline float3 texcc_attr_ViewDir(const TexccCtx *c) { return c->hit.viewDir.xyz; }
 
 /* readSetting("Name") lowers to texcc_setting_Name(texcc_ctx). */
-inline float texcc_setting_Time(const TexccCtx *c) { return c->settings->time; }
-inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->frame; }
-inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->settings->cameraPos.xyz; }
+static inline float texcc_setting_Time(const TexccCtx *c) { return c->settings->time; }
+static inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->frame; }
+static inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->settings->cameraPos.xyz; }
 
 /* Attribute by id, widened to float4 (the interpreter's attribute arguments). */
-inline float4 texcc_attr_by_id(const TexccCtx *c, uint id) {
+static inline float4 texcc_attr_by_id(const TexccCtx *c, uint id) {
   switch (id) {
   case TEXCC_ATTR_WORLDPOS: return c->hit.worldPos;
   case TEXCC_ATTR_OBJECTPOS: return c->hit.objectPos;
@@ -47,7 +47,7 @@ inline float4 texcc_attr_by_id(const TexccCtx *c, uint id) {
   }
 }
 
-inline float4 texcc_texel(__global const float4 *texels, TexccImageInfo im, int x, int y) {
+static inline float4 texcc_texel(__global const float4 *texels, TexccImageInfo im, int x, int y) {
   x = x % im.width;
   if (x < 0) x += im.width;
   y = y % im.height;
@@ -57,7 +57,7 @@ inline float4 texcc_texel(__global const float4 *texels, TexccImageInfo im, int 
 
 /* tex2D(s, uv) lowers to texcc_tex2D(texcc_ctx, s, uv): bilinear, wrapping in both axes,
  * linear RGBA. An out-of-range image index reads magenta, never out of bounds. */
-inline float4 texcc_tex2D(const TexccCtx *c, sam2D s, float2 uv) {
+static inline float4 texcc_tex2D(const TexccCtx *c, sam2D s, float2 uv) {
   if (s < 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);
   TexccImageInfo im = c->images[s];
   if (im.width <= 0 || im.height <= 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);

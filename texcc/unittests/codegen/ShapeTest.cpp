@@ -118,7 +118,7 @@ CodegenOptions shapeOptions() {
 
 TEST(ShapeKernel, OneBodyPerShapeAndACaseForEveryMaterial) {
   std::string K = generateKernel(compile(GraphText), shapeOptions());
-  EXPECT_EQ(count(K, "inline void texcc_shape_"), 3u);
+  EXPECT_EQ(count(K, "static inline void texcc_shape_"), 3u);
   EXPECT_EQ(count(K, "texcc_shape_0(texcc_ctx, fakeStack, prog, out);"), 1u);
   EXPECT_NE(K.find("  case 0: /* 'a' */\n  case 1: /* 'b' */\n    texcc_shape_0("),
             std::string::npos);
