@@ -77,6 +77,14 @@ static const char *evaluationSummary(Mode M, Target T) {
   return "";
 }
 
+/// The graph's file name only: the kernel text is the runtime's program-cache key, and a live
+/// edit regenerates the kernel from a copy of the graph in a temporary folder; with the folder
+/// in the text, a regenerated kernel would never be found in the cache.
+static std::string graphFileName(const std::string &Path) {
+  size_t Slash = Path.find_last_of('/');
+  return Slash == std::string::npos ? Path : Path.substr(Slash + 1);
+}
+
 static void emitHeaderComment(std::ostringstream &OS, const CompiledGraph &CG,
                               const CodegenOptions &Opts) {
   const bool Host = Opts.Tgt == Target::Host;
@@ -84,7 +92,7 @@ static void emitHeaderComment(std::ostringstream &OS, const CompiledGraph &CG,
      << "; do not edit, regenerate with texcc.\n"
      << " *   mode:   " << modeName(Opts.EvalMode) << "    target: " << targetName(Opts.Tgt)
      << "\n"
-     << " *   graph:  " << Opts.GraphPath << "\n"
+     << " *   graph:  " << graphFileName(Opts.GraphPath) << " (its path: layout.json \"graph\")\n"
      << " *   live:   " << CG.Nodes.size() << " nodes, " << CG.FunctionsById.size()
      << " texture functions, " << CG.Materials.size() << " materials, value stack "
      << CG.StackSlots << " float4 slots" << (CG.Spill ? " (spilled to scratch)" : "") << "\n";
