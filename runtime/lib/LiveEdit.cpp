@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
@@ -97,6 +98,35 @@ std::set<std::string> removeNodesWithoutSignature(texcc::graph::Graph &G,
   return Gone;
 }
 
+/// Arguments baked on texcc's command line (--bake NODE.ARG) are marked "bake" in layout.json's
+/// nodes but absent from graph.json: writes them into Graph as {"value": v, "bake": true}, so
+/// that a regeneration keeps them baked and an edit of one is known to change the shape.
+void carryCommandLineBakes(json &Graph, const std::string &LayoutText) {
+  json Layout = json::parse(LayoutText, nullptr, false);
+  if (!Layout.is_object() || !Layout.contains("nodes") || !Graph.contains("nodes") ||
+      !Graph["nodes"].is_array())
+    return;
+  std::map<std::string, std::vector<std::string>> Baked; // node id -> baked argument names
+  for (const json &N : Layout["nodes"]) {
+    for (const json &A : N.value("args", json::array())) {
+      if (!A.value("bake", false))
+        continue;
+      Baked[N.value("id", "")].push_back(A.value("name", ""));
+      for (const json &Merged : N.value("merged", json::array()))
+        if (Merged.is_string())
+          Baked[Merged.get<std::string>()].push_back(A.value("name", ""));
+    }
+  }
+  for (json &N : Graph["nodes"]) {
+    auto It = Baked.find(N.value("id", ""));
+    if (It == Baked.end() || !N.contains("args") || !N["args"].is_object())
+      continue;
+    for (const std::string &Arg : It->second)
+      if (N["args"].contains(Arg) && !N["args"][Arg].is_object())
+        N["args"][Arg] = json{{"value", N["args"][Arg]}, {"bake", true}};
+  }
+}
+
 } // namespace
 
 std::string findTexcc() {
@@ -144,6 +174,7 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
   } catch (const json::exception &Ex) {
     throw Error(Lay.GraphPath + ": invalid JSON: " + Ex.what());
   }
+  carryCommandLineBakes(GraphDoc, Lay.Text);
   initEditor(Text);
 }
 
