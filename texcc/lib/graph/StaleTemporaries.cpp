@@ -15,7 +15,7 @@ void removeStaleTemporaries(const std::string &Dir, const std::vector<std::strin
   for (const fs::directory_entry &E : fs::directory_iterator(Dir.empty() ? "." : Dir, EC)) {
     const std::string Name = E.path().filename().string();
     for (const std::string &N : Names)
-      for (const std::string Prefix : {"." + N + ".tmp", "." + N + ".old.tmp"}) {
+      for (const std::string &Prefix : {"." + N + ".tmp", "." + N + ".old.tmp"}) {
         if (Name.compare(0, Prefix.size(), Prefix) != 0)
           continue;
         const std::string Pid = Name.substr(Prefix.size());
