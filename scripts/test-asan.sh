@@ -14,7 +14,8 @@ cmake --build --preset asan
 # Every report is fatal: UBSan in GCC's default (recovering) mode would only print and go on.
 # LeakSanitizer stays on for our code; scripts/lsan.supp lists the leaks that belong to the
 # OpenCL stack (PoCL, the ICD loader, the LLVM inside PoCL) and why.
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+# strict_string_checks: the C strings we pass to libc are checked up to their terminator.
+export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 exec "$root/.venv/bin/lit" -s "$build/testsuite" "$build/testsuite/Unit" "$@"
