@@ -14,10 +14,13 @@ SCENE = os.path.join(common.ROOT, "examples", "atrium", "scene.json")
 
 
 def read_exr(path):
-    import mitsuba as mi
-    if mi.variant() is None:
-        mi.set_variant("scalar_rgb")
-    return np.array(mi.Bitmap(path), dtype=np.float32)[:, :, :3]
+    """Linear RGB of texrender's EXR (OpenEXR's Python bindings, bench/requirements.txt)."""
+    import OpenEXR
+    with OpenEXR.File(path) as f:
+        channels = f.channels()
+        if "RGB" in channels:
+            return np.array(channels["RGB"].pixels, dtype=np.float32)[:, :, :3]
+        return np.stack([np.array(channels[c].pixels, dtype=np.float32) for c in "RGB"], axis=-1)
 
 
 def flip_error(ref, img):

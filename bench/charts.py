@@ -8,7 +8,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import common  # noqa: E402
 
-COLORS = {"interp": "tab:blue", "inline": "tab:orange", "wavefront": "tab:green"}
+COLORS = {"interp": "tab:blue", "inline": "tab:orange", "wavefront": "tab:green",
+          "shape": "tab:red"}
 
 
 def _save(fig, name):
@@ -25,7 +26,7 @@ def table1(data):
     labels = ["Cycles-sim (paper)", "RTX (paper)", "paper's texcc"] + \
         ["texcc %s (ours)" % m for m in common.MODES]
     textures = ["rust", "scratches"]
-    width = 0.13
+    width = 0.8 / len(labels)
     for i, label in enumerate(labels):
         values = []
         for tex in textures:
@@ -35,7 +36,7 @@ def table1(data):
             else:
                 values.append(next(r["increasePercent"] for r in rows
                                    if r["mode"] == common.MODES[i - 3]))
-        xs = [t + (i - 2.5) * width for t in range(len(textures))]
+        xs = [t + (i - (len(labels) - 1) / 2) * width for t in range(len(textures))]
         ax.bar(xs, values, width, label=label, hatch="//" if i < 3 else None,
                color=("0.3", "0.55", "0.8")[i] if i < 3 else COLORS[common.MODES[i - 3]],
                edgecolor="black", linewidth=0.4)

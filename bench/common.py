@@ -13,7 +13,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH = os.path.join(ROOT, "bench")
 RESULTS = os.path.join(BENCH, "results")
 CHARTS = os.path.join(BENCH, "charts")
-MODES = ("interp", "inline", "wavefront")
+MODES = ("interp", "inline", "wavefront", "shape")
 
 # Kernels of texrender that are not the texture kernel (docs/runtime.md).
 FIXED_KERNELS = {"raygen", "closest_hit_primary", "closest_hit_bounce", "hit_attributes",
