@@ -1,6 +1,0 @@
-// The prefix is the file stem made an identifier: 'rename-prefix-sanitized.cl' gives
-// 'rename_prefix_sanitized_'.
-// RUN: texcc-fe %s | FileCheck %s
-
-// CHECK: {{^}}float rename_prefix_sanitized_f(TEXCC_CTX_PARAM, float x) { return x; }
-float f(float x) { return x; }
