@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 namespace texrender {
@@ -93,6 +94,15 @@ void writeAtomically(const std::string &Path,
     fs::remove(Temp, Ignored);
     throw Error(Path + ": cannot write: " + EC.message());
   }
+}
+
+std::string readWholeFile(const std::string &Path, const std::string &What) {
+  std::ifstream In(Path, std::ios::binary);
+  if (!In)
+    throw Error(Path + ": cannot open" + What);
+  std::stringstream SS;
+  SS << In.rdbuf();
+  return SS.str();
 }
 
 void writeTextFile(const std::string &Path, const std::string &Text) {

@@ -1,5 +1,6 @@
 #include "texrender/Layout.h"
 #include "texrender/Error.h"
+#include "texrender/Image.h"
 
 #include <nlohmann/json.hpp>
 
@@ -38,13 +39,8 @@ std::string Layout::materialNames() const {
 
 namespace {
 
-std::string readFile(const std::string &Path, bool Binary = false) {
-  std::ifstream In(Path, Binary ? std::ios::binary : std::ios::in);
-  if (!In)
-    throw Error(Path + ": cannot open (is --textures the texcc output folder?)");
-  std::stringstream SS;
-  SS << In.rdbuf();
-  return SS.str();
+std::string readFile(const std::string &Path) {
+  return readWholeFile(Path, " (is --textures the texcc output folder?)");
 }
 
 unsigned componentsOf(const std::string &Type) {
@@ -237,7 +233,7 @@ Layout loadLayout(const std::string &OutDir) {
     throw Error(File + ": malformed layout: " + E.what());
   }
   std::string ArgsPath = (fs::path(OutDir) / "args.bin").string();
-  std::string Args = readFile(ArgsPath, true);
+  std::string Args = readFile(ArgsPath);
   L.ArgsBin.assign(Args.begin(), Args.end());
   // The kernels index args.bin by layout.json's offsets: a short (truncated, or stale) file
   // would have them read past the buffer.

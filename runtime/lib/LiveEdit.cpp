@@ -1,5 +1,6 @@
 #include "texrender/LiveEdit.h"
 #include "texrender/Error.h"
+#include "texrender/Image.h"
 
 #include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
@@ -30,14 +31,7 @@ std::string trim(const std::string &S) {
   return B == std::string::npos ? "" : S.substr(B, E - B + 1);
 }
 
-std::string readFile(const std::string &Path) {
-  std::ifstream In(Path);
-  if (!In)
-    throw Error(Path + ": cannot open");
-  std::stringstream SS;
-  SS << In.rdbuf();
-  return SS.str();
-}
+std::string readFile(const std::string &Path) { return readWholeFile(Path); }
 
 std::string diagnosticsText(const texcc::graph::DiagnosticSink &D) {
   std::ostringstream OS;

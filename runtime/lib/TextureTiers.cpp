@@ -1,5 +1,6 @@
 #include "texrender/TextureTiers.h"
 #include "texrender/Error.h"
+#include "texrender/Image.h"
 
 #include "texcc_abi.h"
 
@@ -37,12 +38,7 @@ double steadySeconds() {
 }
 
 std::string readKernelSource(const std::string &Path) {
-  std::ifstream In(Path);
-  if (!In)
-    throw Error(Path + ": cannot open kernel source");
-  std::stringstream SS;
-  SS << In.rdbuf();
-  return SS.str();
+  return readWholeFile(Path, " kernel source");
 }
 
 namespace {

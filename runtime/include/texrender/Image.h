@@ -31,6 +31,9 @@ void writeImage(const std::string &Path, int Width, int Height, const std::vecto
 void writeAtomically(const std::string &Path, const std::function<void(const std::string &)> &Write);
 /// writeAtomically for a text file (stats.json).
 void writeTextFile(const std::string &Path, const std::string &Text);
+/// The whole of a file, byte for byte. Throws Error "PATH: cannot open" + What (e.g.
+/// " kernel source").
+std::string readWholeFile(const std::string &Path, const std::string &What = "");
 
 float srgbToLinear(float V);
 float linearToSrgb(float V);
