@@ -183,7 +183,10 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   texcc::graph::SignatureMap Sigs;
   texcc::graph::CompileOptions Opts;
   std::string Why;
-  if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why))
+  // The kernel's superinstructions: an edit re-encodes a fused opcode only where its pair
+  // still occurs, the plain opcodes elsewhere (docs/modes.md).
+  if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why) ||
+      !texcc::graph::readLayoutSuperinstructions(Lay.Text, Opts.Superinstructions, Why))
     throw Error(Lay.Dir + "/layout.json: " + Why);
   // The editor knows the kernel's functions only; a rewiring onto a node of another function
   // regenerates the kernel (apply()).

@@ -44,6 +44,15 @@ static cl::opt<unsigned> StackLimit(
     cl::desc("Private value-stack cap in float4 slots; beyond it the interpreter spills to "
              "global memory (default 32)"),
     cl::value_desc("N"), cl::init(32), cl::cat(TexccCategory));
+static cl::opt<bool> NoSuperinstructions(
+    "no-superinstructions",
+    cl::desc("interp: no fused pairs of light nodes (one switch case and one value-stack store "
+             "per node), for A/B measurement and debugging"),
+    cl::cat(TexccCategory));
+static cl::opt<unsigned> MaxSuperinstructions(
+    "max-superinstructions",
+    cl::desc("interp: at most N fused pairs of light functions in the kernel (default 8)"),
+    cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
 static cl::list<std::string> IncludeDirs("I", cl::Prefix, cl::desc("Add an include directory"),
                                          cl::value_desc("DIR"), cl::cat(TexccCategory));
 static cl::list<std::string> Defines("D", cl::Prefix, cl::desc("Define a macro for the sources"),
@@ -163,6 +172,11 @@ static int run() {
 
   gr::CompileOptions CompileOpts;
   CompileOpts.StackLimit = StackLimit;
+  // Superinstructions are cases of the interp kernel (shape mode's fallback included); the
+  // other modes never read a program's opcodes.
+  if ((*Mode == cg::Mode::Interp || *Mode == cg::Mode::Shape) && *Target == cg::Target::OpenCL &&
+      !NoSuperinstructions)
+    CompileOpts.MaxSuperinstructions = MaxSuperinstructions;
   for (const fe::TranslatedSource &S : FR->Sources)
     for (const auto &Fn : S.Functions)
       CompileOpts.KnownFunctions.push_back(Fn.first);

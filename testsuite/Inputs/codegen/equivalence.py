@@ -3,7 +3,9 @@
 (the oracle) and for interp, inline, wavefront and shape, evaluates each with texcc-eval over the
 same grid of hits, and compares every mode with the host (compare.py, max abs diff <= --tol).
 Shape mode must also agree bit for bit (--tol 0) with its interp fallback, proctex.interp.cl,
-which the tiered runtime swaps in while a new shape's kernel builds.
+which the tiered runtime swaps in while a new shape's kernel builds, and interp (with its
+superinstructions, the default) bit for bit with interp --no-superinstructions (one case per
+node); the line says how many instructions the superinstructions fused.
 
 usage: equivalence.py --texcc TEXCC --eval TEXCC_EVAL --work DIR --grid N GRAPH [GRAPH ...]
                       [--tol 1e-5] [--modes interp,inline,wavefront,shape]
@@ -82,6 +84,37 @@ def check_fallback(out, dump, graph, args, lines):
                         lines))
 
 
+def fused_count(out):
+    """(superinstructions in the kernel's table, instructions fused into one) of an interp
+    output folder: the programs in args.bin whose fnId word is a superinstruction's opcode."""
+    import json
+    import struct
+    with open(os.path.join(out, "layout.json")) as f:
+        layout = json.load(f)
+    with open(os.path.join(out, "args.bin"), "rb") as f:
+        words = struct.unpack("<%dI" % layout["argsBin"]["programWords"],
+                              f.read(4 * layout["argsBin"]["programWords"]))
+    opcodes = {s["opcode"] for s in layout.get("superinstructions", [])}
+    fused = 0
+    for m in layout["materials"]:
+        at = m["program"]["wordOffset"]
+        fused += sum(1 for i in range(words[at]) if words[at + 2 + 3 * i] in opcodes)
+    return len(opcodes), fused
+
+
+def check_unfused(out, dump, graph, args, extra, lines):
+    """interp with superinstructions (out) against interp --no-superinstructions, bit for bit."""
+    plain = out + "-unfused"
+    plain_dump = plain + ".txt"
+    if not (run([args.texcc, "--mode=interp", "--no-superinstructions", "--graph", graph, "-o",
+                 plain] + extra, lines)
+            and run([args.eval, plain, "--grid", str(args.grid)], lines, plain_dump)):
+        return False
+    table, fused = fused_count(out)
+    return compare(dump, plain_dump, 0.0, "%s interp = interp --no-superinstructions "
+                   "(%d superinstructions, %d pairs fused)" % (graph, table, fused), lines)
+
+
 def check_graph(g, graph, args, modes, extra):
     """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
     lines, failures = [], 0
@@ -99,6 +132,8 @@ def check_graph(g, graph, args, modes, extra):
         ok = ok and compare(ref, dump, args.tol, "%s %s" % (graph, mode), lines)
         if ok and mode == "shape":
             ok = check_fallback(out, dump, graph, args, lines)
+        if ok and mode == "interp":
+            ok = check_unfused(out, dump, graph, args, extra, lines)
         failures += 0 if ok else 1
     return lines, failures
 

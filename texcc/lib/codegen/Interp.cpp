@@ -3,6 +3,7 @@
 // (docs/abi.md); one switch case per live texture function calls it once per node.
 #include "Emit.h"
 
+#include <algorithm>
 #include <set>
 
 using namespace texcc::graph;
@@ -92,24 +93,32 @@ static void emitDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
         "}\n\n";
 }
 
-/// The call of one texture function with every argument decoded from the record at `rec`.
+/// The call of one texture function with every argument decoded from the record at word Rec.
 /// Parameter block offsets are per function (every node of it shares the layout): take them
-/// from one of its nodes, so that they are the graph library's, never recomputed here.
-static std::string interpCall(const FunctionSignature &Sig, const CompiledNode &Example) {
+/// from one of its nodes, so that they are the graph library's, never recomputed here. A
+/// superinstruction's second call gets parameter Fed as the expression FedExpr instead.
+static std::string interpCall(const FunctionSignature &Sig, const CompiledNode &Example,
+                              const std::string &Rec = "rec", int Fed = -1,
+                              const std::string &FedExpr = "") {
   uint32_t SourceWords = (static_cast<uint32_t>(Sig.Params.size()) * 4 + 15) / 16 * 16 / 4;
   std::string S = Sig.RenamedName + "(texcc_ctx";
   for (size_t P = 0; P < Example.Args.size(); ++P) {
     const CompiledArg &A = Example.Args[P];
     const ValueType &T = A.Type;
-    std::string At = "rec + " + std::to_string(SourceWords + A.BlockOffset / 4) + "u";
+    std::string At = Rec + " + " + std::to_string(SourceWords + A.BlockOffset / 4) + "u";
     S += ",\n          ";
-    if (T.IsGlobalArray)
+    if (static_cast<int>(P) == Fed)
+      S += FedExpr;
+    else if (T.IsGlobalArray)
       S += "(__global const " + spelling(T.Base) +
            " *)((__global const uchar *)fakeStack + fakeStack[" + At + "])";
     else if (T.Base == BaseType::Int || T.Base == BaseType::Sampler)
       S += "as_int(fakeStack[" + At + "])";
-    else
+    else if (Rec == "rec")
       S += "TEXCC_ARG(" + std::to_string(P) + "u, " + At + ", " +
+           std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
+    else
+      S += "TEXCC_ARG_IN(" + Rec + ", " + std::to_string(P) + "u, " + At + ", " +
            std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
   }
   return S + ")";
@@ -123,6 +132,42 @@ static const CompiledNode &nodeOfFunction(const CompiledGraph &CG, unsigned FnId
   return CG.Nodes.front();
 }
 
+/// The id of a function in FunctionsById.
+static unsigned functionId(const CompiledGraph &CG, const std::string &Name) {
+  auto It = std::find(CG.FunctionsById.begin(), CG.FunctionsById.end(), Name);
+  return static_cast<unsigned>(It - CG.FunctionsById.begin());
+}
+
+/// The case of a superinstruction: First into a register, fed to Second's parameter (a float
+/// feeding a float2..4 parameter is broadcast, as the source word's broadcast bit says: the bit
+/// is set exactly then), Second's record and result slot from the next instruction, which is
+/// skipped. First's value never touches the value stack.
+static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph &CG,
+                                     const Superinstruction &Sup) {
+  const FunctionSignature &F = CG.Signatures.at(Sup.First);
+  const FunctionSignature &G = CG.Signatures.at(Sup.Second);
+  const BaseType Fed = G.Params.at(Sup.Param).Type.Base;
+  std::string Value = "texcc_first";
+  if (F.Return != Fed)
+    Value = "(" + spelling(Fed) + ")(" + Value + ")";
+  OS << "    case " << Sup.Opcode << "u: { /* superinstruction: " << F.Name << " -> " << G.Name
+     << "." << G.Params[Sup.Param].Name << ", the next instruction; " << F.File
+     << (G.File == F.File ? "" : ", " + G.File) << " */\n"
+     << "      const " << spelling(F.Return) << " texcc_first = "
+     << interpCall(F, nodeOfFunction(CG, functionId(CG, Sup.First))) << ";\n"
+     << "      ++i;\n"
+     << "      resultSlot = fakeStack[prog + 3u + 3u * i];\n"
+     << "      const uint rec2 = fakeStack[prog + 4u + 3u * i] / 4u;\n"
+     << "      r = "
+     << widenToFloat4(G.Return,
+                      interpCall(G, nodeOfFunction(CG, functionId(CG, Sup.Second)), "rec2",
+                                 static_cast<int>(Sup.Param), Value),
+                      Target::OpenCL)
+     << ";\n"
+     << "      break;\n"
+     << "    }\n";
+}
+
 static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
   OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
   emitKernelPrologue(OS, "");
@@ -132,9 +177,10 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
         "  const uint numInstructions = fakeStack[prog];\n"
         "  const uint numOutputs = fakeStack[prog + 1u];\n"
         "  for (uint i = 0u; i < numInstructions; ++i) {\n"
-        "    const uint fnId = fakeStack[prog + 2u + 3u * i];\n"
-        "    const uint resultSlot = fakeStack[prog + 3u + 3u * i];\n"
-        "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
+        "    const uint fnId = fakeStack[prog + 2u + 3u * i];\n";
+  OS << "    " << (CG.Superinstructions.empty() ? "const " : "")
+     << "uint resultSlot = fakeStack[prog + 3u + 3u * i];\n";
+  OS << "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
         "    float4 r;\n"
         "    switch (fnId) {\n";
   for (unsigned Id = 0; Id < CG.FunctionsById.size(); ++Id) {
@@ -144,6 +190,8 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
                              Target::OpenCL) << ";\n"
        << "      break;\n";
   }
+  for (const Superinstruction &Sup : CG.Superinstructions)
+    emitSuperinstructionCase(OS, CG, Sup);
   OS << "    default:\n"
         "      r = (float4)(0.0f);\n"
         "      break;\n"
@@ -163,13 +211,15 @@ void emitInterp(std::ostringstream &OS, const CompiledGraph &CG) {
     return;
   }
   emitDecoder(OS, CG);
-  if (CG.Spill)
-    OS << "#define TEXCC_ARG(p, at, n) \\\n"
-          "  texcc_arg(hits + gid, fakeStack, fakeStack[rec + (p)], (at), (n), scratch, numHits, "
-          "gid)\n\n";
-  else
-    OS << "#define TEXCC_ARG(p, at, n) \\\n"
-          "  texcc_arg(hits + gid, fakeStack, fakeStack[rec + (p)], (at), (n), stack)\n\n";
+  const char *Stack = CG.Spill ? "scratch, numHits, gid" : "stack";
+  OS << "#define TEXCC_ARG(p, at, n) \\\n"
+        "  texcc_arg(hits + gid, fakeStack, fakeStack[rec + (p)], (at), (n), "
+     << Stack << ")\n\n";
+  if (!CG.Superinstructions.empty())
+    OS << "/* The same, from the record at word r (a superinstruction's second instruction). */\n"
+          "#define TEXCC_ARG_IN(r, p, at, n) \\\n"
+          "  texcc_arg(hits + gid, fakeStack, fakeStack[(r) + (p)], (at), (n), "
+       << Stack << ")\n\n";
   emitKernel(OS, CG);
 }
 

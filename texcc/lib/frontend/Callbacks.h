@@ -70,6 +70,9 @@ private:
   std::optional<graph::ValueType> paramType(clang::QualType T) const;
   std::optional<graph::BaseType> valueType(clang::QualType T) const;
   std::set<std::string> reachableFrom(const std::string &Renamed) const;
+  /// Signature Cost: the estimated work of one call (statements, times loop trip counts, with
+  /// the costs of the user functions it calls).
+  unsigned workCost(const clang::FunctionDecl *FD, std::map<std::string, unsigned> &Memo) const;
   std::string writtenType(clang::SourceRange Range, clang::QualType T) const;
   FileContext &FC;
 };

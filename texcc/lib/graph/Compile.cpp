@@ -27,6 +27,7 @@ std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Si
   allocateStackSlots(*CG, Opts.StackLimit, Opts.Log);
   computeWavefrontOrder(*CG, Opts.Log);
   layoutArguments(*CG, Opts.Log);
+  selectSuperinstructions(*CG, Opts, Opts.Log);
   encodeArgsBin(*CG);
   return CG;
 }

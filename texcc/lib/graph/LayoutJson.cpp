@@ -52,7 +52,20 @@ OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
           {"blockSize", BlockSize},
           {"params", Params},
           {"attributes", Sig.Attributes},
-          {"settings", Sig.Settings}};
+          {"settings", Sig.Settings},
+          {"cost", Sig.Cost}};
+}
+
+OJson superinstructionJson(const CompiledGraph &CG, const Superinstruction &S) {
+  auto It = CG.Signatures.find(S.Second);
+  std::string Param = It != CG.Signatures.end() && S.Param < It->second.Params.size()
+                          ? It->second.Params[S.Param].Name
+                          : "";
+  return {{"opcode", S.Opcode},
+          {"first", S.First},
+          {"second", S.Second},
+          {"param", Param},
+          {"paramIndex", S.Param}};
 }
 
 OJson argJson(const CompiledGraph &CG, const CompiledArg &A) {
@@ -134,6 +147,10 @@ std::string layoutJson(const CompiledGraph &CG) {
       Functions.push_back(functionJson(static_cast<unsigned>(Id), It->second));
   }
   J["functions"] = Functions;
+  OJson Supers = OJson::array();
+  for (const Superinstruction &S : CG.Superinstructions)
+    Supers.push_back(superinstructionJson(CG, S));
+  J["superinstructions"] = Supers;
   OJson Nodes = OJson::array();
   for (size_t I = 0; I < CG.Nodes.size(); ++I) {
     const CompiledNode &N = CG.Nodes[I];
@@ -169,6 +186,27 @@ std::string layoutJson(const CompiledGraph &CG) {
   return J.dump(2) + "\n";
 }
 
+bool readLayoutSuperinstructions(const std::string &LayoutJsonText,
+                                 std::vector<Superinstruction> &Table, std::string &Error) {
+  try {
+    nlohmann::json J = nlohmann::json::parse(LayoutJsonText);
+    if (!J.contains("superinstructions"))
+      return true; // a kernel without them (older texcc, or --no-superinstructions)
+    for (const auto &E : J.at("superinstructions")) {
+      Superinstruction S;
+      S.Opcode = E.at("opcode").get<unsigned>();
+      S.First = E.at("first").get<std::string>();
+      S.Second = E.at("second").get<std::string>();
+      S.Param = E.at("paramIndex").get<unsigned>();
+      Table.push_back(S);
+    }
+  } catch (const nlohmann::json::exception &E) {
+    Error = std::string("malformed layout.json: ") + E.what();
+    return false;
+  }
+  return true;
+}
+
 bool readLayoutSignatures(const std::string &LayoutJsonText, SignatureMap &Sigs,
                           std::map<std::string, unsigned> &FnIds, std::string &Error) {
   try {
@@ -197,6 +235,7 @@ bool readLayoutSignatures(const std::string &LayoutJsonText, SignatureMap &Sigs,
         S.Attributes = F.at("attributes").get<std::vector<std::string>>();
       if (F.contains("settings"))
         S.Settings = F.at("settings").get<std::vector<std::string>>();
+      S.Cost = F.value("cost", 0u);
       FnIds[S.Name] = F.at("id").get<unsigned>();
       Sigs[S.Name] = std::move(S);
     }

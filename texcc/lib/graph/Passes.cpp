@@ -189,6 +189,8 @@ void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const Compil
   }
   for (const auto &KV : Opts.FixedFunctionIds)
     Used.insert(KV.second);
+  for (const Superinstruction &S : Opts.Superinstructions) // the kernel's fused opcodes
+    Used.insert(S.Opcode);
   CG.Signatures.clear();
   std::set<std::string> Attributes, Settings;
   for (CompiledNode &N : CG.Nodes) {

@@ -93,6 +93,15 @@ bool readSignature(const json::Value &F, FunctionSignature &S, DiagnosticSink &D
       S.Params.push_back({PN->Text, *T});
     }
   }
+  if (const json::Value *Cost = F.get("cost")) {
+    if (!Cost->isNumber() || Cost->Number < 0 || Cost->Number > 4294967295.0 ||
+        Cost->Number != static_cast<double>(static_cast<unsigned>(Cost->Number))) {
+      Diags.error(Cost->Loc, "'cost' must be a non-negative integer, got " +
+                                 json::describeKind(*Cost));
+      return false;
+    }
+    S.Cost = static_cast<unsigned>(Cost->Number);
+  }
   return readStringList(F.get("attributes"), S.Attributes, Diags) &&
          readStringList(F.get("settings"), S.Settings, Diags);
 }

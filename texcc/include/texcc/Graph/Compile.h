@@ -18,6 +18,19 @@
 
 namespace texcc::graph {
 
+/// A superinstruction of the interp kernel (docs/modes.md): where instruction j runs First and
+/// instruction j+1 runs Second, whose parameter Param is the only reader of j's result (no other
+/// instruction, no material output), the first instruction's fnId word is Opcode and one switch
+/// case runs both, First's value passed to Second in a register.
+struct Superinstruction {
+  unsigned Opcode = 0;        // kernel case: (number of function ids at texcc time) + index
+  std::string First, Second;  // function names
+  unsigned Param = 0;         // index of Second's parameter that reads First's result
+  bool operator==(const Superinstruction &O) const {
+    return Opcode == O.Opcode && First == O.First && Second == O.Second && Param == O.Param;
+  }
+};
+
 struct CompileOptions {
   /// Private value-stack cap in float4 slots; beyond it values live in a global spill slice.
   unsigned StackLimit = 32;
@@ -28,6 +41,14 @@ struct CompileOptions {
   std::vector<std::string> KnownFunctions;
   /// Where the passes log what they did (texcc -v); null for silence.
   std::ostream *Log = nullptr;
+  /// Superinstructions: choose at most this many fused pairs from the programs (0: none), most
+  /// frequent first, both functions light (signature Cost in 1..LightCost). Ignored when
+  /// Superinstructions is not empty.
+  unsigned MaxSuperinstructions = 0;
+  unsigned LightCost = 1200;
+  /// The kernel's superinstruction table (live edits: layout.json "superinstructions"): applied
+  /// wherever its pairs occur after the edit, nothing else chosen.
+  std::vector<Superinstruction> Superinstructions;
 };
 
 /// One argument of a live node, resolved against the function's signature.
@@ -67,6 +88,9 @@ struct CompiledNode {
 
 struct Instruction {
   unsigned Node = 0;          // index into CompiledGraph::Nodes
+  /// Index into CompiledGraph::Superinstructions when this instruction and the next run as one
+  /// (the fnId word is then its Opcode); -1 otherwise.
+  int Super = -1;
   unsigned ResultSlot = 0;    // value-stack slot that receives the result; may be a slot the
                               // instruction's own arguments read (they are read first)
   uint32_t RecordOffset = 0;  // the argument record it uses (the node's, or one of its copies)
@@ -108,6 +132,7 @@ struct CompiledGraph {
   std::vector<std::pair<std::string, std::string>> Images;  // index = image id
   SignatureMap Signatures;                 // live functions only
   std::vector<std::string> FunctionsById;  // FnId -> name (live functions only)
+  std::vector<Superinstruction> Superinstructions;  // the interp kernel's table, opcode order
   std::vector<CompiledNode> Nodes;         // live nodes
   std::vector<CompiledMaterial> Materials;
   unsigned StackSlots = 0;     // exact peak over all materials (TEXCC_STACK_SLOTS)
@@ -153,6 +178,10 @@ std::vector<MaterialShape> groupShapes(const CompiledGraph &CG);
 
 /// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
 std::string layoutJson(const CompiledGraph &CG);
+
+/// Reads layout.json's "superinstructions" (absent: none) for the runtime's live edits.
+bool readLayoutSuperinstructions(const std::string &LayoutJsonText,
+                                 std::vector<Superinstruction> &Table, std::string &Error);
 
 /// Reads the signatures back from a layout.json (for the runtime's live edits), keyed by name,
 /// and the function ids in use.

@@ -40,6 +40,11 @@ void computeWavefrontOrder(CompiledGraph &CG, std::ostream *Log);
 /// Parameter blocks (OpenCL alignment), records (16-aligned), record copies, array data,
 /// program word offsets.
 void layoutArguments(CompiledGraph &CG, std::ostream *Log);
+/// Superinstructions (interp): Opts.Superinstructions when given (live edits), else at most
+/// Opts.MaxSuperinstructions pairs of light functions, most frequent first, numbered from
+/// FunctionsById.size(); then marks the pairs greedily along each program (Instruction::Super).
+/// Sets CG.Superinstructions to the table (only the entries that fused, when chosen here).
+void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
 /// Writes ArgsBin from the layout (docs/abi.md).
 void encodeArgsBin(CompiledGraph &CG);
 

@@ -26,6 +26,10 @@ struct FunctionSignature {
   std::vector<Param> Params;
   std::vector<std::string> Attributes;  // read by its whole call tree, sorted ("AO", "Normal")
   std::vector<std::string> Settings;    // likewise ("Time")
+  /// The size of the code a call inlines to (the front end: statements and expressions of the
+  /// body, plus, per call of another user function, that function's Cost); 0 when unknown.
+  /// Superinstructions fuse only light functions (Cost in 1..CompileOptions::LightCost).
+  unsigned Cost = 0;
 };
 
 using SignatureMap = std::map<std::string, FunctionSignature>;  // by Name
