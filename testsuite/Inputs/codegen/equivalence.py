@@ -112,7 +112,7 @@ def check_unfused(out, dump, graph, args, extra, lines):
         return False
     table, fused = fused_count(out)
     return compare(dump, plain_dump, 0.0, "%s interp = interp --no-superinstructions "
-                   "(%d superinstructions, %d pairs fused)" % (graph, table, fused), lines)
+                   "(superinstructions %d, fused pairs %d)" % (graph, table, fused), lines)
 
 
 def check_graph(g, graph, args, modes, extra):

@@ -1,6 +1,7 @@
 // layout.json (docs/abi.md): the graph part, and reading the signatures back for live edits.
 
 #include "texcc/Graph/Compile.h"
+#include "texcc/Graph/Passes.h"
 
 #include <nlohmann/json.hpp>
 
@@ -57,14 +58,10 @@ OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
 }
 
 OJson superinstructionJson(const CompiledGraph &CG, const Superinstruction &S) {
-  auto It = CG.Signatures.find(S.Second);
-  std::string Param = It != CG.Signatures.end() && S.Param < It->second.Params.size()
-                          ? It->second.Params[S.Param].Name
-                          : "";
   return {{"opcode", S.Opcode},
           {"first", S.First},
           {"second", S.Second},
-          {"param", Param},
+          {"param", fedParamName(CG, S)},
           {"paramIndex", S.Param}};
 }
 

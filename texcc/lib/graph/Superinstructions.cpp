@@ -51,6 +51,13 @@ std::optional<unsigned> fusedParam(const CompiledGraph &CG, const CompiledMateri
 
 } // namespace
 
+std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S) {
+  auto It = CG.Signatures.find(S.Second);
+  if (It == CG.Signatures.end() || S.Param >= It->second.Params.size())
+    return "";
+  return It->second.Params[S.Param].Name;
+}
+
 void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log) {
   std::vector<std::vector<unsigned>> Readers;
   for (const CompiledMaterial &M : CG.Materials)
@@ -127,17 +134,21 @@ void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std:
     Uses = Apply(Table);
   }
   CG.Superinstructions = Table;
-  if (Log)
-    for (size_t K = 0; K < Table.size(); ++K) {
-      const Superinstruction &S = Table[K];
-      auto It = CG.Signatures.find(S.Second);
-      std::string Param = It != CG.Signatures.end() && S.Param < It->second.Params.size()
-                              ? It->second.Params[S.Param].Name
-                              : std::to_string(S.Param);
-      *Log << "superinstructions: opcode " << S.Opcode << ": '" << S.First << "' -> '" << S.Second
-           << "." << Param << "', fused " << Uses[K] << " time" << (Uses[K] == 1 ? "" : "s")
-           << "\n";
-    }
+  if (!Log)
+    return;
+  for (size_t K = 0; K < Table.size(); ++K) {
+    const Superinstruction &S = Table[K];
+    *Log << "superinstructions: opcode " << S.Opcode << ": '" << S.First << "' -> '" << S.Second
+         << "." << fedParamName(CG, S) << "', fused " << Uses[K] << " time" << (Uses[K] == 1 ? "" : "s")
+         << "\n";
+  }
+  for (const CompiledMaterial &M : CG.Materials)
+    for (size_t J = 0; J < M.Program.size(); ++J)
+      if (M.Program[J].Super >= 0)
+        *Log << "superinstructions: material '" << M.Name << "': #" << J << " '"
+             << CG.Nodes[M.Program[J].Node].Id << "' -> #" << J + 1 << " '"
+             << CG.Nodes[M.Program[J + 1].Node].Id << "' run as opcode "
+             << Table[M.Program[J].Super].Opcode << "\n";
 }
 
 } // namespace texcc::graph

@@ -88,12 +88,12 @@ struct CompiledNode {
 
 struct Instruction {
   unsigned Node = 0;          // index into CompiledGraph::Nodes
-  /// Index into CompiledGraph::Superinstructions when this instruction and the next run as one
-  /// (the fnId word is then its Opcode); -1 otherwise.
-  int Super = -1;
   unsigned ResultSlot = 0;    // value-stack slot that receives the result; may be a slot the
                               // instruction's own arguments read (they are read first)
   uint32_t RecordOffset = 0;  // the argument record it uses (the node's, or one of its copies)
+  /// Index into CompiledGraph::Superinstructions when this instruction and the next run as one
+  /// (the fnId word is then its Opcode); -1 otherwise.
+  int Super = -1;
 };
 
 /// A BSDF input after compilation: a constant, or a texture output of the material.

@@ -45,6 +45,8 @@ void layoutArguments(CompiledGraph &CG, std::ostream *Log);
 /// FunctionsById.size(); then marks the pairs greedily along each program (Instruction::Super).
 /// Sets CG.Superinstructions to the table (only the entries that fused, when chosen here).
 void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
+/// The name of the parameter of S.Second that S feeds ("" when the signature is unknown).
+std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S);
 /// Writes ArgsBin from the layout (docs/abi.md).
 void encodeArgsBin(CompiledGraph &CG);
 
