@@ -97,6 +97,33 @@ TEST(FrontendTest, CollectsSignatureAndCallTree) {
   EXPECT_EQ(T.Definitions.size(), 3u);
 }
 
+TEST(FrontendTest, CostCountsStatementsLoopTripsAndCallees) {
+  // Cost (superinstructions fuse only light functions): every statement and expression counts
+  // 1 (implicit casts and parentheses 0), times the trips of the loops around it (constant
+  // bounds: the count; otherwise 8), and a call adds the callee's cost.
+  FrontendRun R = runOn(
+      {{"cost.cl", "float one(float x) { return (x); }\n"
+                   "float two(float x) { return one(x) + one(x); }\n"
+                   "float loop10(float x) { float s = 0.0f; for (int i = 0; i < 10; ++i) s += x; return s; }\n"
+                   "float loop20(float x) { float s = 0.0f; for (int i = 0; i < 20; ++i) s += x; return s; }\n"
+                   "float loopDown(float x) { float s = 0.0f; for (int i = 20; i > 0; i -= 2) s += x; return s; }\n"
+                   "float loopN(float x, int n) { float s = 0.0f; for (int i = 0; i < n; ++i) s += x; return s; }\n"
+                   "float callIn(float x) { float s = 0.0f; for (int i = 0; i < 10; ++i) s += one(x); return s; }\n"}},
+      {"one", "two", "loop10", "loop20", "loopDown", "loopN", "callIn"});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  auto Cost = [&](const char *F) { return R.Result->Textures.at(F).Cost; };
+  EXPECT_EQ(Cost("one"), 3u); // { return x; }: compound, return, x
+  // { return one(x) + one(x); }: compound, return, +, 2 calls, 2 callee names, 2 x; 2 x one.
+  EXPECT_EQ(Cost("two"), 9u + 2 * Cost("one"));
+  const unsigned PerTrip = (Cost("loop20") - Cost("loop10")) / 10;
+  EXPECT_EQ(PerTrip, 8u); // i < 10 (3), ++i (2), s += x (3)
+  // 20, 18, ..., 2: ten trips, each one more for i -= 2 (3) than for ++i (2).
+  EXPECT_EQ(Cost("loopDown"), Cost("loop10") + 10);
+  EXPECT_EQ(Cost("loop10") - Cost("loopN"), 2 * PerTrip); // an unknown count: 8 trips
+  // one(x) in the loop: 10 x (call, callee name, x, and one's cost) in place of x.
+  EXPECT_EQ(Cost("callIn"), Cost("loop10") + 10 * (2 + Cost("one")));
+}
+
 TEST(FrontendTest, RecordsDefinedMacros) {
   FrontendRun R = runOn({{"m.cl", "#define A 1\n#define B(x) (x)\n#undef A\nfloat f(void) { return B(1.0f); }\n"}});
   ASSERT_TRUE(bool(R.Result)) << R.Diags;
