@@ -53,6 +53,11 @@ static cl::opt<unsigned> MaxSuperinstructions(
     "max-superinstructions",
     cl::desc("interp: at most N fused pairs of light functions in the kernel (default 8)"),
     cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
+static cl::opt<unsigned> LightCost(
+    "light-cost",
+    cl::desc("interp: a function may be part of a superinstruction when its cost (layout.json "
+             "functions[].cost) is at most N (default 1200)"),
+    cl::value_desc("N"), cl::init(1200), cl::Hidden, cl::cat(TexccCategory));
 static cl::list<std::string> IncludeDirs("I", cl::Prefix, cl::desc("Add an include directory"),
                                          cl::value_desc("DIR"), cl::cat(TexccCategory));
 static cl::list<std::string> Defines("D", cl::Prefix, cl::desc("Define a macro for the sources"),
@@ -177,6 +182,7 @@ static int run() {
   if ((*Mode == cg::Mode::Interp || *Mode == cg::Mode::Shape) && *Target == cg::Target::OpenCL &&
       !NoSuperinstructions)
     CompileOpts.MaxSuperinstructions = MaxSuperinstructions;
+  CompileOpts.LightCost = LightCost;
   for (const fe::TranslatedSource &S : FR->Sources)
     for (const auto &Fn : S.Functions)
       CompileOpts.KnownFunctions.push_back(Fn.first);

@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""interp's superinstructions (docs/modes.md) against interp --no-superinstructions and inline:
+per-hit texture cost on PoCL, and gfx90a registers of the interp kernel.
+
+Workloads: the depth chain of bench/stability.py (mathColor multiply-adds) at 64 and 256
+nodes on bench/inputs/sweep/scene.json, and examples/rust and examples/scratches on the atrium
+(examples/atrium/scene.json, scene-scratched.json; generate it first with
+`python3 scripts/make_scenes.py --only atrium`). Per workload, every repetition renders the
+three configurations back to back, in an order that rotates with the repetition (the shared
+machine's load drifts), each in its own texrender process with a warm program cache (a first,
+unmeasured render builds every kernel). The per-hit cost is the texture kernel's device time
+(OpenCL profiling, stats.json) over the texture stage's work-items (hit_attributes'
+workItems: every active path of every bounce, misses and untextured hits included). Ratios
+are taken per repetition, then the median. PoCL runs one thread (POCL_MAX_PTHREAD_COUNT=1,
+--pocl-threads): on a shared 2-core machine the device time of a kernel spread over both cores
+swings with every other process (rust: 14 to 51 ms per million hits in seven runs), on one
+core it varies by about 10%. Registers: clang-15 -> gfx90a with libclc,
+-Rpass-analysis=kernel-resource-usage (bench/resources.py), texcc_proctex of each interp kernel.
+
+usage: bench/superinstructions.py [--build DIR] [--reps N] [--size WxH] [--spp N]
+                                  [--pocl-threads N] [--only chain64,chain256,rust,scratches]
+                                  [--out FILE]
+"""
+import argparse
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+import resources  # noqa: E402
+import stability  # noqa: E402
+
+CONFIGS = (("interp", "interp", []),
+           ("interp-unfused", "interp", ["--no-superinstructions"]),
+           ("inline", "inline", []))
+ATRIUM = os.path.join(common.ROOT, "examples", "atrium")
+WORKLOADS = {
+    "chain64": (None, stability.SCENE, 64),
+    "chain256": (None, stability.SCENE, 256),
+    "rust": (os.path.join(common.ROOT, "examples", "rust", "graph.json"),
+             os.path.join(ATRIUM, "scene.json"), None),
+    "scratches": (os.path.join(common.ROOT, "examples", "scratches", "graph.json"),
+                  os.path.join(ATRIUM, "scene-scratched.json"), None),
+}
+
+
+def graph_of(tools, name):
+    graph, _, depth = WORKLOADS[name]
+    if graph:
+        return graph
+    path = os.path.join(tools.work, "%s.json" % name)
+    with open(path, "w") as f:
+        json.dump(stability.chain_graph(depth), f)
+    return path
+
+
+def fused_pairs(folder):
+    sys.path.insert(0, os.path.join(common.ROOT, "testsuite", "Inputs", "codegen"))
+    import equivalence  # noqa: E402
+    return equivalence.fused_count(folder)
+
+
+def measure(tools, names, reps, opts):
+    results = {}
+    for name in names:
+        _, scene, _ = WORKLOADS[name]
+        graph = graph_of(tools, name)
+        folders = {}
+        for cfg, mode, extra in CONFIGS:
+            folder = os.path.join(tools.work, "%s-%s" % (name, cfg))
+            common.texcc(tools, graph, folder, mode, extra)
+            folders[cfg] = folder
+            common.texrender(tools, scene, folder, "%s-%s-warm" % (name, cfg), opts)
+        samples = {cfg: [] for cfg, _, _ in CONFIGS}
+        for rep in range(reps):
+            order = CONFIGS[rep % 3:] + CONFIGS[:rep % 3]
+            for cfg, _, _ in order:
+                common.log("%s rep %d: %s" % (name, rep + 1, cfg))
+                stats, _, _ = common.texrender(tools, scene, folders[cfg],
+                                               "%s-%s-%d" % (name, cfg, rep), opts)
+                hits = stats["kernels"]["hit_attributes"]["workItems"]
+                samples[cfg].append(1e9 * common.texture_kernel_seconds(stats) / hits)
+        ratios = {
+            "interp/inline": [a / b for a, b in zip(samples["interp"], samples["inline"])],
+            "unfused/inline": [a / b for a, b in zip(samples["interp-unfused"], samples["inline"])],
+            "interp/unfused": [a / b for a, b in zip(samples["interp"], samples["interp-unfused"])],
+        }
+        table, fused = fused_pairs(folders["interp"])
+        row = {"scene": os.path.relpath(scene, common.ROOT), "hits": hits,
+               "superinstructions": table, "fusedPairs": fused,
+               "msPerMillionHits": {k: v for k, v in samples.items()},
+               "minMsPerMillionHits": {k: min(v) for k, v in samples.items()},
+               "medianMsPerMillionHits": {k: common.median(v) for k, v in samples.items()},
+               "ratios": ratios, "medianRatios": {k: common.median(v) for k, v in ratios.items()}}
+        if name in ("rust", "scratches"):
+            row["gfx90a"] = {}
+            for cfg in ("interp", "interp-unfused"):
+                src = os.path.join(folders[cfg], "proctex.cl")
+                row["gfx90a"][cfg] = resources.amdgpu(src, folders[cfg],
+                                                      {"texcc_proctex"})["kernels"]["texcc_proctex"]
+        results[name] = row
+        common.log("%s: ms per 1M hits min %s, median %s; median ratios %s" % (
+            name, {k: round(v, 3) for k, v in row["minMsPerMillionHits"].items()},
+            {k: round(v, 3) for k, v in row["medianMsPerMillionHits"].items()},
+            {k: round(v, 3) for k, v in row["medianRatios"].items()}))
+    return results
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--work", default=None)
+    ap.add_argument("--reps", type=int, default=9)
+    ap.add_argument("--size", default="128x128")
+    ap.add_argument("--spp", default="1")
+    ap.add_argument("--pocl-threads", default="1")
+    ap.add_argument("--only", default=",".join(WORKLOADS))
+    ap.add_argument("--out", default=os.path.join(common.RESULTS, "superinstructions.json"))
+    args = ap.parse_args()
+    work = args.work or os.path.join(args.build, "bench-superinstructions")
+    os.makedirs(work, exist_ok=True)
+    tools = common.Tools(args.build, work)
+    if args.pocl_threads != "0":
+        os.environ["POCL_MAX_PTHREAD_COUNT"] = args.pocl_threads
+    opts = ["--size", args.size, "--spp", args.spp]
+    names = args.only.split(",")
+    data = {"machine": common.machine(), "git": common.git_head(), "reps": args.reps,
+            "size": args.size, "spp": int(args.spp),
+            "poclMaxPthreadCount": os.environ.get("POCL_MAX_PTHREAD_COUNT"), "workloads": measure(tools, names,
+                                                                           args.reps, opts)}
+    os.makedirs(os.path.dirname(args.out), exist_ok=True)
+    with open(args.out, "w") as f:
+        json.dump(data, f, indent=1, sort_keys=True)
+        f.write("\n")
+    common.log("wrote " + args.out)
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except common.BenchError as e:
+        print("bench/superinstructions.py: error: %s" % e, file=sys.stderr)
+        sys.exit(1)
