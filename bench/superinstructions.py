@@ -11,7 +11,7 @@ machine's load drifts), each in its own texrender process with a warm program ca
 unmeasured render builds every kernel). The per-hit cost is the texture kernel's device time
 (OpenCL profiling, stats.json) over the texture stage's work-items (hit_attributes'
 workItems: every active path of every bounce, misses and untextured hits included). Ratios
-are taken per repetition, then the median. PoCL runs one thread (POCL_MAX_PTHREAD_COUNT=1,
+are taken per repetition, then the median, and between the minima. PoCL runs one thread (POCL_MAX_PTHREAD_COUNT=1,
 --pocl-threads): on a shared 2-core machine the device time of a kernel spread over both cores
 swings with every other process (rust: 14 to 51 ms per million hits in seven runs), on one
 core it varies by about 10%. Registers: clang-15 -> gfx90a with libclc,
@@ -61,6 +61,23 @@ def fused_pairs(folder):
     return equivalence.fused_count(folder)
 
 
+RATIOS = (("interp/inline", "interp", "inline"), ("unfused/inline", "interp-unfused", "inline"),
+          ("interp/unfused", "interp", "interp-unfused"))
+
+
+def summarize(samples):
+    """Per configuration: the samples, their minimum and median; per ratio: the per-repetition
+    ratios, their median, and the ratio of the minima. A run that shared its core with another
+    process takes about three times as long (the machine is shared): the minimum is the
+    least-disturbed figure, the median of the ratios the typical one."""
+    ratios = {name: [x / y for x, y in zip(samples[a], samples[b])] for name, a, b in RATIOS}
+    return {"msPerMillionHits": samples,
+            "minMsPerMillionHits": {k: min(v) for k, v in samples.items()},
+            "medianMsPerMillionHits": {k: common.median(v) for k, v in samples.items()},
+            "ratios": ratios, "medianRatios": {k: common.median(v) for k, v in ratios.items()},
+            "minRatios": {name: min(samples[a]) / min(samples[b]) for name, a, b in RATIOS}}
+
+
 def measure(tools, names, reps, opts):
     results = {}
     for name in names:
@@ -81,18 +98,10 @@ def measure(tools, names, reps, opts):
                                                "%s-%s-%d" % (name, cfg, rep), opts)
                 hits = stats["kernels"]["hit_attributes"]["workItems"]
                 samples[cfg].append(1e9 * common.texture_kernel_seconds(stats) / hits)
-        ratios = {
-            "interp/inline": [a / b for a, b in zip(samples["interp"], samples["inline"])],
-            "unfused/inline": [a / b for a, b in zip(samples["interp-unfused"], samples["inline"])],
-            "interp/unfused": [a / b for a, b in zip(samples["interp"], samples["interp-unfused"])],
-        }
         table, fused = fused_pairs(folders["interp"])
         row = {"scene": os.path.relpath(scene, common.ROOT), "hits": hits,
-               "superinstructions": table, "fusedPairs": fused,
-               "msPerMillionHits": {k: v for k, v in samples.items()},
-               "minMsPerMillionHits": {k: min(v) for k, v in samples.items()},
-               "medianMsPerMillionHits": {k: common.median(v) for k, v in samples.items()},
-               "ratios": ratios, "medianRatios": {k: common.median(v) for k, v in ratios.items()}}
+               "superinstructions": table, "fusedPairs": fused}
+        row.update(summarize(samples))
         if name in ("rust", "scratches"):
             row["gfx90a"] = {}
             for cfg in ("interp", "interp-unfused"):
@@ -100,10 +109,11 @@ def measure(tools, names, reps, opts):
                 row["gfx90a"][cfg] = resources.amdgpu(src, folders[cfg],
                                                       {"texcc_proctex"})["kernels"]["texcc_proctex"]
         results[name] = row
-        common.log("%s: ms per 1M hits min %s, median %s; median ratios %s" % (
-            name, {k: round(v, 3) for k, v in row["minMsPerMillionHits"].items()},
-            {k: round(v, 3) for k, v in row["medianMsPerMillionHits"].items()},
-            {k: round(v, 3) for k, v in row["medianRatios"].items()}))
+        common.log("%s: ms per 1M hits min %s, median %s; median ratios %s, ratios of minima %s"
+                   % (name, {k: round(v, 3) for k, v in row["minMsPerMillionHits"].items()},
+                      {k: round(v, 3) for k, v in row["medianMsPerMillionHits"].items()},
+                      {k: round(v, 3) for k, v in row["medianRatios"].items()},
+                      {k: round(v, 3) for k, v in row["minRatios"].items()}))
     return results
 
 

@@ -3,6 +3,7 @@
 // Wavefront.cpp, Host.cpp).
 #include "Emit.h"
 
+#include "texcc/Graph/Passes.h"
 #include "texcc/Version.h"
 
 #include <algorithm>
@@ -62,7 +63,7 @@ static const char *evaluationSummary(Mode M, Target T) {
   switch (M) {
   case Mode::Interp:
     return "the interpreter: kernel texcc_proctex runs the material's program from fakeStack,\n"
-           " *      one switch case per texture function";
+           " *      one switch case per texture function (and per superinstruction)";
   case Mode::Inline:
     return "per material a straight-line function (constants as literals), and kernel\n"
            " *      texcc_proctex, which switches on the material";
@@ -96,6 +97,13 @@ static void emitHeaderComment(std::ostringstream &OS, const CompiledGraph &CG,
      << " *   live:   " << CG.Nodes.size() << " nodes, " << CG.FunctionsById.size()
      << " texture functions, " << CG.Materials.size() << " materials, value stack "
      << CG.StackSlots << " float4 slots" << (CG.Spill ? " (spilled to scratch)" : "") << "\n";
+  if (Opts.EvalMode == Mode::Interp && !Host && !CG.Superinstructions.empty()) {
+    OS << " *   superinstructions (fused pairs, docs/modes.md):";
+    for (const Superinstruction &S : CG.Superinstructions)
+      OS << (&S == &CG.Superinstructions.front() ? " " : "; ") << S.Opcode << " = " << S.First
+         << " -> " << S.Second << "." << fedParamName(CG, S);
+    OS << "\n";
+  }
   for (const CompiledMaterial &M : CG.Materials)
     OS << " *   material " << M.Index << " '" << M.Name << "': " << M.Program.size()
        << " instructions; " << describeOutputs(CG, M) << "\n";
