@@ -189,6 +189,7 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   // regenerates the kernel (apply()).
   KernelLacks = removeNodesWithoutSignature(*G, Sigs);
   Opts.StackLimit = Lay.StackLimit;
+  KernelShapeHash = Lay.ShapeHash;
   Editor = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
   if (!Editor->init(Diags))
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
@@ -287,6 +288,7 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
   Regeneration Files = writeEditedGraph();
   std::string Texcc = TexccPath, Mode = Lay.Mode;
   const auto &CG = Editor->compiled();
+  KernelShapeHash = texcc::graph::shapeHash(CG);
   R.switchShapes(
       CG.ArgsBin, CG.Attributes,
       [Texcc, Mode, Files] { return runTexcc(Texcc, Mode, Files.Graph, Files.Out, Files.Log); },
@@ -322,6 +324,11 @@ LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer
     throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
   if (Editor->needsRebuild() && !fallbackRuns(R))
     return Plan::Regenerate;
+  // A shape kernel runs the edited graph exactly when its shapes are unchanged: a value edit
+  // that merges or splits identical nodes changes them, a rewiring onto an equal structure
+  // does not (layout.json from a texcc without kernel.shapeHash: the JSON-level test).
+  if (Lay.Mode == "shape" && !KernelShapeHash.empty())
+    Structural = texcc::graph::shapeHash(Editor->compiled()) != KernelShapeHash;
   // The wiring is code in wavefront mode (the launches) and in a shape kernel (its shapes).
   if ((!Structural && !Editor->needsRebuild()) || Lay.Mode == "interp")
     return Plan::Upload;

@@ -81,6 +81,9 @@ private:
   nlohmann::json GraphDoc; // graph.json with every edit so far (for regeneration)
   std::unique_ptr<texcc::graph::GraphEditor> Editor;
   std::set<std::string> KernelLacks; // nodes of functions the kernel lacks (not in the editor)
+  // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
+  // edit that changes them needs a new shape kernel, one that keeps them is an upload.
+  std::string KernelShapeHash;
   unsigned Generation = 0;
 };
 

@@ -151,6 +151,13 @@ struct MaterialShape {
 };
 std::vector<MaterialShape> groupShapes(const CompiledGraph &CG);
 
+/// What a shape kernel was built for, as 16 hex digits (FNV-1a 64 of every material's
+/// shapeKey(), in material order; a material without texture outputs counts as empty). Equal
+/// hashes mean the kernel's bodies, its material switch and the materials' program offsets in
+/// args.bin (which follow from the program lengths) all still hold: the shape kernel runs the
+/// graph with an upload. layout.json kernel.shapeHash; the runtime compares it after an edit.
+std::string shapeHash(const CompiledGraph &CG);
+
 /// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
 std::string layoutJson(const CompiledGraph &CG);
 
