@@ -49,12 +49,25 @@ def machine_section(results):
             total += data["seconds"]
             lines.append("| %s | `%s` | %s | %.0f s |" % (name, data["command"], data["date"],
                                                          data["seconds"]))
-    lines += ["", "Sum of the figures' run times: %.1f minutes (%s run)." % (
-        total / 60, "quick" if any_result.get("quick") else "full")]
-    if any_result.get("quick"):
-        lines += ["", "The full run (`bench/run`: 512x512, more repetitions, a 1024-spp reference, "
-                  "the stability sweep up to each mode's failure or 10 minutes per point) has "
-                  "not been run yet; its duration is not measured."]
+    full = [n for n, d in results.items() if d and not d.get("quick")]
+    quick = [n for n, d in results.items() if d and d.get("quick")]
+    lines += ["", "Sum of the figures' run times: %.1f minutes." % (total / 60)]
+    if not quick:
+        lines += ["", "This is the full run (`bench/run`: 512x512, more repetitions, a 1024-spp "
+                  "reference, the stability sweep up to each mode's failure or 10 minutes per "
+                  "point); its duration is the sum above, each figure timed by bench/bench.py "
+                  "(the `seconds` of its JSON)."]
+    elif not full:
+        lines += ["", "This is the quick run (`bench/run --quick`). The full run (`bench/run`: "
+                  "512x512, more repetitions, a 1024-spp reference, the stability sweep up to "
+                  "each mode's failure or 10 minutes per point) is not reflected here."]
+    else:
+        lines += ["", "Full-run figures (`bench/run`, 512x512, more repetitions, a 1024-spp "
+                  "reference, the stability sweep up to each mode's failure or 10 minutes per "
+                  "point): %s, %.1f minutes together. Quick-run figures (`bench/run --quick`): "
+                  "%s, %.1f minutes together." % (
+                      ", ".join(full), sum(results[n]["seconds"] for n in full) / 60,
+                      ", ".join(quick), sum(results[n]["seconds"] for n in quick) / 60)]
     return lines + [""]
 
 
@@ -364,11 +377,18 @@ def stability_section(d):
             fmt(p["kernelSeconds"]), p["memoryBytes"] / 1e6, p["stackSlots"], p["spill"],
             p["scratchFloat4PerHit"]))
     lines += [""] + largest_builds(d)
+    if d.get("complete") is False:
+        last = d["points"][-1] if d["points"] else None
+        lines += ["**This sweep did not finish**: the run was cut short after %.0f minutes, %d "
+                  "points measured%s. Modes and sizes after that point are not measured." % (
+                      d["seconds"] / 60, len(d["points"]),
+                      ", the last %s = %d, %s" % (last["family"], last["size"], last["mode"])
+                      if last else ""), ""]
     if d["stopped"]:
         lines += ["Where a mode stopped:", ""]
         for s in d["stopped"]:
             lines.append("- %s, %s = %d: %s" % (s["mode"], s["family"], s["size"], s["error"]))
-    else:
+    elif d.get("complete") is not False:
         lines.append("No mode failed or passed the cap at these sizes%s." % (
             " (the quick run stops at modest sizes)" if d.get("quick") else ""))
     return lines + [""]
