@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -106,15 +107,26 @@ struct CompiledGraph {
   std::string GraphPath;
   std::vector<std::string> Sources;
   std::vector<std::pair<std::string, std::string>> Images;  // index = image id
-  SignatureMap Signatures;                 // live functions only
-  std::vector<std::string> FunctionsById;  // FnId -> name (live functions only)
+  /// Every function a node of the graph names, live or dead: the interpreter (interp mode,
+  /// shape mode's fallback) has a switch case for each, so that a rewiring onto any node of
+  /// the graph runs on the kernel it has. Inline, wavefront and shape code call only the
+  /// functions of live nodes (liveFunctions()).
+  SignatureMap Signatures;
+  /// FnId -> name, the same functions: the live ones first (in node order), then those only
+  /// dead nodes name (in graph.json order). Empty names are gaps (ids pinned by live edits).
+  std::vector<std::string> FunctionsById;
   std::vector<CompiledNode> Nodes;         // live nodes
+  /// Every function a node of the graph names (live or dead), in graph.json order of first
+  /// use; and the attribute ids that node arguments read (live or dead nodes), sorted: the
+  /// interpreter's attribute decoder. Filled by resolveGraph(); node removal keeps them.
+  std::vector<std::string> GraphFunctions;
+  std::vector<int> GraphArgumentAttributes;
   std::vector<CompiledMaterial> Materials;
   unsigned StackSlots = 0;     // exact peak over all materials (TEXCC_STACK_SLOTS)
   unsigned StackLimit = 0;
   bool Spill = false;          // StackSlots > StackLimit: values in a global slice
   unsigned MaxOutputs = 0;     // TEXCC_MAX_OUTPUTS (at least 1)
-  std::vector<std::string> Attributes;  // read by live functions or node args, sorted
+  std::vector<std::string> Attributes;  // read by live functions or live node args, sorted
   std::vector<std::string> Settings;    // read by live functions, sorted
   std::vector<unsigned> WavefrontOrder; // node indices, a topological order over all materials
   std::vector<uint8_t> ArgsBin;         // the encoded fake stack (docs/abi.md)
@@ -123,6 +135,8 @@ struct CompiledGraph {
 
   /// The index of the node with this id (also a merged-away id), or -1.
   int findNode(const std::string &Id) const;
+  /// The functions of live nodes, sorted (a subset of FunctionsById).
+  std::set<std::string> liveFunctions() const;
 };
 
 /// Only the validation of compileGraph(): true when there is no error (warnings may be
