@@ -198,7 +198,8 @@ bool LiveEditor::applyToJson(const Edit &E) {
       Args[E.Arg]["value"] = Value;
     else
       Args[E.Arg] = Value;
-    return WasWired;
+    // A set to {"attr": ...} or {"node": ...} is a wiring too.
+    return WasWired || (Value.is_object() && (Value.contains("attr") || Value.contains("node")));
   }
   throw Error("edit '" + E.Text + "': unknown node '" + E.Node + "'");
 }
@@ -278,10 +279,12 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
 bool LiveEditor::fallbackRuns(const Renderer &R) const {
   // The fallback has a case for every node's function, so a compiled edit needs no new one;
   // what it may need is more value-stack slots than the graph had, which the fallback's
-  // headroom may hold, or more outputs, which no kernel of this layout has.
+  // headroom may hold, or more outputs, which no kernel of this layout has, or (a set to
+  // {"attr": ...}) an attribute its decoder has no case for.
   const auto &CG = Editor->compiled();
   return Lay.Mode == "shape" && R.tierPolicy() != TierPolicy::Shape && !CG.Spill &&
-         CG.StackSlots <= R.fallbackStackSlots() && CG.MaxOutputs <= Lay.MaxOutputs;
+         CG.StackSlots <= R.fallbackStackSlots() && CG.MaxOutputs <= Lay.MaxOutputs &&
+         !Editor->needsAttributeCase();
 }
 
 LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {

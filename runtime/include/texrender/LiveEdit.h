@@ -72,8 +72,8 @@ private:
   void adopt(const Layout &New, const Regeneration &Files);
   nlohmann::json absoluteGraph() const;
   void initEditor(const std::string &GraphText);
-  /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, or a constant over a
-  /// node or attribute input).
+  /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, a constant over a
+  /// node or attribute input, or a set to {"attr": ...} or {"node": ...}).
   bool applyToJson(const Edit &E);
 
   Layout Lay;

@@ -205,6 +205,22 @@ TEST(GraphEditor, NewFunctionNeedsARebuild) {
   EXPECT_GE(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
 }
 
+TEST(GraphEditor, AnAttributeNoArgumentReadNeedsADecoderCase) {
+  // The graph's node arguments read ObjectPos only: the interpreter decodes no other
+  // attribute, so wiring AO into an argument needs a new kernel; ObjectPos does not.
+  GraphEditor E = makeEditor();
+  DiagnosticSink D;
+  ASSERT_TRUE(E.setArgument("r", "t", R"({"attr": "AO"})", D)) << text(D);
+  EXPECT_TRUE(E.needsAttributeCase());
+  EXPECT_TRUE(E.needsRebuild());
+  ASSERT_TRUE(E.setArgument("r", "t", "0.5", D)) << text(D);
+  EXPECT_FALSE(E.needsAttributeCase());
+  EXPECT_FALSE(E.needsRebuild());
+  ASSERT_TRUE(E.setArgument("m", "a", R"({"attr": "ObjectPos"})", D)) << text(D);
+  EXPECT_FALSE(E.needsAttributeCase());
+  EXPECT_FALSE(E.needsRebuild());
+}
+
 TEST(GraphEditor, MoreStackSlotsNeedARebuild) {
   DiagnosticSink D;
   auto G = parse(R"({"texcc": 1, "nodes": [
