@@ -153,9 +153,9 @@ def edits_section(d):
              "(for edits without a build, editSeconds itself: re-encode and upload)." % (
                  d["size"], d["repetitions"]), "",
              "A new user function (`benchContrast` of `bench/inputs/edit/tint.cl`, wired in by "
-             "`graph-new-function.json`) cannot go through the edit mode: texrender's live editor "
-             "knows only the signatures listed in layout.json, i.e. the functions already in the "
-             "kernel, and rejects the graph (`unknown function`). Its row is texcc, plus the "
+             "`graph-new-function.json`, which adds a node of it) cannot go through the edit mode: "
+             "texrender's live editor knows only the signatures listed in layout.json, i.e. the "
+             "functions of the graph's nodes, and rejects the graph (`unknown function`). Its row is texcc, plus the "
              "kernel build measured as the wall time of a texrender process with the texture "
              "kernel uncached minus that of one with it cached (scene load excluded), plus the "
              "first frame. PoCL's own kernel cache is off for this figure "
@@ -185,7 +185,8 @@ def edit_session_section(d):
              "(`graph-session.json`), %s, 1 spp, one `texrender --edit-script` process per "
              "configuration, edits applied back to back (each followed by one frame): 14 "
              "argument edits, 5 rewirings over the kernel's functions (each changes a shape), "
-             "1 rewiring onto a function no kernel has yet. Edit to frame = texrender's "
+             "1 rewiring onto a dead node's function (only the interp kernels, with a case for every "
+             "node's function, have it). Edit to frame = texrender's "
              "editSeconds + renderSeconds per frame (wall clock). A frame *waits* when a "
              "texture-kernel build ran in the foreground before it. PoCL's kernel cache off, "
              "texrender's program cache holding only the fixed kernels at the start." % d["size"],
@@ -212,9 +213,10 @@ def edit_session_notes(d):
         return []
     waits = [f for f in tiered["frames"] if f["kernelBuilds"] or f["buildWaitSeconds"] > 0]
     out = ["In the tiered run, %d of 20 frames waited for a build%s. A frame waits in tiered "
-           "mode only when the interp fallback cannot run the edited graph: a function it "
-           "lacks (a new one, or one a regeneration dropped), more value-stack slots than its "
-           "headroom, or a fallback still building behind a foreground shape build; then the "
+           "mode only when the interp fallback cannot run the edited graph: more value-stack "
+           "slots than its headroom, more outputs, an attribute argument its decoder lacks, or "
+           "a fallback still building behind a foreground shape build (it has a case for every "
+           "node's function, dead ones' included, so rewirings never need a new one); then the "
            "shape kernel is built in the foreground and the fallback behind it. The other "
            "rewirings rendered at once with the interp tier while texcc and the builds ran on "
            "the background thread (nice 19)." % (len(waits), (": " + "; ".join(
