@@ -20,9 +20,10 @@ import resources
 import stability
 import table1
 
+# The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
-           ("resources", resources),
-           ("accuracy", accuracy), ("stability", stability), ("ao", ao)]
+           ("resources", resources), ("accuracy", accuracy), ("ao", ao),
+           ("stability", stability)]
 
 
 def main():
@@ -61,18 +62,27 @@ def run_figures(args):
         if args.only and name not in args.only:
             continue
         t0 = time.perf_counter()
-        data = module.measure(tools, args.quick)
-        data["quick"] = args.quick
-        data["seconds"] = time.perf_counter() - t0
-        data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
-        data["build"] = (os.path.relpath(tools.build, common.ROOT)
-                         if tools.build.startswith(common.ROOT + os.sep) else tools.build)
-        data["loadAverage"] = os.getloadavg()[1]
-        data["command"] = "bench/run" + (" --quick" if args.quick else "") + \
-            (" --only " + name if args.only else "")
-        data["machine"] = common.machine()
-        data["git"] = common.git_head()
-        common.save(name, data)
+
+        def save(data, complete=True, name=name, t0=t0):
+            data["complete"] = complete
+            data["quick"] = args.quick
+            data["seconds"] = time.perf_counter() - t0
+            data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+            data["build"] = (os.path.relpath(tools.build, common.ROOT)
+                             if tools.build.startswith(common.ROOT + os.sep) else tools.build)
+            data["loadAverage"] = os.getloadavg()[1]
+            data["command"] = "bench/run" + (" --quick" if args.quick else "") + \
+                (" --only " + name if args.only else "")
+            data["machine"] = common.machine()
+            data["git"] = common.git_head()
+            common.save(name, data)
+
+        if getattr(module, "CHECKPOINTS", False):
+            # Saved after every point, marked incomplete, so that a run cut short keeps them.
+            data = module.measure(tools, args.quick, lambda d: save(d, complete=False))
+        else:
+            data = module.measure(tools, args.quick)
+        save(data)
         common.log("%s done in %.0f s" % (name, data["seconds"]))
     common.log("all figures in %.0f s" % (time.perf_counter() - start))
 

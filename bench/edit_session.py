@@ -1,7 +1,8 @@
 """Figure 2b: a 20-edit session replayed in every mode, and the per-hit texture cost per mode.
 
 bench/inputs/edit/session.txt (14 argument edits, 5 rewirings over the kernel's functions, 1
-rewiring onto a node of a function no kernel has yet) runs through one `texrender
+rewiring onto a dead node whose function no live node calls: only the interp kernels, which have
+a case for every node's function, have it) runs through one `texrender
 --edit-script` process per configuration on the atrium with rust (graph-session.json):
 interp, inline, wavefront, shape with --tier=shape (every shape change waits for its build)
 and shape with --tier=auto (tiered: the interp fallback renders while the shape kernel builds

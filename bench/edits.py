@@ -7,7 +7,7 @@ frame's renderSeconds. texrender does not split editSeconds, so texcc's share is
 separate run of texcc on the same edited graph, and "build + upload" is editSeconds minus it.
 
 A new user function cannot go through the edit mode: its live editor knows only the
-signatures in layout.json, which lists the functions the kernel contains. It is measured as
+signatures in layout.json, which lists the functions of the graph's nodes (dead ones' too). It is measured as
 texcc on bench/inputs/edit/graph-new-function.json and a fresh texrender whose texture kernel
 is not cached; its kernel build time is that process's wall time minus a second one's that
 finds the kernel in the program cache. PoCL's own kernel cache is off (POCL_KERNEL_CACHE=0)

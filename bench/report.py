@@ -49,12 +49,25 @@ def machine_section(results):
             total += data["seconds"]
             lines.append("| %s | `%s` | %s | %.0f s |" % (name, data["command"], data["date"],
                                                          data["seconds"]))
-    lines += ["", "Sum of the figures' run times: %.1f minutes (%s run)." % (
-        total / 60, "quick" if any_result.get("quick") else "full")]
-    if any_result.get("quick"):
-        lines += ["", "The full run (`bench/run`: 512x512, more repetitions, a 1024-spp reference, "
-                  "the stability sweep up to each mode's failure or 10 minutes per point) has "
-                  "not been run yet; its duration is not measured."]
+    full = [n for n, d in results.items() if d and not d.get("quick")]
+    quick = [n for n, d in results.items() if d and d.get("quick")]
+    lines += ["", "Sum of the figures' run times: %.1f minutes." % (total / 60)]
+    if not quick:
+        lines += ["", "This is the full run (`bench/run`: 512x512, more repetitions, a 1024-spp "
+                  "reference, the stability sweep up to each mode's failure or 10 minutes per "
+                  "point); its duration is the sum above, each figure timed by bench/bench.py "
+                  "(the `seconds` of its JSON)."]
+    elif not full:
+        lines += ["", "This is the quick run (`bench/run --quick`). The full run (`bench/run`: "
+                  "512x512, more repetitions, a 1024-spp reference, the stability sweep up to "
+                  "each mode's failure or 10 minutes per point) is not reflected here."]
+    else:
+        lines += ["", "Full-run figures (`bench/run`, 512x512, more repetitions, a 1024-spp "
+                  "reference, the stability sweep up to each mode's failure or 10 minutes per "
+                  "point): %s, %.1f minutes together. Quick-run figures (`bench/run --quick`): "
+                  "%s, %.1f minutes together." % (
+                      ", ".join(full), sum(results[n]["seconds"] for n in full) / 60,
+                      ", ".join(quick), sum(results[n]["seconds"] for n in quick) / 60)]
     return lines + [""]
 
 
@@ -140,9 +153,9 @@ def edits_section(d):
              "(for edits without a build, editSeconds itself: re-encode and upload)." % (
                  d["size"], d["repetitions"]), "",
              "A new user function (`benchContrast` of `bench/inputs/edit/tint.cl`, wired in by "
-             "`graph-new-function.json`) cannot go through the edit mode: texrender's live editor "
-             "knows only the signatures listed in layout.json, i.e. the functions already in the "
-             "kernel, and rejects the graph (`unknown function`). Its row is texcc, plus the "
+             "`graph-new-function.json`, which adds a node of it) cannot go through the edit mode: "
+             "texrender's live editor knows only the signatures listed in layout.json, i.e. the "
+             "functions of the graph's nodes, and rejects the graph (`unknown function`). Its row is texcc, plus the "
              "kernel build measured as the wall time of a texrender process with the texture "
              "kernel uncached minus that of one with it cached (scene load excluded), plus the "
              "first frame. PoCL's own kernel cache is off for this figure "
@@ -172,7 +185,8 @@ def edit_session_section(d):
              "(`graph-session.json`), %s, 1 spp, one `texrender --edit-script` process per "
              "configuration, edits applied back to back (each followed by one frame): 14 "
              "argument edits, 5 rewirings over the kernel's functions (each changes a shape), "
-             "1 rewiring onto a function no kernel has yet. Edit to frame = texrender's "
+             "1 rewiring onto a dead node's function (only the interp kernels, with a case for every "
+             "node's function, have it). Edit to frame = texrender's "
              "editSeconds + renderSeconds per frame (wall clock). A frame *waits* when a "
              "texture-kernel build ran in the foreground before it. PoCL's kernel cache off, "
              "texrender's program cache holding only the fixed kernels at the start." % d["size"],
@@ -199,9 +213,10 @@ def edit_session_notes(d):
         return []
     waits = [f for f in tiered["frames"] if f["kernelBuilds"] or f["buildWaitSeconds"] > 0]
     out = ["In the tiered run, %d of 20 frames waited for a build%s. A frame waits in tiered "
-           "mode only when the interp fallback cannot run the edited graph: a function it "
-           "lacks (a new one, or one a regeneration dropped), more value-stack slots than its "
-           "headroom, or a fallback still building behind a foreground shape build; then the "
+           "mode only when the interp fallback cannot run the edited graph: more value-stack "
+           "slots than its headroom, more outputs, an attribute argument its decoder lacks, or "
+           "a fallback still building behind a foreground shape build (it has a case for every "
+           "node's function, dead ones' included, so rewirings never need a new one); then the "
            "shape kernel is built in the foreground and the fallback behind it. The other "
            "rewirings rendered at once with the interp tier while texcc and the builds ran on "
            "the background thread (nice 19)." % (len(waits), (": " + "; ".join(
@@ -273,9 +288,51 @@ def resources_verdict(d):
                        paper[1], "smaller in every mode" if max(max(s or 0 for s in stacks),
                                                                  max(s or 0 for s in scratch))
                        < min(paper) else "not smaller in every mode"))
+    out += [""] + shape_verdict(d)
     out += ["", "Both sides are private memory per thread: the NVPTX stack frame and the AMDGPU "
             "scratch per lane of the texture kernel(s). The paper does not say which of its "
             "two figures belongs to which configuration; both are printed.", ""]
+    return out
+
+
+def shape_verdict(d):
+    """Issue 9's targets on gfx90a: shape with no scratch and no more VGPRs than inline, interp
+    at most 72 VGPRs; shape+bake is shape with the graph's int arguments baked (--bake)."""
+    out = []
+    for tex in ("rust", "scratches"):
+        by = {r["mode"]: r for r in d["rows"] if r["texture"] == tex}
+        if "inline" not in by:
+            continue
+        inline_v = worst(by["inline"]["amdgpu"], "VGPRs")
+        for mode in ("shape", "shape+bake"):
+            if mode not in by:
+                continue
+            v, sc = worst(by[mode]["amdgpu"], "VGPRs"), worst(by[mode]["amdgpu"], "ScratchSize")
+            baked = (" (baked: %s)" % ", ".join("`%s`" % b for b in by[mode]["baked"])
+                     if by[mode].get("baked") else "")
+            out.append("- %s, %s%s: %s VGPRs against inline's %s, %s B scratch: %s." % (
+                tex, mode, baked, v, inline_v, sc,
+                "meets issue 9's target (no scratch, VGPRs no more than inline's)"
+                if sc == 0 and v <= inline_v else "misses issue 9's target (no scratch, VGPRs "
+                "no more than inline's) by %d VGPR%s%s" % (max(v - inline_v, 0),
+                                                          "" if v - inline_v == 1 else "s",
+                                                          ", %d B scratch" % sc if sc else "")))
+        if "interp" in by:
+            v = worst(by["interp"]["amdgpu"], "VGPRs")
+            out.append("- %s, interp: %s VGPRs, %s B scratch (target: at most 72 VGPRs): %s." % (
+                tex, v, worst(by["interp"]["amdgpu"], "ScratchSize"),
+                "met" if v <= 72 else "missed"))
+    if out:
+        out += ["", "Why shape stays above inline: inline folds each constant into the code at "
+                "build time (a literal angle's sine and cosine, `1.05 - 2 * density`), and clang "
+                "inlines differently with literals (scratches/inline calls voronoiSearch once, "
+                "shape twice: `s_swappc` in the ISA). Shape reads the same constants from "
+                "args.bin. Each material's program offset is a literal, so those reads are "
+                "uniform: scalar loads, with the values in SGPRs. This took scratches/shape from 56 "
+                "to 51 VGPRs and rust/shape from 61 to 59. Every value computed from them is still "
+                "computed per lane in VGPRs, because gfx90a has no scalar float ALU. The 8 B of "
+                "scratch come with math's `op` switch. Baking `op` removes them, at the cost of a "
+                "build whenever `op` changes."]
     return out
 
 
@@ -322,11 +379,18 @@ def stability_section(d):
             fmt(p["kernelSeconds"]), p["memoryBytes"] / 1e6, p["stackSlots"], p["spill"],
             p["scratchFloat4PerHit"]))
     lines += [""] + largest_builds(d)
+    if d.get("complete") is False:
+        last = d["points"][-1] if d["points"] else None
+        lines += ["**This sweep did not finish**: the run was cut short after %.0f minutes, %d "
+                  "points measured%s. Modes and sizes after that point are not measured." % (
+                      d["seconds"] / 60, len(d["points"]),
+                      ", the last %s = %d, %s" % (last["family"], last["size"], last["mode"])
+                      if last else ""), ""]
     if d["stopped"]:
         lines += ["Where a mode stopped:", ""]
         for s in d["stopped"]:
             lines.append("- %s, %s = %d: %s" % (s["mode"], s["family"], s["size"], s["error"]))
-    else:
+    elif d.get("complete") is not False:
         lines.append("No mode failed or passed the cap at these sizes%s." % (
             " (the quick run stops at modest sizes)" if d.get("quick") else ""))
     return lines + [""]

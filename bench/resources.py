@@ -3,6 +3,7 @@ offline (no GPU needed): clang-15 -> AMDGPU gfx90a with -Rpass-analysis=kernel-r
 and libclc's amdgcn--amdhsa.bc linked (without a math library every math call is an external
 call and the backend assumes a 16 KiB stack), and clang-15 -> NVPTX sm_80 with libclc's
 nvptx64--nvidiacl.bc linked, then ptxas -v when the CUDA toolkit's ptxas is on PATH."""
+import json
 import os
 import re
 import shutil
@@ -98,21 +99,45 @@ def entries_of(src):
         return set(re.findall(r"__kernel\s+void\s+(\w+)", f.read()))
 
 
+def int_arguments(layout_path):
+    """NODE.ARG of every constant int argument (the "mode" arguments: op codes, octave counts,
+    switches) of the live nodes in a layout.json: what --bake is meant for."""
+    with open(layout_path) as f:
+        layout = json.load(f)
+    types = {fn["name"]: {p["name"]: p["type"] for p in fn["params"]} for fn in layout["functions"]}
+    return ["%s.%s" % (n["id"], a["name"]) for n in layout["nodes"] for a in n["args"]
+            if a["source"] == "const" and types[n["fn"]].get(a["name"]) == "int"]
+
+
+# (row name, texcc mode, whether the int arguments are baked)
+CONFIGS = [(m, m, False) for m in common.MODES] + [("shape+bake", "shape", True)]
+
+
 def measure(tools, quick):
     rows = []
     for tex, graph in GRAPHS.items():
-        for mode in common.MODES + ("shape",):
-            folder = os.path.join(tools.work, "res-%s-%s" % (tex, mode))
-            common.texcc(tools, os.path.join(common.ROOT, graph), folder, mode)
+        for name, mode, bake in CONFIGS:
+            folder = os.path.join(tools.work, "res-%s-%s" % (tex, name.replace("+", "-")))
+            extra = []
+            if bake:
+                # The int arguments of the graph, read from an unbaked compile's layout.json.
+                plain = folder + "-plain"
+                common.texcc(tools, os.path.join(common.ROOT, graph), plain, mode)
+                for arg in int_arguments(os.path.join(plain, "layout.json")):
+                    extra += ["--bake", arg]
+            common.texcc(tools, os.path.join(common.ROOT, graph), folder, mode, extra)
             src = os.path.join(folder, "proctex.cl")
             entries = entries_of(src)
-            common.log("resources %s %s (%d kernels)" % (tex, mode, len(entries)))
+            common.log("resources %s %s (%d kernels)" % (tex, name, len(entries)))
             amd = amdgpu(src, folder, entries)
             nv = nvptx(src, folder, entries)
             if set(amd["kernels"]) != entries:
                 raise common.BenchError("AMDGPU remarks missing for %s" % (entries - set(amd["kernels"])))
-            rows.append({"texture": tex, "mode": mode, "kernels": sorted(entries),
+            rows.append({"texture": tex, "mode": name, "kernels": sorted(entries),
+                         "baked": [extra[i + 1] for i in range(0, len(extra), 2)],
                          "amdgpu": amd["kernels"], "nvptx": nv["kernels"],
                          "ptxas": nv.get("ptxas"), "paperStack": PAPER_STACK[tex],
-                         "commands": {"amdgpu": amd["command"], "nvptx": nv["command"]}})
+                         "commands": {"amdgpu": amd["command"], "nvptx": nv["command"],
+                                      "texcc": " ".join(["texcc", "--mode=" + mode, "--graph",
+                                                         graph] + extra)}})
     return {"rows": rows, "clang": common.run([CLANG, "--version"])[1].splitlines()[0]}

@@ -98,15 +98,23 @@ def warm_fixed_kernels(tools):
     common.texrender(tools, SCENE, folder, "st-warmup", cache=tools.sweep_cache)
 
 
-def measure(tools, quick):
+CHECKPOINTS = True  # bench.py passes a checkpoint callback
+
+
+def measure(tools, quick, checkpoint=None):
     with common.no_pocl_cache():
-        return sweep(tools, quick)
+        return sweep(tools, quick, checkpoint or (lambda data: None))
 
 
-def sweep(tools, quick):
+def sweep(tools, quick, checkpoint):
     cap = 120 if quick else 600
     warm_fixed_kernels(tools)
     points, failures = [], []
+
+    def result():
+        return {"capSeconds": cap, "points": points, "stopped": failures,
+                "sizes": {f: sizes(f, quick) for f in ("nodes", "depth")}}
+
     for family in ("nodes", "depth"):
         for mode in common.MODES:
             for size in sizes(family, quick):
@@ -123,5 +131,6 @@ def sweep(tools, quick):
                     failures.append({"family": family, "size": size, "mode": mode,
                                      "error": "passed the %d s cap (%.0f s)" % (cap, p["wallSeconds"])})
                     break
-    return {"capSeconds": cap, "points": points, "stopped": failures,
-            "sizes": {f: sizes(f, quick) for f in ("nodes", "depth")}}
+                checkpoint(result())
+            checkpoint(result())
+    return result()

@@ -181,6 +181,7 @@ Layout loadLayout(const std::string &OutDir) {
       L.InterpFallback = (fs::path(OutDir) / K["interpFallback"].get<std::string>()).string();
     if (K.contains("shapes"))
       L.NumShapes = unsigned(K["shapes"].size());
+    L.ShapeHash = K.value("shapeHash", "");
     if (L.Mode == "shape" && L.InterpFallback.empty())
       R.fail("/kernel/interpFallback", "a shape-mode layout names its interp fallback kernel");
     L.StackSlots = J.value("stackSlots", 0u);

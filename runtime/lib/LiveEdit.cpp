@@ -5,7 +5,6 @@
 #include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
 
-#include <algorithm>
 #include <chrono>
 #include <map>
 #include <cstdlib>
@@ -67,29 +66,6 @@ int runProcess(const std::vector<std::string> &Argv, const std::string &LogPath)
   int Status = 0;
   waitpid(Pid, &Status, 0);
   return WIFEXITED(Status) ? WEXITSTATUS(Status) : -1;
-}
-
-/// Removes the nodes whose function the kernel lacks (dead nodes of functions that only the
-/// sources have), and the nodes that read them, from G; returns their ids.
-std::set<std::string> removeNodesWithoutSignature(texcc::graph::Graph &G,
-                                                  const texcc::graph::SignatureMap &Sigs) {
-  std::set<std::string> Gone;
-  for (bool Changed = true; Changed;) {
-    Changed = false;
-    for (auto It = G.Nodes.begin(); It != G.Nodes.end();) {
-      bool Reads = std::any_of(It->Args.begin(), It->Args.end(), [&](const auto &A) {
-        return A.second.K == texcc::graph::ArgValue::Kind::NodeRef && Gone.count(A.second.Ref);
-      });
-      if (Sigs.count(It->Fn) && !Reads) {
-        ++It;
-        continue;
-      }
-      Gone.insert(It->Id);
-      It = G.Nodes.erase(It);
-      Changed = true;
-    }
-  }
-  return Gone;
 }
 
 /// Arguments baked on texcc's command line (--bake NODE.ARG) are marked "bake" in layout.json's
@@ -188,10 +164,11 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why) ||
       !texcc::graph::readLayoutSuperinstructions(Lay.Text, Opts.Superinstructions, Why))
     throw Error(Lay.Dir + "/layout.json: " + Why);
-  // The editor knows the kernel's functions only; a rewiring onto a node of another function
-  // regenerates the kernel (apply()).
-  KernelLacks = removeNodesWithoutSignature(*G, Sigs);
+  // layout.json lists the function of every node, dead ones included, and the interp kernel
+  // (interp mode, shape mode's fallback) has a case for each: a rewiring onto any node is a
+  // re-encoding with the ids pinned, never a new function.
   Opts.StackLimit = Lay.StackLimit;
+  KernelShapeHash = Lay.ShapeHash;
   Editor = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
   if (!Editor->init(Diags))
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
@@ -224,7 +201,8 @@ bool LiveEditor::applyToJson(const Edit &E) {
       Args[E.Arg]["value"] = Value;
     else
       Args[E.Arg] = Value;
-    return WasWired;
+    // A set to {"attr": ...} or {"node": ...} is a wiring too.
+    return WasWired || (Value.is_object() && (Value.contains("attr") || Value.contains("node")));
   }
   throw Error("edit '" + E.Text + "': unknown node '" + E.Node + "'");
 }
@@ -290,6 +268,7 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
   Regeneration Files = writeEditedGraph();
   std::string Texcc = TexccPath, Mode = Lay.Mode;
   const auto &CG = Editor->compiled();
+  KernelShapeHash = texcc::graph::shapeHash(CG);
   R.switchShapes(
       CG.ArgsBin, CG.Attributes,
       [Texcc, Mode, Files] { return runTexcc(Texcc, Mode, Files.Graph, Files.Out, Files.Log); },
@@ -301,22 +280,18 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
 }
 
 bool LiveEditor::fallbackRuns(const Renderer &R) const {
-  // The editor knows only the kernel's functions, so a compiled edit needs no new one; what
-  // it may need is more value-stack slots than the graph had, which the fallback's headroom
-  // may hold, or more outputs, which no kernel of this layout has.
+  // The fallback has a case for every node's function, so a compiled edit needs no new one;
+  // what it may need is more value-stack slots than the graph had, which the fallback's
+  // headroom may hold, or more outputs, which no kernel of this layout has, or (a set to
+  // {"attr": ...}) an attribute its decoder has no case for.
   const auto &CG = Editor->compiled();
   return Lay.Mode == "shape" && R.tierPolicy() != TierPolicy::Shape && !CG.Spill &&
-         CG.StackSlots <= R.fallbackStackSlots() && CG.MaxOutputs <= Lay.MaxOutputs;
+         CG.StackSlots <= R.fallbackStackSlots() && CG.MaxOutputs <= Lay.MaxOutputs &&
+         !Editor->needsAttributeCase();
 }
 
 LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
   if (Lay.Mode == "inline")
-    return Plan::Regenerate;
-  // A node of a function the kernel lacks is dead: editing it changes nothing rendered, and
-  // wiring it in needs texcc, which alone knows its signature.
-  if (KernelLacks.count(E.Node))
-    return Plan::Upload;
-  if (E.K == Edit::Kind::Rewire && KernelLacks.count(E.Value))
     return Plan::Regenerate;
   texcc::graph::DiagnosticSink Diags;
   bool Ok = E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
@@ -325,6 +300,11 @@ LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer
     throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
   if (Editor->needsRebuild() && !fallbackRuns(R))
     return Plan::Regenerate;
+  // A shape kernel runs the edited graph exactly when its shapes are unchanged: a value edit
+  // that merges or splits identical nodes changes them, a rewiring onto an equal structure
+  // does not (layout.json from a texcc without kernel.shapeHash: the JSON-level test).
+  if (Lay.Mode == "shape" && !KernelShapeHash.empty())
+    Structural = texcc::graph::shapeHash(Editor->compiled()) != KernelShapeHash;
   // The wiring is code in wavefront mode (the launches) and in a shape kernel (its shapes).
   if ((!Structural && !Editor->needsRebuild()) || Lay.Mode == "interp")
     return Plan::Upload;

@@ -109,11 +109,13 @@ static std::vector<std::string> sourceList(const gr::Graph &G) {
   return List;
 }
 
-/// Renders every source with only the user functions the live nodes reach.
+/// Renders every source with only the user functions that the texture functions Textures
+/// reach.
 static std::string renderReachableUserCode(const fe::FrontendResult &FR,
-                                           const gr::CompiledGraph &CG) {
+                                           const gr::CompiledGraph &CG,
+                                           const std::set<std::string> &Textures) {
   std::set<std::string> Keep;
-  for (const std::string &Fn : CG.FunctionsById) {
+  for (const std::string &Fn : Textures) {
     Keep.insert(CG.Signatures.at(Fn).RenamedName);
     auto It = FR.Reachable.find(Fn);
     if (It != FR.Reachable.end())
@@ -199,7 +201,17 @@ static int run() {
   Opts.EvalMode = *Mode;
   Opts.Tgt = *Target;
   Opts.GraphPath = fs::absolute(fs::path(GraphPath.getValue())).lexically_normal().string();
-  Opts.UserCode = renderReachableUserCode(*FR, *CG);
+  Opts.UserCode = renderReachableUserCode(*FR, *CG, CG->liveFunctions());
+  // The interp kernel (interp mode, shape mode's fallback) calls the functions of dead nodes
+  // too (CompiledGraph::Signatures): a rewiring onto one is then an upload, not a rebuild.
+  // (With no live node no edit can wire one in: materials are not edited.)
+  if (*Target == cg::Target::OpenCL && (*Mode == cg::Mode::Interp || *Mode == cg::Mode::Shape) &&
+      !CG->Nodes.empty()) {
+    std::set<std::string> All;
+    for (const auto &KV : CG->Signatures)
+      All.insert(KV.first);
+    Opts.InterpUserCode = renderReachableUserCode(*FR, *CG, All);
+  }
   std::string Error;
   if (!cg::writeOutputsAtomically(OutDir, cg::generateOutputs(*CG, Opts, !Dump.empty()), Error))
     return fail(Error);

@@ -49,6 +49,7 @@ struct Layout {
   // runs the same args.bin and renders while the shape kernel builds; and the shape count.
   std::string InterpFallback;
   unsigned NumShapes = 0;
+  std::string ShapeHash;  // kernel.shapeHash: the shapes the shape kernel was made for
   unsigned StackSlots = 0;
   unsigned StackLimit = 32;
   bool Spill = false;

@@ -2,19 +2,19 @@
 #define TEXRENDER_LIVEEDIT_H
 
 // Live edits of the texture graph between frames. In interp, wavefront and shape mode an
-// argument edit (and, in interp, a rewiring over the kernel's existing functions) re-encodes
-// args.bin with the graph library (texcc::graph::GraphEditor) and uploads it: no kernel build.
-// In inline mode, and whenever the edit needs a function or more stack/outputs than the
-// kernel has, the edited graph is handed to the texcc binary next to texrender to regenerate
-// the kernel, which is then built (and counted as a kernel build). In shape mode with tier
-// auto, an edit that changes the wiring renders at once with the interp fallback while texcc
-// and the new shape kernel's build run on the renderer's background thread.
+// argument edit (and, in interp, a rewiring onto any node of the graph: the interp kernel has
+// a case for every node's function, dead nodes' included) re-encodes args.bin with the graph
+// library (texcc::graph::GraphEditor) and uploads it: no kernel build. In inline mode, and
+// whenever the edit needs more stack/outputs than the kernel has, the edited graph is handed
+// to the texcc binary next to texrender to regenerate the kernel, which is then built (and
+// counted as a kernel build). In shape mode with tier auto, an edit that changes the wiring
+// renders at once with the interp fallback while texcc and the new shape kernel's build run on
+// the renderer's background thread.
 
 #include "texrender/Layout.h"
 #include "texrender/Renderer.h"
 
 #include <memory>
-#include <set>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -72,15 +72,17 @@ private:
   void adopt(const Layout &New, const Regeneration &Files);
   nlohmann::json absoluteGraph() const;
   void initEditor(const std::string &GraphText);
-  /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, or a constant over a
-  /// node or attribute input).
+  /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, a constant over a
+  /// node or attribute input, or a set to {"attr": ...} or {"node": ...}).
   bool applyToJson(const Edit &E);
 
   Layout Lay;
   std::string TexccPath;
   nlohmann::json GraphDoc; // graph.json with every edit so far (for regeneration)
   std::unique_ptr<texcc::graph::GraphEditor> Editor;
-  std::set<std::string> KernelLacks; // nodes of functions the kernel lacks (not in the editor)
+  // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
+  // edit that changes them needs a new shape kernel, one that keeps them is an upload.
+  std::string KernelShapeHash;
   unsigned Generation = 0;
 };
 

@@ -1,6 +1,8 @@
 // Helpers shared by the generators of every mode (see Emit.h).
 #include "Emit.h"
 
+#include "texcc/Graph/Passes.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -118,8 +120,7 @@ std::string signatureComment(const FunctionSignature &Sig) {
 }
 
 uint32_t recordRelativeWord(const CompiledNode &N, const CompiledArg &A) {
-  uint32_t SourceBytes = (static_cast<uint32_t>(N.Args.size()) * 4 + 15) / 16 * 16;
-  return (SourceBytes + A.BlockOffset) / 4;
+  return (sourceWordsBytes(N.Args.size()) + A.BlockOffset) / 4;
 }
 
 uint32_t constantWord(const CompiledNode &N, const CompiledArg &A) {

@@ -1,9 +1,11 @@
 // interp: the restricted mega-kernel. Per hit, the material's program in fakeStack is a loop
 // over {fnId, resultSlot, recordByteOffset}; every argument is decoded from its source word
-// (docs/abi.md); one switch case per live texture function calls it once per node.
+// (docs/abi.md); one switch case per texture function of the graph's nodes, live or dead, calls
+// it once per node.
 #include "Emit.h"
 
-#include <algorithm>
+#include "texcc/Graph/Passes.h"
+
 #include <set>
 
 using namespace texcc::graph;
@@ -34,11 +36,12 @@ static std::string hitAttribute(int Id) {
 }
 
 /// texcc_interp_attr(h, id): an attribute argument, read from the hit in global memory with a
-/// case only for the attributes node arguments read. texcc_attr_by_id on the private context
+/// case only for the attributes node arguments (of live or dead nodes) read. texcc_attr_by_id on the private context
 /// would keep every attribute of the hit live in registers across the instruction loop (on
 /// gfx90a that alone took the kernel from 72 to 99 VGPRs).
 static void emitAttributeDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
-  std::set<int> Ids;
+  // Those of dead nodes too: a rewiring may make them live.
+  std::set<int> Ids(CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());
   for (const CompiledNode &N : CG.Nodes)
     for (const CompiledArg &A : N.Args)
       if (A.Src == CompiledArg::Source::Attribute)
@@ -94,18 +97,19 @@ static void emitDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
 }
 
 /// The call of one texture function with every argument decoded from the record at word Rec.
-/// Parameter block offsets are per function (every node of it shares the layout): take them
-/// from one of its nodes, so that they are the graph library's, never recomputed here. A
-/// superinstruction's second call gets parameter Fed as the expression FedExpr instead.
-static std::string interpCall(const FunctionSignature &Sig, const CompiledNode &Example,
-                              const std::string &Rec = "rec", int Fed = -1,
-                              const std::string &FedExpr = "") {
-  uint32_t SourceWords = (static_cast<uint32_t>(Sig.Params.size()) * 4 + 15) / 16 * 16 / 4;
+/// Parameter block offsets are per function, from its signature (every node of it shares the
+/// layout, and a function that only dead nodes name has no node to take them from): the graph
+/// library's, never recomputed here. A superinstruction's second call gets parameter Fed as the
+/// expression FedExpr instead.
+static std::string interpCall(const FunctionSignature &Sig, const std::string &Rec = "rec",
+                              int Fed = -1, const std::string &FedExpr = "") {
+  uint32_t BlockSize = 0;
+  const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
+  const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
   std::string S = Sig.RenamedName + "(texcc_ctx";
-  for (size_t P = 0; P < Example.Args.size(); ++P) {
-    const CompiledArg &A = Example.Args[P];
-    const ValueType &T = A.Type;
-    std::string At = Rec + " + " + std::to_string(SourceWords + A.BlockOffset / 4) + "u";
+  for (size_t P = 0; P < Sig.Params.size(); ++P) {
+    const ValueType &T = Sig.Params[P].Type;
+    std::string At = Rec + " + " + std::to_string(SourceWords + Offsets[P] / 4) + "u";
     S += ",\n          ";
     if (static_cast<int>(P) == Fed)
       S += FedExpr;
@@ -124,20 +128,6 @@ static std::string interpCall(const FunctionSignature &Sig, const CompiledNode &
   return S + ")";
 }
 
-/// A live node of function FnId (every live function has one).
-static const CompiledNode &nodeOfFunction(const CompiledGraph &CG, unsigned FnId) {
-  for (const CompiledNode &N : CG.Nodes)
-    if (N.FnId == FnId)
-      return N;
-  return CG.Nodes.front();
-}
-
-/// The id of a function in FunctionsById.
-static unsigned functionId(const CompiledGraph &CG, const std::string &Name) {
-  auto It = std::find(CG.FunctionsById.begin(), CG.FunctionsById.end(), Name);
-  return static_cast<unsigned>(It - CG.FunctionsById.begin());
-}
-
 /// The case of a superinstruction: First into a register, fed to Second's parameter (a float
 /// feeding a float2..4 parameter is broadcast, as the source word's broadcast bit says: the bit
 /// is set exactly then), Second's record and result slot from the next instruction, which the
@@ -153,15 +143,12 @@ static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph
   OS << "    case " << Sup.Opcode << "u: { /* superinstruction: " << F.Name << " -> " << G.Name
      << "." << G.Params[Sup.Param].Name << ", the next instruction; " << F.File
      << (G.File == F.File ? "" : ", " + G.File) << " */\n"
-     << "      const " << spelling(F.Return) << " texcc_first = "
-     << interpCall(F, nodeOfFunction(CG, functionId(CG, Sup.First))) << ";\n"
+     << "      const " << spelling(F.Return) << " texcc_first = " << interpCall(F) << ";\n"
      << "      skipNext = true;\n"
      << "      resultSlot = fakeStack[prog + 6u + 3u * i];\n"
      << "      const uint rec2 = fakeStack[prog + 7u + 3u * i] / 4u;\n"
      << "      r = "
-     << widenToFloat4(G.Return,
-                      interpCall(G, nodeOfFunction(CG, functionId(CG, Sup.Second)), "rec2",
-                                 static_cast<int>(Sup.Param), Value),
+     << widenToFloat4(G.Return, interpCall(G, "rec2", static_cast<int>(Sup.Param), Value),
                       Target::OpenCL)
      << ";\n"
      << "      break;\n"
@@ -193,11 +180,17 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
   OS << "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
         "    float4 r;\n"
         "    switch (fnId) {\n";
+  // Every function a node of the graph names, live or dead: a rewiring onto any node runs on
+  // this kernel with a new args.bin.
+  const std::set<std::string> Live = CG.liveFunctions();
   for (unsigned Id = 0; Id < CG.FunctionsById.size(); ++Id) {
-    const FunctionSignature &Sig = CG.Signatures.at(CG.FunctionsById[Id]);
-    OS << "    case " << Id << "u: /* " << signatureComment(Sig) << ", " << Sig.File << " */\n"
-       << "      r = " << widenToFloat4(Sig.Return, interpCall(Sig, nodeOfFunction(CG, Id)),
-                             Target::OpenCL) << ";\n"
+    auto It = CG.Signatures.find(CG.FunctionsById[Id]);
+    if (It == CG.Signatures.end())
+      continue; // an id no function of this graph has (pinned by a live edit)
+    const FunctionSignature &Sig = It->second;
+    OS << "    case " << Id << "u: /* " << signatureComment(Sig) << ", " << Sig.File
+       << (Live.count(Sig.Name) ? "" : "; only dead nodes name it") << " */\n"
+       << "      r = " << widenToFloat4(Sig.Return, interpCall(Sig), Target::OpenCL) << ";\n"
        << "      break;\n";
   }
   for (const Superinstruction &Sup : CG.Superinstructions)

@@ -24,6 +24,7 @@ static Json kernelJson(const CompiledGraph &CG, const CodegenOptions &Opts) {
     for (size_t I = 0; I < Groups.size(); ++I)
       Shapes.push_back(Json{{"id", I}, {"materials", Groups[I].Materials}});
     K["shapes"] = std::move(Shapes);
+    K["shapeHash"] = shapeHash(CG);
     return K;
   }
   if (Opts.EvalMode != Mode::Wavefront) {

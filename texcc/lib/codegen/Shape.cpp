@@ -68,27 +68,30 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
 
 void emitShape(std::ostringstream &OS, const CompiledGraph &CG) {
   const std::vector<MaterialShape> Shapes = groupShapes(CG);
-  if (!Shapes.empty())
-    emitProgramLocator(OS);
   for (unsigned K = 0; K < Shapes.size(); ++K)
     emitShapeBody(OS, CG, Shapes[K], K);
   OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
   emitKernelPrologue(OS, "");
-  if (!Shapes.empty())
-    OS << "  __global float4 *out = outputs + gid * TEXCC_MAX_OUTPUTS;\n"
-       << "  const uint prog = texcc_program(fakeStack, mat);\n"
-       << "  switch (mat) {\n";
-  for (unsigned K = 0; K < Shapes.size(); ++K) {
-    for (unsigned Mat : Shapes[K].Materials)
-      OS << "  case " << Mat << ": /* '" << CG.Materials[Mat].Name << "' */\n";
-    OS << "    " << shapeFunctionName(K) << "(texcc_ctx, fakeStack, prog, out);\n"
-       << "    break;\n";
+  if (Shapes.empty()) {
+    OS << "}\n";
+    return;
   }
-  if (!Shapes.empty())
-    OS << "  default:\n"
-       << "    break;\n"
-       << "  }\n";
-  OS << "}\n";
+  // Each material's program offset is a literal: it follows from the program lengths of the
+  // materials before it, which the shapes fix (graph::shapeHash, kernel.shapeHash). The same
+  // value in every lane of a wave makes the body's reads of the records uniform (scalar loads
+  // on GPUs, the constants in scalar registers), as the literals of inline code are.
+  OS << "  __global float4 *out = outputs + gid * TEXCC_MAX_OUTPUTS;\n"
+     << "  switch (mat) {\n";
+  for (unsigned K = 0; K < Shapes.size(); ++K)
+    for (unsigned Mat : Shapes[K].Materials)
+      OS << "  case " << Mat << ": /* '" << CG.Materials[Mat].Name << "' */\n"
+         << "    " << shapeFunctionName(K) << "(texcc_ctx, fakeStack, "
+         << CG.Materials[Mat].ProgramWordOffset << "u, out);\n"
+         << "    break;\n";
+  OS << "  default:\n"
+     << "    break;\n"
+     << "  }\n"
+     << "}\n";
 }
 
 } // namespace texcc::codegen

@@ -15,6 +15,13 @@ int CompiledGraph::findNode(const std::string &Id) const {
   return -1;
 }
 
+std::set<std::string> CompiledGraph::liveFunctions() const {
+  std::set<std::string> Live;
+  for (const CompiledNode &N : Nodes)
+    Live.insert(N.Fn);
+  return Live;
+}
+
 std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
                                           const CompileOptions &Opts, DiagnosticSink &Diags) {
   std::optional<CompiledGraph> CG = resolveGraph(G, Sigs, Opts, Diags);

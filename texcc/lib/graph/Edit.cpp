@@ -6,6 +6,8 @@
 
 #include "Json.h"
 
+#include <algorithm>
+
 namespace texcc::graph {
 
 namespace {
@@ -49,12 +51,13 @@ bool GraphEditor::init(DiagnosticSink &Diags) {
   CG = std::move(*C);
   KernelStackSlots = CG.StackSlots;
   KernelMaxOutputs = CG.MaxOutputs;
+  KernelArgumentAttributes = CG.GraphArgumentAttributes;
   // The kernel has a switch case for exactly these functions; later compiles keep their ids.
   if (Opts.FixedFunctionIds.empty())
     for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id)
       if (!CG.FunctionsById[Id].empty())
         Opts.FixedFunctionIds[CG.FunctionsById[Id]] = static_cast<unsigned>(Id);
-  NeedsRebuild = false;
+  NeedsRebuild = NeedsAttributeCase = false;
   return true;
 }
 
@@ -66,6 +69,10 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
   NeedsRebuild = CG.StackSlots > KernelStackSlots || CG.MaxOutputs > KernelMaxOutputs;
   for (const CompiledNode &N : CG.Nodes)
     NeedsRebuild |= !Opts.FixedFunctionIds.count(N.Fn);
+  NeedsAttributeCase = !std::includes(
+      KernelArgumentAttributes.begin(), KernelArgumentAttributes.end(),
+      CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());
+  NeedsRebuild |= NeedsAttributeCase;
   return true;
 }
 
@@ -117,7 +124,7 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
       for (uint32_t Copy : CN.RecordCopies)
         encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
       G = std::move(Edited);
-      NeedsRebuild = false;
+      NeedsRebuild = NeedsAttributeCase = false;
       return true;
     }
   }

@@ -49,8 +49,12 @@ std::vector<uint32_t> parameterOffsets(const FunctionSignature &Sig, uint32_t &B
   return Offsets;
 }
 
+uint32_t sourceWordsBytes(size_t NumParams) {
+  return alignTo(4 * static_cast<uint32_t>(NumParams), 16);
+}
+
 uint32_t parameterBlockStart(const CompiledNode &N, uint32_t RecordOffset) {
-  return RecordOffset + alignTo(4 * static_cast<uint32_t>(N.Args.size()), 16);
+  return RecordOffset + sourceWordsBytes(N.Args.size());
 }
 
 uint32_t sourceWord(const CompiledArg &A, unsigned Slot) {
@@ -82,7 +86,7 @@ void layoutArguments(CompiledGraph &CG, std::ostream *Log) {
     for (size_t I = 0; I < N.Args.size(); ++I)
       N.Args[I].BlockOffset = Offsets[I];
     N.RecordOffset = Cursor;
-    N.RecordSize = alignTo(4 * static_cast<uint32_t>(N.Args.size()), 16) + BlockSize;
+    N.RecordSize = sourceWordsBytes(N.Args.size()) + BlockSize;
     N.RecordCopies.clear();
     Cursor += N.RecordSize;
     if (Log)

@@ -32,19 +32,16 @@ std::string imagePath(const std::string &GraphPath, const std::string &Image) {
 
 OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
   uint32_t BlockSize = 0;
-  uint32_t Offset = 0;
+  std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
   OJson Params = OJson::array();
-  for (const Param &P : Sig.Params) {
-    unsigned A = alignOf(P.Type);
-    Offset = (Offset + A - 1) / A * A;
+  for (size_t I = 0; I < Sig.Params.size(); ++I) {
+    const Param &P = Sig.Params[I];
     Params.push_back({{"name", P.Name},
                       {"type", spelling(P.Type)},
                       {"size", sizeOf(P.Type)},
-                      {"align", A},
-                      {"offset", Offset}});
-    Offset += sizeOf(P.Type);
+                      {"align", alignOf(P.Type)},
+                      {"offset", Offsets[I]}});
   }
-  BlockSize = (Offset + 15) / 16 * 16;
   return {{"id", Id},
           {"name", Sig.Name},
           {"renamed", Sig.RenamedName},

@@ -214,6 +214,27 @@ void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const Compil
       if (A.Src == CompiledArg::Source::Attribute)
         Attributes.insert(attributeTable()[A.AttrId].first);
   }
+  // The functions only dead nodes name: the interpreter has a case for them too (a rewiring
+  // may make them live), so they get ids after the live ones; their attributes and settings
+  // are read only once they are live.
+  for (const std::string &Fn : CG.GraphFunctions) {
+    auto It = Sigs.find(Fn);
+    if (Ids.count(Fn) || It == Sigs.end())
+      continue;
+    auto Fixed = Opts.FixedFunctionIds.find(Fn);
+    unsigned Id = 0;
+    if (Fixed != Opts.FixedFunctionIds.end()) {
+      Id = Fixed->second;
+    } else {
+      while (Used.count(Id))
+        ++Id;
+      Used.insert(Id);
+      if (Log)
+        *Log << "function-ids: '" << Fn << "' gets id " << Id << " (only dead nodes name it)\n";
+    }
+    Ids[Fn] = Id;
+    CG.Signatures[Fn] = It->second;
+  }
   CG.FunctionsById.clear();
   for (const auto &[Name, Id] : Ids) {
     if (CG.FunctionsById.size() <= Id)

@@ -105,4 +105,20 @@ std::vector<MaterialShape> groupShapes(const CompiledGraph &CG) {
   return Shapes;
 }
 
+std::string shapeHash(const CompiledGraph &CG) {
+  uint64_t H = 1469598103934665603ull;
+  auto Mix = [&H](const std::string &S) {
+    for (unsigned char C : S)
+      H = (H ^ C) * 1099511628211ull;
+    H = (H ^ 0xFFu) * 1099511628211ull; // a separator no key contains
+  };
+  for (const CompiledMaterial &M : CG.Materials)
+    Mix(M.Outputs.empty() ? std::string() : shapeKey(CG, M));
+  static const char Hex[] = "0123456789abcdef";
+  std::string S(16, '0');
+  for (int I = 15; I >= 0; --I, H >>= 4)
+    S[I] = Hex[H & 0xFu];
+  return S;
+}
+
 } // namespace texcc::graph

@@ -5,6 +5,7 @@
 
 #include "Json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -44,10 +45,25 @@ public:
     if (!checkCycles())
       return std::nullopt;
     warnUnused();
+    recordGraphFunctions();
     return std::move(CG);
   }
 
 private:
+  /// What every node needs of an interpreter, before the passes drop the dead ones.
+  void recordGraphFunctions() {
+    std::set<int> Attrs;
+    for (const CompiledNode &N : CG.Nodes) {
+      if (std::find(CG.GraphFunctions.begin(), CG.GraphFunctions.end(), N.Fn) ==
+          CG.GraphFunctions.end())
+        CG.GraphFunctions.push_back(N.Fn);
+      for (const CompiledArg &A : N.Args)
+        if (A.Src == CompiledArg::Source::Attribute)
+          Attrs.insert(A.AttrId);
+    }
+    CG.GraphArgumentAttributes.assign(Attrs.begin(), Attrs.end());
+  }
+
   void error(const SourceLoc &L, const std::string &Msg, const std::string &JsonPath) {
     Diags.error(L, withPath(Msg, JsonPath));
   }

@@ -119,8 +119,10 @@ CodegenOptions shapeOptions() {
 TEST(ShapeKernel, OneBodyPerShapeAndACaseForEveryMaterial) {
   std::string K = generateKernel(compile(GraphText), shapeOptions());
   EXPECT_EQ(count(K, "static inline void texcc_shape_"), 3u);
-  EXPECT_EQ(count(K, "texcc_shape_0(texcc_ctx, fakeStack, prog, out);"), 1u);
-  EXPECT_NE(K.find("  case 0: /* 'a' */\n  case 1: /* 'b' */\n    texcc_shape_0("),
+  // a and b share body 0, each with its own program offset (a's program: 2 + 3 * 2 + 1 words).
+  EXPECT_EQ(count(K, "texcc_shape_0(texcc_ctx, fakeStack, "), 2u);
+  EXPECT_NE(K.find("  case 0: /* 'a' */\n    texcc_shape_0(texcc_ctx, fakeStack, 0u, out);\n"
+                   "    break;\n  case 1: /* 'b' */\n    texcc_shape_0(texcc_ctx, fakeStack, 9u, out);"),
             std::string::npos);
   // The baked mode of d (shape 2) is a literal; a's and b's mode is read from their records.
   EXPECT_EQ(count(K, "as_float(fakeStack[r0 + 8u]), 1);"), 1u);
@@ -145,3 +147,30 @@ TEST(ShapeKernel, WritesTheInterpKernelAsFallbackAndListsTheShapes) {
 }
 
 } // namespace
+
+namespace {
+
+std::string withValue(std::string Text, const std::string &From, const std::string &To) {
+  size_t At = Text.find(From);
+  EXPECT_NE(At, std::string::npos) << From;
+  return At == std::string::npos ? Text : Text.replace(At, From.size(), To);
+}
+
+} // namespace
+
+TEST(ShapeHash, SameForOtherConstantsDifferentForOtherShapes) {
+  const std::string Base = shapeHash(compile(GraphText));
+  EXPECT_EQ(Base.size(), 16u);
+  // An unbaked constant: the same shapes, the same kernel.
+  EXPECT_EQ(shapeHash(compile(withValue(GraphText, "\"s\": 2.0", "\"s\": 7.5"))), Base);
+  // A baked value is part of the shape.
+  EXPECT_NE(shapeHash(compile(withValue(GraphText, "\"value\": 1, \"bake\"",
+                                        "\"value\": 2, \"bake\""))),
+            Base);
+  // Wiring: b's tint reading an attribute instead of its wave.
+  EXPECT_NE(shapeHash(compile(withValue(GraphText, "\"t\": { \"node\": \"wb\" }",
+                                        "\"t\": { \"attr\": \"AO\" }"))),
+            Base);
+  // Baking a's scale makes a's program another shape than b's.
+  EXPECT_NE(shapeHash(compile(GraphText, {"wa.s"})), Base);
+}

@@ -172,12 +172,53 @@ TEST(GraphEditor, RewireIntoACycleIsAnError) {
   EXPECT_EQ(E.graph().findNode("a")->Args[0].second.K, ArgValue::Kind::Number);
 }
 
-TEST(GraphEditor, NewFunctionNeedsARebuild) {
+TEST(GraphEditor, DeadNodesFunctionNeedsNoRebuild) {
+  // 'neg' only the dead node u names: it has an id (after the live functions) and the
+  // interpreter a case, so wiring u in is a re-encoding with the same ids.
   GraphEditor E = makeEditor();
+  const CompiledGraph &Before = E.compiled();
+  ASSERT_EQ(Before.findNode("u"), -1);
+  ASSERT_EQ(Before.FunctionsById.size(), 6u);
+  EXPECT_EQ(Before.FunctionsById[5], "neg");
+  EXPECT_EQ(Before.Signatures.count("neg"), 1u);
+  EXPECT_EQ(Before.liveFunctions().count("neg"), 0u);
+  std::vector<std::string> Ids = Before.FunctionsById;
   DiagnosticSink D;
-  ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D); // 'neg' is not in the kernel
+  ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D);
+  EXPECT_FALSE(E.needsRebuild());
+  EXPECT_EQ(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
+  EXPECT_EQ(E.compiled().FunctionsById, Ids);
+}
+
+TEST(GraphEditor, NewFunctionNeedsARebuild) {
+  // A kernel made without 'neg' (its ids pinned without it): wiring in a node of it needs a
+  // new kernel.
+  DiagnosticSink D;
+  auto G = parse(EditGraph, D);
+  ASSERT_TRUE(G) << text(D);
+  CompileOptions Opts;
+  Opts.FixedFunctionIds = {{"fbm3", 0}, {"ramp", 1}, {"mix3", 2}, {"leaf", 3}, {"add", 4}};
+  GraphEditor E(*G, stdSigs(), Opts);
+  ASSERT_TRUE(E.init(D)) << text(D);
+  ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D);
   EXPECT_TRUE(E.needsRebuild());
   EXPECT_GE(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
+}
+
+TEST(GraphEditor, AnAttributeNoArgumentReadNeedsADecoderCase) {
+  // The graph's node arguments read ObjectPos only: the interpreter decodes no other
+  // attribute, so wiring AO into an argument needs a new kernel; ObjectPos does not.
+  GraphEditor E = makeEditor();
+  DiagnosticSink D;
+  ASSERT_TRUE(E.setArgument("r", "t", R"({"attr": "AO"})", D)) << text(D);
+  EXPECT_TRUE(E.needsAttributeCase());
+  EXPECT_TRUE(E.needsRebuild());
+  ASSERT_TRUE(E.setArgument("r", "t", "0.5", D)) << text(D);
+  EXPECT_FALSE(E.needsAttributeCase());
+  EXPECT_FALSE(E.needsRebuild());
+  ASSERT_TRUE(E.setArgument("m", "a", R"({"attr": "ObjectPos"})", D)) << text(D);
+  EXPECT_FALSE(E.needsAttributeCase());
+  EXPECT_FALSE(E.needsRebuild());
 }
 
 TEST(GraphEditor, MoreStackSlotsNeedARebuild) {

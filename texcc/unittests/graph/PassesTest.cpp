@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <set>
 
 using namespace texcc::graph;
 using namespace texcc::graph::test;
@@ -345,6 +346,41 @@ TEST(FunctionIds, FixedIdsArePinnedOthersTakeFreeOnes) {
   EXPECT_EQ(CG.Nodes[2].FnId, 0u); // add
   EXPECT_EQ(CG.FunctionsById, (std::vector<std::string>{"add", "", "leaf", "neg"}));
   EXPECT_EQ(Log.str(), "function-ids: 'leaf' gets id 2\nfunction-ids: 'neg' gets id 3\n");
+}
+
+TEST(FunctionIds, FunctionsOfDeadNodesGetIdsAfterTheLiveOnes) {
+  // d (first in the file) and i are dead; their functions get ids after the live one, in file
+  // order, and signatures (the interpreter has a case for each); what they read is not read
+  // until they are live, except that the interpreter decodes d's attribute argument.
+  const char *Json = R"({"texcc": 1, "images": {"i": "i.png"}, "nodes": [
+    {"id": "d", "fn": "neg", "args": {"x": {"attr": "AO"}}},
+    {"id": "l", "fn": "leaf", "args": {"x": 1}},
+    {"id": "i", "fn": "image", "args": {"img": {"image": "i"}, "uv": [0, 0]}}],
+    "materials": {"m": {"bsdf": "emission", "color": 1, "strength": {"node": "l"}}}})";
+  CompiledGraph CG = resolved(Json);
+  EXPECT_EQ(CG.GraphFunctions, (std::vector<std::string>{"neg", "leaf", "image"}));
+  EXPECT_EQ(CG.GraphArgumentAttributes, std::vector<int>{attributeId("AO")});
+  removeUnreachableNodes(CG, nullptr);
+  ASSERT_EQ(CG.Nodes.size(), 1u);
+  EXPECT_EQ(CG.GraphFunctions.size(), 3u);
+  std::ostringstream Log;
+  assignFunctionIds(CG, stdSigs(), CompileOptions(), &Log);
+  EXPECT_EQ(CG.FunctionsById, (std::vector<std::string>{"leaf", "neg", "image"}));
+  EXPECT_EQ(CG.Signatures.size(), 3u);
+  EXPECT_EQ(CG.liveFunctions(), std::set<std::string>{"leaf"});
+  EXPECT_TRUE(CG.Attributes.empty()); // neither AO (d's argument) nor TexCoord0 (image's code)
+  EXPECT_TRUE(CG.Settings.empty());
+  EXPECT_EQ(Log.str(), "function-ids: 'leaf' gets id 0\n"
+                       "function-ids: 'neg' gets id 1 (only dead nodes name it)\n"
+                       "function-ids: 'image' gets id 2 (only dead nodes name it)\n");
+
+  // Pinned ids hold for dead nodes' functions too.
+  CompiledGraph Pinned = resolved(Json);
+  removeUnreachableNodes(Pinned, nullptr);
+  CompileOptions Opts;
+  Opts.FixedFunctionIds = {{"image", 0}};
+  assignFunctionIds(Pinned, stdSigs(), Opts, nullptr);
+  EXPECT_EQ(Pinned.FunctionsById, (std::vector<std::string>{"image", "leaf", "neg"}));
 }
 
 TEST(FunctionIds, CollectsAttributesSettingsAndOutputs) {

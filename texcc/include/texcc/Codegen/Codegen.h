@@ -32,6 +32,10 @@ struct CodegenOptions {
   /// reachable from live nodes (TranslatedSource::render(Keep) of every source, concatenated).
   /// For Target::Host it is rewritten by rewriteVectorLiteralsForHost() here.
   std::string UserCode;
+  /// The same restricted to the functions reachable from every node's function, live or dead:
+  /// the OpenCL interp kernel's (interp mode, shape mode's proctex.interp.cl), which has a case
+  /// for each. Empty: UserCode.
+  std::string InterpUserCode;
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).

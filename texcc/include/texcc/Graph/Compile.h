@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -130,16 +131,27 @@ struct CompiledGraph {
   std::string GraphPath;
   std::vector<std::string> Sources;
   std::vector<std::pair<std::string, std::string>> Images;  // index = image id
-  SignatureMap Signatures;                 // live functions only
-  std::vector<std::string> FunctionsById;  // FnId -> name (live functions only)
+  /// Every function a node of the graph names, live or dead: the interpreter (interp mode,
+  /// shape mode's fallback) has a switch case for each, so that a rewiring onto any node of
+  /// the graph runs on the kernel it has. Inline, wavefront and shape code call only the
+  /// functions of live nodes (liveFunctions()).
+  SignatureMap Signatures;
+  /// FnId -> name, the same functions: the live ones first (in node order), then those only
+  /// dead nodes name (in graph.json order). Empty names are gaps (ids pinned by live edits).
+  std::vector<std::string> FunctionsById;
   std::vector<Superinstruction> Superinstructions;  // the interp kernel's table, opcode order
   std::vector<CompiledNode> Nodes;         // live nodes
+  /// Every function a node of the graph names (live or dead), in graph.json order of first
+  /// use; and the attribute ids that node arguments read (live or dead nodes), sorted: the
+  /// interpreter's attribute decoder. Filled by resolveGraph(); node removal keeps them.
+  std::vector<std::string> GraphFunctions;
+  std::vector<int> GraphArgumentAttributes;
   std::vector<CompiledMaterial> Materials;
   unsigned StackSlots = 0;     // exact peak over all materials (TEXCC_STACK_SLOTS)
   unsigned StackLimit = 0;
   bool Spill = false;          // StackSlots > StackLimit: values in a global slice
   unsigned MaxOutputs = 0;     // TEXCC_MAX_OUTPUTS (at least 1)
-  std::vector<std::string> Attributes;  // read by live functions or node args, sorted
+  std::vector<std::string> Attributes;  // read by live functions or live node args, sorted
   std::vector<std::string> Settings;    // read by live functions, sorted
   std::vector<unsigned> WavefrontOrder; // node indices, a topological order over all materials
   std::vector<uint8_t> ArgsBin;         // the encoded fake stack (docs/abi.md)
@@ -148,6 +160,8 @@ struct CompiledGraph {
 
   /// The index of the node with this id (also a merged-away id), or -1.
   int findNode(const std::string &Id) const;
+  /// The functions of live nodes, sorted (a subset of FunctionsById).
+  std::set<std::string> liveFunctions() const;
 };
 
 /// Only the validation of compileGraph(): true when there is no error (warnings may be
@@ -175,6 +189,13 @@ struct MaterialShape {
   std::vector<unsigned> Materials;
 };
 std::vector<MaterialShape> groupShapes(const CompiledGraph &CG);
+
+/// What a shape kernel was built for, as 16 hex digits (FNV-1a 64 of every material's
+/// shapeKey(), in material order; a material without texture outputs counts as empty). Equal
+/// hashes mean the kernel's bodies, its material switch and the materials' program offsets in
+/// args.bin (which follow from the program lengths) all still hold: the shape kernel runs the
+/// graph with an upload. layout.json kernel.shapeHash; the runtime compares it after an edit.
+std::string shapeHash(const CompiledGraph &CG);
 
 /// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
 std::string layoutJson(const CompiledGraph &CG);

@@ -30,8 +30,13 @@ public:
   const CompiledGraph &compiled() const { return CG; }
   const Graph &graph() const { return G; }
   /// True when the last edit needs a kernel the current one cannot run (a function not in
-  /// the kernel, more stack slots than TEXCC_STACK_SLOTS, more outputs than TEXCC_MAX_OUTPUTS).
+  /// the kernel, more stack slots than TEXCC_STACK_SLOTS, more outputs than TEXCC_MAX_OUTPUTS,
+  /// or needsAttributeCase()).
   bool needsRebuild() const { return NeedsRebuild; }
+  /// True when the last edit made a node argument read an attribute that no node argument of
+  /// the initial graph read (`set n.p={"attr": "Normal"}`): the interpreter's attribute
+  /// decoder has no case for it.
+  bool needsAttributeCase() const { return NeedsAttributeCase; }
 
 private:
   bool recompile(DiagnosticSink &Diags);
@@ -42,7 +47,9 @@ private:
   CompiledGraph CG;
   unsigned KernelStackSlots = 0;
   unsigned KernelMaxOutputs = 0;
+  std::vector<int> KernelArgumentAttributes; // sorted: the interpreter's attribute decoder
   bool NeedsRebuild = false;
+  bool NeedsAttributeCase = false;
 };
 
 } // namespace texcc::graph

@@ -23,8 +23,9 @@ void removeUnreachableNodes(CompiledGraph &CG, std::ostream *Log);
 /// Merges nodes with the same function and the same arguments (after merging their children):
 /// the first in file order survives and records the others in MergedIds.
 void mergeIdenticalNodes(CompiledGraph &CG, std::ostream *Log);
-/// Function ids: Opts.FixedFunctionIds first, then the next free ids in node order. Also fills
-/// Signatures, FunctionsById, Attributes, Settings and MaxOutputs from the live nodes.
+/// Function ids: Opts.FixedFunctionIds first, then the next free ids in node order, then in
+/// GraphFunctions order for the functions only dead nodes name. Fills Signatures and
+/// FunctionsById with all of them, and Attributes, Settings and MaxOutputs from the live nodes.
 void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const CompileOptions &Opts,
                        std::ostream *Log);
 /// Slots a node's evaluation needs (Sethi-Ullman), by node index.
@@ -51,8 +52,11 @@ std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S);
 void encodeArgsBin(CompiledGraph &CG);
 
 /// Byte offsets of one parameter block: the offset of each parameter, and the block size
-/// (a multiple of 16).
+/// (a multiple of 16). Every node of a function shares them (CompiledArg::BlockOffset).
 std::vector<uint32_t> parameterOffsets(const FunctionSignature &Sig, uint32_t &BlockSize);
+/// Bytes of a record's source words, padded to 16: where its parameter block starts, relative
+/// to the record (the same for every node of a function).
+uint32_t sourceWordsBytes(size_t NumParams);
 /// Where the parameter block of a record of N starts.
 uint32_t parameterBlockStart(const CompiledNode &N, uint32_t RecordOffset);
 /// Writes a constant argument's value into Bin: into the parameter block starting at
