@@ -18,11 +18,14 @@ import edits
 import report
 import resources
 import stability
+import superinstructions
 import table1
+import value_stack
 
 # The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
-           ("resources", resources), ("accuracy", accuracy), ("ao", ao),
+           ("superinstructions", superinstructions), ("resources", resources),
+           ("value_stack", value_stack), ("accuracy", accuracy), ("ao", ao),
            ("stability", stability)]
 
 

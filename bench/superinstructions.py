@@ -78,7 +78,7 @@ def summarize(samples):
             "minRatios": {name: min(samples[a]) / min(samples[b]) for name, a, b in RATIOS}}
 
 
-def measure(tools, names, reps, opts):
+def measure_workloads(tools, names, reps, opts):
     results = {}
     for name in names:
         _, scene, _ = WORKLOADS[name]
@@ -117,6 +117,24 @@ def measure(tools, names, reps, opts):
     return results
 
 
+def measure(tools, quick):
+    """bench/run's figure: every workload, 128x128, 1 spp, one PoCL thread; 3 repetitions
+    quick, 9 full."""
+    reps = 3 if quick else 9
+    saved = os.environ.get("POCL_MAX_PTHREAD_COUNT")
+    os.environ["POCL_MAX_PTHREAD_COUNT"] = "1"
+    try:
+        workloads = measure_workloads(tools, list(WORKLOADS), reps,
+                                      ["--size", "128x128", "--spp", "1"])
+    finally:
+        if saved is None:
+            del os.environ["POCL_MAX_PTHREAD_COUNT"]
+        else:
+            os.environ["POCL_MAX_PTHREAD_COUNT"] = saved
+    return {"reps": reps, "size": "128x128", "spp": 1, "poclMaxPthreadCount": "1",
+            "workloads": workloads}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
@@ -137,8 +155,8 @@ def main():
     names = args.only.split(",")
     data = {"machine": common.machine(), "git": common.git_head(), "reps": args.reps,
             "size": args.size, "spp": int(args.spp),
-            "poclMaxPthreadCount": os.environ.get("POCL_MAX_PTHREAD_COUNT"), "workloads": measure(tools, names,
-                                                                           args.reps, opts)}
+            "poclMaxPthreadCount": os.environ.get("POCL_MAX_PTHREAD_COUNT"),
+            "workloads": measure_workloads(tools, names, args.reps, opts)}
     os.makedirs(os.path.dirname(args.out), exist_ok=True)
     with open(args.out, "w") as f:
         json.dump(data, f, indent=1, sort_keys=True)
