@@ -92,12 +92,18 @@ def stability(data):
     for row, family in enumerate(("nodes", "depth")):
         for col, (key, label) in enumerate(metrics):
             ax = axes[row][col]
+            drawn = False
             for mode in common.MODES:
                 pts = [p for p in data["points"] if p["family"] == family and p["mode"] == mode]
                 ax.plot([p["size"] for p in pts], [max(p[key], 1e-6) for p in pts], "o-",
                         color=COLORS[mode], label=mode, markersize=3)
-            ax.set_xscale("log")
-            ax.set_yscale("log")
+                drawn = drawn or bool(pts)
+            if drawn:  # a sweep cut short may have no point of this family yet
+                ax.set_xscale("log")
+                ax.set_yscale("log")
+            else:
+                ax.text(0.5, 0.5, "not measured", ha="center", va="center",
+                        transform=ax.transAxes, fontsize=8)
             ax.set_xlabel("node count" if family == "nodes" else "depth")
             ax.set_title(label, fontsize=8)
             ax.tick_params(labelsize=7)

@@ -444,8 +444,9 @@ def stability_section(d):
     lines += [""] + largest_builds(d)
     if d.get("complete") is False:
         last = d["points"][-1] if d["points"] else None
-        lines += ["**This sweep did not finish**: the run was cut short after %.0f minutes, %d "
-                  "points measured%s. Modes and sizes after that point are not measured." % (
+        lines += ["**This sweep had not finished** when these figures were taken: %.0f minutes "
+                  "into it, %d points measured%s. Modes and sizes after that point are not "
+                  "measured here." % (
                       d["seconds"] / 60, len(d["points"]),
                       ", the last %s = %d, %s" % (last["family"], last["size"], last["mode"])
                       if last else ""), ""]
