@@ -52,7 +52,14 @@ def machine_section(results):
     full = [n for n, d in results.items() if d and not d.get("quick")]
     quick = [n for n, d in results.items() if d and d.get("quick")]
     lines += ["", "Sum of the figures' run times: %.1f minutes." % (total / 60)]
-    if not quick:
+    unfinished = [n for n, d in results.items() if d and d.get("complete") is False]
+    if not quick and unfinished:
+        lines += ["", "These are full-run figures (`bench/run`: 512x512, more repetitions, a "
+                  "1024-spp reference, the stability sweep up to each mode's failure or 10 "
+                  "minutes per point), but %s had not finished when they were taken: the full "
+                  "run takes longer than the sum above, each figure timed by bench/bench.py "
+                  "(the `seconds` of its JSON)." % ", ".join(unfinished)]
+    elif not quick:
         lines += ["", "This is the full run (`bench/run`: 512x512, more repetitions, a 1024-spp "
                   "reference, the stability sweep up to each mode's failure or 10 minutes per "
                   "point); its duration is the sum above, each figure timed by bench/bench.py "
