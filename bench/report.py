@@ -460,11 +460,23 @@ def stability_section(d):
     if d["stopped"]:
         lines += ["Where a mode stopped:", ""]
         for s in d["stopped"]:
-            lines.append("- %s, %s = %d: %s" % (s["mode"], s["family"], s["size"], s["error"]))
+            lines.append("- %s, %s = %d: %s" % (s["mode"], s["family"], s["size"],
+                                                 short_error(s["error"])))
     elif d.get("complete") is not False:
         lines.append("No mode failed or passed the cap at these sizes%s." % (
             " (the quick run stops at modest sizes)" if d.get("quick") else ""))
     return lines + [""]
+
+
+def short_error(error):
+    """'timed out after 583.28s: /path/bin/texrender ARGS' -> 'timed out after 583 s in
+    texrender (`texrender ARGS` in bench/results/stability.json)'; other errors unchanged."""
+    import re
+    m = re.match(r"timed out after ([0-9.]+)s: (\S+)", error)
+    if not m:
+        return error
+    return "timed out after %.0f s in %s (the full command is in bench/results/stability.json)" % (
+        float(m.group(1)), os.path.basename(m.group(2)))
 
 
 def largest_builds(d):
