@@ -13,7 +13,7 @@ import common
 import resources
 
 
-def registers(text, n):
+def registers(n):
     regs = ", ".join("st%d" % i for i in range(n))
     params = ", ".join("float4 st%d" % i for i in range(n))
 
@@ -37,7 +37,7 @@ def registers(text, n):
              "TEXCC_SLOT_READ(fakeStack[prog + 2u + 3u * numInstructions + k]);")]
 
 
-def soa(text, n):
+def soa(n):
     return [("#define TEXCC_SLOT(s) stack[s]\n",
              "#define TEXCC_SLOT_READ(s) ((float4)(sx[s], sy[s], sz[s], sw[s]))\n"),
             ("uint src, uint at, uint n, const float4 *stack) {",
@@ -77,7 +77,7 @@ def measure(tools, quick):
             path = src if edits is None else os.path.join(folder, "proctex-%s.cl" % variant)
             if edits is not None:
                 with open(path, "w") as f:
-                    f.write(rewrite(text, edits(text, slots), "%s/%s" % (tex, variant)))
+                    f.write(rewrite(text, edits(slots), "%s/%s" % (tex, variant)))
             k = resources.amdgpu(path, folder, {"texcc_proctex"})["kernels"]["texcc_proctex"]
             common.log("value stack %s %s: %s VGPRs, %s B scratch" % (
                 tex, variant, k.get("VGPRs"), k.get("ScratchSize")))
