@@ -5,7 +5,9 @@ same grid of hits, and compares every mode with the host (compare.py, max abs di
 Shape mode must also agree bit for bit (--tol 0) with its interp fallback, proctex.interp.cl,
 which the tiered runtime swaps in while a new shape's kernel builds, and interp (with its
 superinstructions, the default) bit for bit with interp --no-superinstructions (one case per
-node); the line says how many instructions the superinstructions fused.
+node); the line says how many instructions the superinstructions fused. Every mode after interp
+must equal interp bit for bit too: every kernel has FP_CONTRACT OFF, so the modes differ only in
+how the same user code is called, never in its arithmetic.
 
 usage: equivalence.py --texcc TEXCC --eval TEXCC_EVAL --work DIR --grid N GRAPH [GRAPH ...]
                       [--tol 1e-5] [--modes interp,inline,wavefront,shape]
@@ -118,6 +120,7 @@ def check_unfused(out, dump, graph, args, extra, lines):
 def check_graph(g, graph, args, modes, extra):
     """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
     lines, failures = [], 0
+    interp_dump = None
     base = os.path.join(args.work, "%d-%s" % (g, os.path.splitext(os.path.basename(graph))[0]))
     host_out = base + "-host"
     ref = host_out + ".txt"
@@ -134,6 +137,9 @@ def check_graph(g, graph, args, modes, extra):
             ok = check_fallback(out, dump, graph, args, lines)
         if ok and mode == "interp":
             ok = check_unfused(out, dump, graph, args, extra, lines)
+            interp_dump = dump
+        elif ok and interp_dump:
+            ok = compare(interp_dump, dump, 0.0, "%s %s = interp" % (graph, mode), lines)
         failures += 0 if ok else 1
     return lines, failures
 

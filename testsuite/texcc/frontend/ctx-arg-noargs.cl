@@ -2,5 +2,5 @@
 // RUN: texcc-fe %s | FileCheck %s
 
 float one(void) { return 1.0f; }
-// CHECK: {{^}}float ctx_arg_noargs_two(TEXCC_CTX_PARAM) { return ctx_arg_noargs_one(TEXCC_CTX_ARG) + ctx_arg_noargs_one(TEXCC_CTX_ARG); }
+// CHECK: {{^}}TEXCC_FN float ctx_arg_noargs_two(TEXCC_CTX_PARAM) { return ctx_arg_noargs_one(TEXCC_CTX_ARG) + ctx_arg_noargs_one(TEXCC_CTX_ARG); }
 float two(void) { return one() + one(); }

@@ -3,5 +3,5 @@
 // RUN: texcc-fe %s | FileCheck %s
 // DIAG-NOT: error:
 
-// CHECK: {{^}}float float_literal_no_warning_halve(TEXCC_CTX_PARAM, float x) { return x * 0.5; }
+// CHECK: {{^}}TEXCC_FN float float_literal_no_warning_halve(TEXCC_CTX_PARAM, float x) { return x * 0.5; }
 float halve(float x) { return x * 0.5; }

@@ -9,9 +9,9 @@
 #include "common.h"
 float shade(float x) { return gainOf(x); }
 // CHECK: {{^}}#line 1 "{{.*}}include{{/|\\}}common.h"
-// CHECK: {{^}}float include_splice_gainOf(TEXCC_CTX_PARAM, float x) { return x * COMMON_GAIN; }
+// CHECK: {{^}}TEXCC_FN float include_splice_gainOf(TEXCC_CTX_PARAM, float x) { return x * COMMON_GAIN; }
 // CHECK: {{^}}#line 9 "{{.*}}include-splice.cl"{{$}}
 // CHECK-EMPTY:
-// CHECK-NEXT: {{^}}float include_splice_shade(TEXCC_CTX_PARAM, float x) { return include_splice_gainOf(TEXCC_CTX_ARG, x); }
+// CHECK-NEXT: {{^}}TEXCC_FN float include_splice_shade(TEXCC_CTX_PARAM, float x) { return include_splice_gainOf(TEXCC_CTX_ARG, x); }
 // CHECK: {{^}}#undef COMMON_H
 // CHECK-NEXT: {{^}}#undef COMMON_GAIN

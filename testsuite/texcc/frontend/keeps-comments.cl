@@ -9,7 +9,7 @@ float   spaced ( float   x )   // trailing comment
 }
 // CHECK: {{^}}/* A block comment
 // CHECK-NEXT: {{^}}   over two lines. */
-// CHECK-NEXT: {{^}}float   keeps_comments_spaced (TEXCC_CTX_PARAM, float   x )   // trailing comment
+// CHECK-NEXT: {{^}}TEXCC_FN float   keeps_comments_spaced (TEXCC_CTX_PARAM, float   x )   // trailing comment
 // CHECK-NEXT: {{^}}{
 // CHECK-NEXT: {{^}}    return x;   /* inside */
 // CHECK-NEXT: {{^}}}

@@ -5,5 +5,5 @@
 float4 img(sam2D s, float2 uv) {
   return tex2D(s, uv * 2.0f);
 }
-// CHECK: {{^}}float4 lower_tex2d_img(TEXCC_CTX_PARAM, sam2D s, float2 uv) {
+// CHECK: {{^}}TEXCC_FN float4 lower_tex2d_img(TEXCC_CTX_PARAM, sam2D s, float2 uv) {
 // CHECK-NEXT: {{^}}  return texcc_tex2D(texcc_ctx, s, uv * 2.0f);

@@ -5,4 +5,4 @@
 __constant float kWeights[2] = {0.25f, 0.75f};
 float blend(float a, float b) { return a * kWeights[0] + b * kWeights[1]; }
 // CHECK: {{^}}__constant float rename_constant_kWeights[2] = {0.25f, 0.75f};
-// CHECK-NEXT: {{^}}float rename_constant_blend(TEXCC_CTX_PARAM, float a, float b) { return a * rename_constant_kWeights[0] + b * rename_constant_kWeights[1]; }
+// CHECK-NEXT: {{^}}TEXCC_FN float rename_constant_blend(TEXCC_CTX_PARAM, float a, float b) { return a * rename_constant_kWeights[0] + b * rename_constant_kWeights[1]; }

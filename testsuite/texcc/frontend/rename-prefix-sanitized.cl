@@ -2,5 +2,5 @@
 // 'rename_prefix_sanitized_'.
 // RUN: texcc-fe %s | FileCheck %s
 
-// CHECK: {{^}}float rename_prefix_sanitized_f(TEXCC_CTX_PARAM, float x) { return x; }
+// CHECK: {{^}}TEXCC_FN float rename_prefix_sanitized_f(TEXCC_CTX_PARAM, float x) { return x; }
 float f(float x) { return x; }

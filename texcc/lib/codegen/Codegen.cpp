@@ -141,10 +141,11 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
      << "#define TEXCC_MAX_OUTPUTS " << std::max(1u, CG.MaxOutputs) << "\n"
      << "#define TEXCC_NUM_MATERIALS " << CG.Materials.size() << "\n"
      << "#define TEXCC_SPILL " << (CG.Spill && !Host ? 1 : 0) << "\n\n";
-  if (!Host && (Opts.EvalMode == Mode::Interp || Opts.EvalMode == Mode::Shape))
+  if (!Host)
     // No a*b+c fused into one rounding: where the compiler fuses depends on how each mode's
-    // code is inlined and folded, and the tiered runtime swaps these two kernels mid-render.
-    OS << "/* interp and shape give bit-identical values: no fused multiply-add contraction. */\n"
+    // code is inlined and folded, and the tiered runtime swaps interp and shape kernels
+    // mid-render. With it every mode gives the same values bit for bit.
+    OS << "/* every mode gives bit-identical values: no fused multiply-add contraction. */\n"
        << "#pragma OPENCL FP_CONTRACT OFF\n\n";
   if (Host)
     OS << "#ifndef CL_TARGET_OPENCL_VERSION\n#define CL_TARGET_OPENCL_VERSION 120\n#endif\n";

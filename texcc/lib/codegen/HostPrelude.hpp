@@ -313,6 +313,7 @@ struct TexccCtx {
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx
 #define TEXCC_CTX_ARG texcc_ctx
+#define TEXCC_FN
 
 inline float4 texcc_f4(const cl_float4 &v) { return float4(v.s[0], v.s[1], v.s[2], v.s[3]); }
 inline float3 texcc_f3(const cl_float4 &v) { return float3(v.s[0], v.s[1], v.s[2]); }

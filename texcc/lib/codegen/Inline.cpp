@@ -20,7 +20,7 @@ void emitStraightLineMaterial(std::ostringstream &OS, const CompiledGraph &CG,
     OS << "static void " << materialFunctionName(M)
        << "(const TexccCtx *texcc_ctx, float4 *out) {\n";
   else
-    OS << "static inline void " << materialFunctionName(M)
+    OS << "TEXCC_FN static inline void " << materialFunctionName(M)
        << "(const TexccCtx *texcc_ctx, __global const uint *fakeStack,\n"
        << "    __global float4 *out) {\n";
   ArgEmitter E;

@@ -15,7 +15,7 @@ namespace texcc::codegen {
 void emitProgramLocator(std::ostringstream &OS) {
   OS << "/* The program of material mat: the blocks of all materials follow each other from word 0\n"
         " * (numInstructions, numOutputs, 3 words per instruction, 1 per output). */\n"
-        "static inline uint texcc_program(__global const uint *fs, int mat) {\n"
+        "TEXCC_FN static inline uint texcc_program(__global const uint *fs, int mat) {\n"
         "  uint at = 0u;\n"
         "  for (int m = 0; m < mat; ++m)\n"
         "    at += 2u + 3u * fs[at] + fs[at + 1u];\n"
@@ -47,7 +47,7 @@ static void emitAttributeDecoder(std::ostringstream &OS, const CompiledGraph &CG
       if (A.Src == CompiledArg::Source::Attribute)
         Ids.insert(A.AttrId);
   OS << "/* An attribute argument, widened to float4: only those the nodes' arguments read. */\n"
-        "static inline float4 texcc_interp_attr(__global const TexccHitAttrs *h, uint id) {\n"
+        "TEXCC_FN static inline float4 texcc_interp_attr(__global const TexccHitAttrs *h, uint id) {\n"
         "  switch (id) {\n";
   for (int Id : Ids)
     OS << "  case " << Id << "u: /* " << attributeTable().at(Id).first << " */\n"
@@ -75,7 +75,7 @@ static void emitDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
         " * of n floats at word at of the record's parameter block, a value-stack slot or an\n"
         " * attribute, widened to float4; the broadcast bit replicates .x (a float feeding a\n"
         " * float2..4 parameter). */\n"
-        "static inline float4 texcc_arg(__global const TexccHitAttrs *h, __global const uint *fs,\n"
+        "TEXCC_FN static inline float4 texcc_arg(__global const TexccHitAttrs *h, __global const uint *fs,\n"
         "                               uint src, uint at, uint n, "
      << StackParam
      << ") {\n"

@@ -37,7 +37,7 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
   OS << "/* shape " << K << ": " << M.Program.size()
      << (M.Program.size() == 1 ? " instruction" : " instructions") << "; materials "
      << materialList(CG, S) << " */\n"
-     << "static inline void " << shapeFunctionName(K)
+     << "TEXCC_FN static inline void " << shapeFunctionName(K)
      << "(const TexccCtx *texcc_ctx, __global const uint *fakeStack,\n"
      << "    const uint prog, __global float4 *out) {\n";
   std::unordered_map<unsigned, size_t> Position;

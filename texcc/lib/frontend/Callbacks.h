@@ -42,8 +42,13 @@ private:
   FileContext &FC;
 };
 
+/// What ContextThreading puts in front of a user function's declaration (texcc_device.h:
+/// always_inline on the device, nothing on the host).
+inline constexpr const char *InlineMarker = "TEXCC_FN ";
+
 /// Threads the hit context: every user function takes TEXCC_CTX_PARAM first, every call to a
-/// user function passes TEXCC_CTX_ARG first.
+/// user function passes TEXCC_CTX_ARG first; every declaration spelled in a file gets
+/// InlineMarker in front of it.
 class ContextThreading : public MatchFinder::MatchCallback {
 public:
   explicit ContextThreading(FileContext &FC) : FC(FC) {}

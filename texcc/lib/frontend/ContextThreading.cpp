@@ -19,6 +19,11 @@ void ContextThreading::run(const MatchFinder::MatchResult &Result) {
     FunctionTypeLoc TL = FD->getFunctionTypeLoc();
     if (!TL)
       return;
+    // TEXCC_FN (always_inline, texcc_device.h) in front of every declaration the user spelled
+    // in a file; one made by a macro, or marked noinline, is left as it is.
+    SourceLocation Begin = FD->getBeginLoc();
+    if (Begin.isFileID() && !FD->hasAttr<NoInlineAttr>())
+      FC.Edits.replace(Begin, Begin, InlineMarker);
     SourceLocation LParen = FC.spelled(TL.getLParenLoc());
     if (FD->param_empty()) {
       // `f()` and `f(void)` both become `f(TEXCC_CTX_PARAM)`.

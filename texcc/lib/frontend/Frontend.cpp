@@ -204,6 +204,10 @@ void TexccConsumer::buildOutput(FileContext &FC) {
       continue;
     TranslatedSource::Range R;
     R.Begin = Repl->getShiftedCodePosition(SM.getFileOffset(B));
+    // The range starts before the inline marker inserted at the definition's first token.
+    const size_t Marker = std::char_traits<char>::length(InlineMarker);
+    if (R.Begin >= Marker && Out.Text.compare(R.Begin - Marker, Marker, InlineMarker) == 0)
+      R.Begin -= Marker;
     R.End = Repl->getShiftedCodePosition(SM.getFileOffset(E));
     R.FirstLine = SM.getExpansionLineNumber(B);
     R.LineAfter = SM.getExpansionLineNumber(E);

@@ -64,9 +64,23 @@ TEST(FrontendTest, RewritesDefinitionsCallsAndApi) {
                           "float f(void) { return g(readAttr(\"AO\")) + sin(1.0f); }\n"}});
   ASSERT_TRUE(bool(R.Result)) << R.Diags;
   EXPECT_EQ(R.Result->Sources[0].Text,
-            "float n_g(TEXCC_CTX_PARAM, float x) { return x; }\n"
-            "float n_f(TEXCC_CTX_PARAM) { return n_g(TEXCC_CTX_ARG, texcc_attr_AO(texcc_ctx)) + "
+            "TEXCC_FN float n_g(TEXCC_CTX_PARAM, float x) { return x; }\n"
+            "TEXCC_FN float n_f(TEXCC_CTX_PARAM) { return n_g(TEXCC_CTX_ARG, texcc_attr_AO(texcc_ctx)) + "
             "sin(1.0f); }\n");
+}
+
+TEST(FrontendTest, MarksDeclarationsInlineButNotMacroMadeOrNoinlineOnes) {
+  FrontendRun R = runOn({{"m.cl", "#define DEF(n) float n(void) { return 1.0f; }\n"
+                                  "DEF(one)\n"
+                                  "float later(float x);\n"
+                                  "__attribute__((noinline)) float slow(float x) { return x; }\n"
+                                  "float later(float x) { return slow(x) + one(); }\n"}});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  const std::string &T = R.Result->Sources[0].Text;
+  EXPECT_NE(T.find("\nDEF(m_one)\n"), std::string::npos) << T;
+  EXPECT_NE(T.find("\nTEXCC_FN float m_later(TEXCC_CTX_PARAM, float x);\n"), std::string::npos) << T;
+  EXPECT_NE(T.find("\n__attribute__((noinline)) float m_slow("), std::string::npos) << T;
+  EXPECT_NE(T.find("\nTEXCC_FN float m_later(TEXCC_CTX_PARAM, float x) {"), std::string::npos) << T;
 }
 
 TEST(FrontendTest, CollectsSignatureAndCallTree) {

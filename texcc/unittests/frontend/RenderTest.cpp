@@ -25,7 +25,7 @@ TEST(RenderTest, FramesWithLineAndUndef) {
   TranslatedSource T = translate("#define K 2.0f\nfloat f(void) { return K; }\n");
   EXPECT_EQ(T.render(), "#line 1 \"k.cl\"\n"
                         "#define K 2.0f\n"
-                        "float k_f(TEXCC_CTX_PARAM) { return K; }\n"
+                        "TEXCC_FN float k_f(TEXCC_CTX_PARAM) { return K; }\n"
                         "#undef K\n");
 }
 
@@ -36,10 +36,10 @@ TEST(RenderTest, OmitsUnkeptDefinitionsAndKeepsLineNumbers) {
                                  "}\n"
                                  "float c(void) { return 3.0f; }\n");
   EXPECT_EQ(T.render({"k_a", "k_c"}), "#line 1 \"k.cl\"\n"
-                                      "float k_a(TEXCC_CTX_PARAM) { return 1.0f; }\n"
+                                      "TEXCC_FN float k_a(TEXCC_CTX_PARAM) { return 1.0f; }\n"
                                       "\n#line 4 \"k.cl\"\n"
                                       "\n"
-                                      "float k_c(TEXCC_CTX_PARAM) { return 3.0f; }\n");
+                                      "TEXCC_FN float k_c(TEXCC_CTX_PARAM) { return 3.0f; }\n");
   // An empty Keep keeps everything.
   EXPECT_NE(T.render().find("k_b"), std::string::npos);
 }
