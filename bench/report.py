@@ -366,16 +366,19 @@ def shape_verdict(d):
                 tex, v, worst(by["interp"]["amdgpu"], "ScratchSize"),
                 "met" if v <= 72 else "missed"))
     if out:
-        out += ["", "Why shape stays above inline: inline folds each constant into the code at "
-                "build time (a literal angle's sine and cosine, `1.05 - 2 * density`), and clang "
-                "inlines differently with literals (scratches/inline calls voronoiSearch once, "
-                "shape twice: `s_swappc` in the ISA). Shape reads the same constants from "
-                "args.bin. Each material's program offset is a literal, so those reads are "
-                "uniform: scalar loads, with the values in SGPRs. This took scratches/shape from 56 "
-                "to 51 VGPRs and rust/shape from 61 to 59. Every value computed from them is still "
-                "computed per lane in VGPRs, because gfx90a has no scalar float ALU. The 8 B of "
-                "scratch come with math's `op` switch. Baking `op` removes them, at the cost of a "
-                "build whenever `op` changes."]
+        out += ["", "What brought shape to inline's registers: each material's program offset is a "
+                "literal, so the constant reads are uniform scalar loads (values in SGPRs; "
+                "scratches/shape 56 to 51 VGPRs, rust 61 to 59); and every user function and "
+                "evaluation helper is `TEXCC_FN`, always_inline (docs/abi.md): before it, "
+                "scratches/shape called voronoiSearch twice (`s_swappc` in the ISA) and paid for "
+                "the calls with 51 VGPRs and 8 B of scratch; inlined, 36 VGPRs and none. Every "
+                "mode's kernel now has `FP_CONTRACT OFF` (the modes agree bit for bit), which "
+                "cost inline the one VGPR its contracted multiply-adds had saved on rust (58 to "
+                "59). Values computed from the constants are still computed per lane in VGPRs "
+                "(gfx90a has no scalar float ALU), but that no longer shows in the totals. "
+                "Below 65 VGPRs gfx90a runs 8 waves per SIMD whatever the count, so the "
+                "remaining differences between shape, shape+bake and inline do not change "
+                "occupancy."]
     return out
 
 
