@@ -15,6 +15,7 @@ import ao
 import common
 import edit_session
 import edits
+import instructions
 import report
 import resources
 import stability
@@ -24,7 +25,8 @@ import value_stack
 
 # The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
-           ("superinstructions", superinstructions), ("resources", resources),
+           ("superinstructions", superinstructions), ("instructions", instructions),
+           ("resources", resources),
            ("value_stack", value_stack), ("accuracy", accuracy), ("ao", ao),
            ("stability", stability)]
 

@@ -279,8 +279,8 @@ def superinstructions_section(d):
         "Inline bakes every constant, so `mathColor`'s 16-way `op` switch becomes one multiply "
         "or add per node; an interpreter reading `op` from args.bin cannot fold it, and fusion "
         "only removes the dispatch and the value-stack traffic between the fused pair. On "
-        "scratches most of the gap is constant folding inside the Voronoi nodes (heavy, not "
-        "fused), as shape mode's own gap to inline shows.", ""]
+        "scratches most of the gap is constant folding, not dispatch: section 2d counts the "
+        "instructions, node by node.", ""]
     return lines
 
 
@@ -300,7 +300,8 @@ def resources_section(d):
              "not define it; texcc_abi.h tests it). Every helper texcc and the kernels define is "
              "`static inline` (a plain C99 `inline` leaves an undefined external where clang "
              "does not inline it: ptxas rejected scratches/inline with `Unresolved extern "
-             "function 'texcc_material_0'` before). Wavefront: the "
+             "function 'texcc_material_0'` before), and every user function and evaluation "
+             "helper is `TEXCC_FN`, always_inline (docs/abi.md). Wavefront: the "
              "largest value over its kernels (count in brackets). Exact commands: "
              "`bench/results/resources.json`." % (d["clang"], d["rows"][0]["ptxas"] or
                                                   "ptxas not found: NVPTX not measured"), "",
@@ -380,6 +381,48 @@ def shape_verdict(d):
                 "remaining differences between shape, shape+bake and inline do not change "
                 "occupancy."]
     return out
+
+
+def instructions_section(d):
+    if not d:
+        return ["## 2d. Instructions per textured hit (callgrind)", "", "Not measured yet.", ""]
+    lines = ["## 2d. Instructions per textured hit (PoCL, callgrind)", "",
+             "`bench/instructions.py`: texcc-eval evaluates each configuration's kernel on "
+             "PoCL over %d random hits per material (one PoCL thread, kernels compiled for "
+             "`haswell`, AVX2, since valgrind runs no AVX-512); callgrind counts the "
+             "instructions of PoCL's work-group functions, library calls included "
+             "(`--toggle-collect=_pocl_kernel_*`), over the textured hits. A count does not "
+             "depend on the machine's load, so small differences are real; it is not a time "
+             "(section 2c has times). The per-node rows bake only that node's constants into "
+             "shape's code: the instructions saved are what inline's constant folding gains "
+             "on that node." % d["grid"], "",
+             "| texture | configuration | instructions per textured hit | / inline |",
+             "|---|---|---|---|"]
+    inline = {r["texture"]: r["perHit"] for r in d["rows"] if r["config"] == "inline"}
+    for r in d["rows"]:
+        lines.append("| %s | %s | %.0f | %.3fx |" % (r["texture"], r["config"], r["perHit"],
+                                                     r["perHit"] / inline[r["texture"]]))
+    lines.append("")
+    for tex in inline:
+        by = {r["config"]: r["perHit"] for r in d["rows"] if r["texture"] == tex}
+        if "shape" not in by or "interp" not in by:
+            continue
+        gap = by["interp"] - inline[tex]
+        folding = by["shape"] - inline[tex]
+        nodes = sorted(((by["shape"] - v, c[len("shape, "):-len(" baked")])
+                       for c, v in by.items()
+                       if c.startswith("shape, ") and c != "shape, every constant baked"),
+                       reverse=True)
+        top = ", ".join("`%s` %.0f" % (n, saved) for saved, n in nodes[:3] if saved > 0)
+        lines.append("- %s: interp executes %.0f instructions per hit more than inline "
+                     "(%.3fx). Shape, the same straight-line calls with constants read from "
+                     "args.bin, accounts for %.0f of them (%.0f%%): constant folding; the "
+                     "interpreter's dispatch, argument decoding and value stack for the other "
+                     "%.0f. Baking one node's constants saves most on %s." % (
+                         tex, gap, by["interp"] / inline[tex], folding,
+                         100.0 * folding / gap if gap > 0 else 0.0, gap - folding,
+                         top or "no node"))
+    return lines + [""]
 
 
 def value_stack_section(d):
@@ -553,7 +596,7 @@ def tail_sections():
 
 def write(args=None):
     results = {n: common.load(n) for n in ("table1", "edits", "edit_session", "superinstructions",
-                                           "resources", "value_stack",
+                                           "instructions", "resources", "value_stack",
                                            "accuracy", "stability", "ao")}
     if not any(results.values()):
         raise common.BenchError("no results in bench/results: run bench/run first")
@@ -561,6 +604,7 @@ def write(args=None):
     lines += table1_section(results["table1"]) + edits_section(results["edits"])
     lines += edit_session_section(results["edit_session"])
     lines += superinstructions_section(results["superinstructions"])
+    lines += instructions_section(results["instructions"])
     lines += resources_section(results["resources"]) + value_stack_section(results["value_stack"])
     lines += accuracy_section(results["accuracy"])
     lines += stability_section(results["stability"]) + ao_section(results["ao"])
