@@ -203,11 +203,13 @@ void TexccConsumer::buildOutput(FileContext &FC) {
     if (SM.getFileID(B) != Main || SM.getFileID(E) != Main)
       continue;
     TranslatedSource::Range R;
-    R.Begin = Repl->getShiftedCodePosition(SM.getFileOffset(B));
-    // The range starts before the inline marker inserted at the definition's first token.
-    const size_t Marker = std::char_traits<char>::length(InlineMarker);
-    if (R.Begin >= Marker && Out.Text.compare(R.Begin - Marker, Marker, InlineMarker) == 0)
-      R.Begin -= Marker;
+    const unsigned BeginOffset = SM.getFileOffset(B);
+    R.Begin = Repl->getShiftedCodePosition(BeginOffset);
+    // Text inserted at the definition's first character (the inline marker) is part of it:
+    // the shifted position counts it, the range starts before it.
+    for (const tooling::Replacement &Rep : *Repl)
+      if (Rep.getOffset() == BeginOffset && Rep.getLength() == 0)
+        R.Begin -= Rep.getReplacementText().size();
     R.End = Repl->getShiftedCodePosition(SM.getFileOffset(E));
     R.FirstLine = SM.getExpansionLineNumber(B);
     R.LineAfter = SM.getExpansionLineNumber(E);
