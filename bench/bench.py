@@ -16,6 +16,7 @@ import common
 import edit_session
 import edits
 import instructions
+import per_hit
 import report
 import resources
 import stability
@@ -26,6 +27,7 @@ import value_stack
 # The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
            ("superinstructions", superinstructions), ("instructions", instructions),
+           ("per_hit", per_hit),
            ("resources", resources),
            ("value_stack", value_stack), ("accuracy", accuracy), ("ao", ao),
            ("stability", stability)]

@@ -95,6 +95,47 @@ def texture_kernel_seconds(stats):
                if name not in FIXED_KERNELS)
 
 
+def per_hit_samples(tools, label, graph, scene, configs, reps, opts):
+    """Per-hit texture cost of each configuration (name, mode, texcc options) of one graph on
+    one scene: texcc once per configuration, a first unmeasured render (it builds every
+    kernel), then reps repetitions that render every configuration back to back, in an order
+    that rotates with the repetition (the shared machine's load drifts), each in its own
+    texrender process. The cost is the texture kernels' device time (OpenCL profiling,
+    stats.json: every kernel that is not a fixed one) in ns over the texture stage's
+    work-items (hit_attributes' workItems: every active path of every bounce), i.e. ms per
+    million hits. Returns ({name: [samples]}, hits, {name: texcc output folder})."""
+    folders = {}
+    for cfg, mode, extra in configs:
+        folder = os.path.join(tools.work, "%s-%s" % (label, cfg))
+        texcc(tools, graph, folder, mode, extra)
+        folders[cfg] = folder
+        texrender(tools, scene, folder, "%s-%s-warm" % (label, cfg), opts)
+    samples = {cfg: [] for cfg, _, _ in configs}
+    hits = 0
+    for rep in range(reps):
+        k = rep % len(configs)
+        for cfg, _, _ in configs[k:] + configs[:k]:
+            log("%s rep %d: %s" % (label, rep + 1, cfg))
+            stats, _, _ = texrender(tools, scene, folders[cfg], "%s-%s-%d" % (label, cfg, rep), opts)
+            hits = stats["kernels"]["hit_attributes"]["workItems"]
+            samples[cfg].append(1e9 * texture_kernel_seconds(stats) / hits)
+    return samples, hits, folders
+
+
+def with_one_pocl_thread(fn):
+    """fn() with POCL_MAX_PTHREAD_COUNT=1 (per-hit timings: on the shared 2-core machine a
+    kernel spread over both cores varies threefold between runs), the variable restored after."""
+    saved = os.environ.get("POCL_MAX_PTHREAD_COUNT")
+    os.environ["POCL_MAX_PTHREAD_COUNT"] = "1"
+    try:
+        return fn()
+    finally:
+        if saved is None:
+            del os.environ["POCL_MAX_PTHREAD_COUNT"]
+        else:
+            os.environ["POCL_MAX_PTHREAD_COUNT"] = saved
+
+
 def ao_seconds(stats):
     k = stats["kernels"]
     return sum(k[name]["seconds"] for name in ("ao_trace", "ao_reduce") if name in k)

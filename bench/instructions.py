@@ -9,7 +9,8 @@ callgrind's inclusive Ir of PoCL's work-group functions (`--toggle-collect=_pocl
 the kernel and every library call it makes, no runtime, no compilation; a first, uncounted run
 fills PoCL's kernel cache), over the textured hits (N times the materials with outputs).
 Configurations: interp (superinstructions on), interp --no-superinstructions, inline, wavefront
-(its per-node kernels and the output copy), shape, shape+bake (every int argument baked, as in
+(its per-node kernels and the output copy), shape (with its hoisting, texcc_uniforms counted once
+per run: over N hits it is an upper bound of a frame's share), shape --no-hoist, shape+bake (every int argument baked, as in
 section 3), shape with every constant baked (what inline sees, through shape's code), and for
 each node, shape with only that node's constants baked: the instructions that baking saves,
 node by node, say which constants inline's constant folding pays off on."""
@@ -100,6 +101,7 @@ def measure(tools, quick):
                    ("interp-unfused", "interp", ["--no-superinstructions"]),
                    ("inline", "inline", []), ("wavefront", "wavefront", []),
                    ("shape", "shape", []),
+                   ("shape --no-hoist", "shape", ["--no-hoist"]),
                    ("shape+bake", "shape", ["--bake=" + a for a in ints]),
                    ("shape, every constant baked", "shape", bake_flags(consts))]
         configs += [("shape, %s baked" % node, "shape", bake_flags({node: names}))

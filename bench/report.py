@@ -383,6 +383,36 @@ def shape_verdict(d):
     return out
 
 
+def per_hit_section(d):
+    title = "## 2e. Per-hit texture cost of every mode, shape's hoisting on and off"
+    if not d:
+        return [title, "", "Not measured yet.", ""]
+    names = ("interp", "inline", "wavefront", "shape", "shape-unhoisted")
+    lines = [title, "",
+             "`bench/per_hit.py`: rust and scratches on the atrium, %s, %d spp, PoCL on one "
+             "thread; %d repetitions, the five configurations in rotating order in each. "
+             "Texture-kernel device time (shape: `texcc_uniforms` included) per million "
+             "texture-stage work-items, median (minimum), and the median of the per-repetition "
+             "ratios to inline. `shape-unhoisted` is `texcc --mode=shape --no-hoist`: every "
+             "declaration computed per hit (docs/frontend.md, Hoisting)."
+             % (d["size"], d["spp"], d["reps"]), "",
+             "| texture | hoisted | " + " | ".join(names) + " | " +
+             " | ".join("%s / inline" % n for n in names if n != "inline") + " |",
+             "|---|---|" + "---|" * (2 * len(names) - 1)]
+    for tex, r in d["workloads"].items():
+        med, mn, rat = (r["medianMsPerMillionHits"], r["minMsPerMillionHits"],
+                        r["medianRatiosToInline"])
+        hoisted = "; ".join("%s: %s" % (fn, ", ".join(v)) for fn, v in r["hoisted"].items())
+        lines.append("| %s | %s | %s | %s |" % (
+            tex, hoisted or "none",
+            " | ".join("%s (%s)" % (fmt(med[n]), fmt(mn[n])) for n in names),
+            " | ".join("**%.3fx**" % rat[n] for n in names if n != "inline")))
+    far = [t for t, r in d["workloads"].items() if r["medianRatiosToInline"]["shape"] > 1.05]
+    lines += ["", "Issue 9's target, shape within 1.05x of inline on PoCL (median ratio): %s." % (
+        "met on both textures" if not far else "missed on %s" % ", ".join(far)), ""]
+    return lines
+
+
 def instructions_section(d):
     if not d:
         return ["## 2d. Instructions per textured hit (callgrind)", "", "Not measured yet.", ""]
@@ -596,7 +626,7 @@ def tail_sections():
 
 def write(args=None):
     results = {n: common.load(n) for n in ("table1", "edits", "edit_session", "superinstructions",
-                                           "instructions", "resources", "value_stack",
+                                           "instructions", "per_hit", "resources", "value_stack",
                                            "accuracy", "stability", "ao")}
     if not any(results.values()):
         raise common.BenchError("no results in bench/results: run bench/run first")
@@ -605,6 +635,7 @@ def write(args=None):
     lines += edit_session_section(results["edit_session"])
     lines += superinstructions_section(results["superinstructions"])
     lines += instructions_section(results["instructions"])
+    lines += per_hit_section(results["per_hit"])
     lines += resources_section(results["resources"]) + value_stack_section(results["value_stack"])
     lines += accuracy_section(results["accuracy"])
     lines += stability_section(results["stability"]) + ao_section(results["ao"])

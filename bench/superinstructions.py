@@ -82,22 +82,8 @@ def measure_workloads(tools, names, reps, opts):
     results = {}
     for name in names:
         _, scene, _ = WORKLOADS[name]
-        graph = graph_of(tools, name)
-        folders = {}
-        for cfg, mode, extra in CONFIGS:
-            folder = os.path.join(tools.work, "%s-%s" % (name, cfg))
-            common.texcc(tools, graph, folder, mode, extra)
-            folders[cfg] = folder
-            common.texrender(tools, scene, folder, "%s-%s-warm" % (name, cfg), opts)
-        samples = {cfg: [] for cfg, _, _ in CONFIGS}
-        for rep in range(reps):
-            order = CONFIGS[rep % 3:] + CONFIGS[:rep % 3]
-            for cfg, _, _ in order:
-                common.log("%s rep %d: %s" % (name, rep + 1, cfg))
-                stats, _, _ = common.texrender(tools, scene, folders[cfg],
-                                               "%s-%s-%d" % (name, cfg, rep), opts)
-                hits = stats["kernels"]["hit_attributes"]["workItems"]
-                samples[cfg].append(1e9 * common.texture_kernel_seconds(stats) / hits)
+        samples, hits, folders = common.per_hit_samples(tools, name, graph_of(tools, name), scene,
+                                                        CONFIGS, reps, opts)
         table, fused = fused_pairs(folders["interp"])
         row = {"scene": os.path.relpath(scene, common.ROOT), "hits": hits,
                "superinstructions": table, "fusedPairs": fused}
@@ -121,16 +107,8 @@ def measure(tools, quick):
     """bench/run's figure: every workload, 128x128, 1 spp, one PoCL thread; 3 repetitions
     quick, 9 full."""
     reps = 3 if quick else 9
-    saved = os.environ.get("POCL_MAX_PTHREAD_COUNT")
-    os.environ["POCL_MAX_PTHREAD_COUNT"] = "1"
-    try:
-        workloads = measure_workloads(tools, list(WORKLOADS), reps,
-                                      ["--size", "128x128", "--spp", "1"])
-    finally:
-        if saved is None:
-            del os.environ["POCL_MAX_PTHREAD_COUNT"]
-        else:
-            os.environ["POCL_MAX_PTHREAD_COUNT"] = saved
+    workloads = common.with_one_pocl_thread(lambda: measure_workloads(
+        tools, list(WORKLOADS), reps, ["--size", "128x128", "--spp", "1"]))
     return {"reps": reps, "size": "128x128", "spp": 1, "poclMaxPthreadCount": "1",
             "workloads": workloads}
 

@@ -182,6 +182,7 @@ Layout loadLayout(const std::string &OutDir) {
     if (K.contains("shapes"))
       L.NumShapes = unsigned(K["shapes"].size());
     L.ShapeHash = K.value("shapeHash", "");
+    L.Uniforms = K.value("uniforms", "");
     if (L.Mode == "shape" && L.InterpFallback.empty())
       R.fail("/kernel/interpFallback", "a shape-mode layout names its interp fallback kernel");
     L.StackSlots = J.value("stackSlots", 0u);

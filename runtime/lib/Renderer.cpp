@@ -129,7 +129,10 @@ void Renderer::uploadLayoutData() {
   const cl_mem_flags RO = CL_MEM_READ_ONLY;
   B["materials"] = Cl->allocateWith("materials", Data.Materials.data(), bytes(Data.Materials), RO);
   B["bsdfNodes"] = Cl->allocateWith("bsdfNodes", Data.BsdfNodes.data(), bytes(Data.BsdfNodes), RO);
-  B["fakeStack"] = Cl->allocateWith("fakeStack", Lay.ArgsBin.data(), Lay.ArgsBin.size(), RO);
+  // Read-write: a shape kernel's texcc_uniforms writes hoisted values into it.
+  B["fakeStack"] = Cl->allocateWith("fakeStack", Lay.ArgsBin.data(), Lay.ArgsBin.size(),
+                                    CL_MEM_READ_WRITE);
+  UniformsDirty = true;
   // Images: every bound image, concatenated, linear RGBA.
   std::vector<cl_float4> Texels;
   std::vector<TexccImageInfo> Infos;
@@ -170,8 +173,9 @@ void Renderer::applyArguments(const std::vector<uint8_t> &ArgsBin,
   Lay.ArgsBin = ArgsBin;
   size_t Have = Cl->memory().count("fakeStack") ? Cl->memory().at("fakeStack") : 0;
   if (ArgsBin.size() > Have)
-    B["fakeStack"] = Cl->allocate("fakeStack", ArgsBin.size(), CL_MEM_READ_ONLY);
+    B["fakeStack"] = Cl->allocate("fakeStack", ArgsBin.size(), CL_MEM_READ_WRITE);
   Cl->write(B["fakeStack"], ArgsBin.data(), ArgsBin.size());
+  UniformsDirty = true;
 }
 
 void Renderer::setLayout(const Layout &L) {
@@ -203,6 +207,13 @@ void Renderer::allocateWorkBuffers(size_t N) {
 }
 
 void Renderer::runTextures(int NumActive) {
+  // Hoisted values first, once per upload of fakeStack (stats.json kernel "uniforms").
+  if (UniformsKernel() && UniformsDirty) {
+    UniformsKernel.setArg(0, B["fakeStack"]);
+    UniformsKernel.setArg(1, cl_int(Lay.Materials.size()));
+    Cl->launch(UniformsKernel, 1, "uniforms");
+    UniformsDirty = false;
+  }
   for (size_t I = 0; I < TextureKernels.size(); ++I) {
     cl::Kernel &T = TextureKernels[I];
     T.setArg(0, B["hitAttributes"]);

@@ -24,7 +24,10 @@ cl::Program Renderer::buildForeground(const std::string &Path, const std::string
   E.StartSeconds = steadySeconds() - Epoch;
   cl::Program P = Cl->buildProgram(Path, Source, programOptions());
   // PoCL's compile at the first launch is part of the build the frame waits for.
-  warmUpKernels(*Cl, P, textureKernelNames());
+  std::vector<std::string> Names = textureKernelNames();
+  if (Tier == "shape" && !Lay.Uniforms.empty())
+    Names.push_back(Lay.Uniforms);
+  warmUpKernels(*Cl, P, Names);
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);
@@ -58,6 +61,16 @@ void Renderer::activate(const cl::Program &P, const std::string &Tier) {
       TextureKernels.push_back(cl::Kernel(P, N.c_str()));
     } catch (const cl::Error &E) {
       throw Error(File + ": no kernel '" + N + "' in the texture program (" +
+                  clErrorName(E.err()) + ")");
+    }
+  }
+  UniformsKernel = cl::Kernel();
+  UniformsDirty = true;
+  if (Tier == "shape" && !Lay.Uniforms.empty()) {
+    try {
+      UniformsKernel = cl::Kernel(P, Lay.Uniforms.c_str());
+    } catch (const cl::Error &E) {
+      throw Error(File + ": no kernel '" + Lay.Uniforms + "' in the texture program (" +
                   clErrorName(E.err()) + ")");
     }
   }

@@ -51,8 +51,11 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
   cl::CommandQueue Queue(Cl.context(), Cl.device());
   for (const std::string &Name : Kernels) {
     cl::Kernel K(P, Name.c_str());
-    for (cl_uint Arg = 0; Arg < 9; ++Arg)
-      if (Arg == 2)
+    // Texture kernels take 9 arguments (numHits third); texcc_uniforms takes 2 (fakeStack,
+    // numMaterials). A count of 0 makes every work-item return at once.
+    const cl_uint Args = K.getInfo<CL_KERNEL_NUM_ARGS>();
+    for (cl_uint Arg = 0; Arg < Args; ++Arg)
+      if (Arg == 2 || (Args == 2 && Arg == 1))
         K.setArg(Arg, cl_int(0));
       else
         K.setArg(Arg, Dummy);
@@ -64,9 +67,9 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
 namespace {
 
 cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Source,
-                         const std::string &Entry, const std::string &Options) {
+                         const std::vector<std::string> &Kernels, const std::string &Options) {
   cl::Program P = Cl.buildProgram(Path, Source, Options, "", /*Background=*/true);
-  warmUpKernels(Cl, P, {Entry});
+  warmUpKernels(Cl, P, Kernels);
   return P;
 }
 
@@ -94,12 +97,16 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
   R.SameLayout = Job.SameLayout;
   try {
     R.L = MakeLayout();
-    if (Job.Shape)
-      R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource),
-                             R.L.Entry, Options);
+    if (Job.Shape) {
+      std::vector<std::string> Kernels{R.L.Entry};
+      if (!R.L.Uniforms.empty())
+        Kernels.push_back(R.L.Uniforms);
+      R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource), Kernels,
+                             Options);
+    }
     if (Job.Interp)
       R.Interp = buildAndWarm(Cl, R.L.InterpFallback, interpFallbackSource(R.L, R.FallbackSlots),
-                              R.L.Entry, Options);
+                              {R.L.Entry}, Options);
   } catch (const cl::Error &E) {
     R.Error = std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err());
   } catch (const std::exception &E) {

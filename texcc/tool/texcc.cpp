@@ -44,6 +44,12 @@ static cl::opt<unsigned> StackLimit(
     cl::desc("Private value-stack cap in float4 slots; beyond it the interpreter spills to "
              "global memory (default 32)"),
     cl::value_desc("N"), cl::init(32), cl::cat(TexccCategory));
+static cl::opt<bool> NoHoist(
+    "no-hoist",
+    cl::desc("shape: compute every declaration of the user's functions per hit, none once per "
+             "material (docs/frontend.md, Hoisting), for A/B measurement and debugging"),
+    cl::cat(TexccCategory));
+
 static cl::opt<bool> NoSuperinstructions(
     "no-superinstructions",
     cl::desc("interp: no fused pairs of light nodes (one switch case and one value-stack store "
@@ -113,7 +119,8 @@ static std::vector<std::string> sourceList(const gr::Graph &G) {
 /// reach.
 static std::string renderReachableUserCode(const fe::FrontendResult &FR,
                                            const gr::CompiledGraph &CG,
-                                           const std::set<std::string> &Textures) {
+                                           const std::set<std::string> &Textures,
+                                           const std::set<std::string> &Hoist = {}) {
   std::set<std::string> Keep;
   for (const std::string &Fn : Textures) {
     Keep.insert(CG.Signatures.at(Fn).RenamedName);
@@ -125,8 +132,25 @@ static std::string renderReachableUserCode(const fe::FrontendResult &FR,
     Keep.insert("<no live texture>"); // an empty Keep would keep every function
   std::string Code;
   for (const fe::TranslatedSource &S : FR.Sources)
-    Code += S.render(Keep);
+    Code += S.render(Keep, Hoist);
   return Code;
+}
+
+/// Per function the graph names: the parameters that every node of it binds to a number or a
+/// vector, which hoisted declarations may read (docs/frontend.md, "Hoisting").
+static std::map<std::string, std::set<std::string>> constantParameters(const gr::Graph &G) {
+  std::map<std::string, std::set<std::string>> Out;
+  for (const gr::Node &N : G.Nodes) {
+    std::set<std::string> Constant;
+    for (const auto &[Name, V] : N.Args)
+      if (V.K == gr::ArgValue::Kind::Number || V.K == gr::ArgValue::Kind::Vector)
+        Constant.insert(Name);
+    auto [It, First] = Out.emplace(N.Fn, Constant);
+    if (!First)
+      for (auto P = It->second.begin(); P != It->second.end();)
+        P = Constant.count(*P) ? std::next(P) : It->second.erase(P);
+  }
+  return Out;
 }
 
 static int run() {
@@ -166,6 +190,11 @@ static int run() {
   for (const gr::Node &N : G->Nodes)
     TextureNames.insert(N.Fn);
   fe::FrontendOptions FeOpts;
+  // Only shape code computes hoisted values once per material (elsewhere they would only take
+  // room in the parameter blocks).
+  const bool Shape = *Mode == cg::Mode::Shape && *Target == cg::Target::OpenCL;
+  if (Shape && !NoHoist)
+    FeOpts.HoistableParams = constantParameters(*G);
   FeOpts.IncludeDirs.assign(IncludeDirs.begin(), IncludeDirs.end());
   FeOpts.Defines.assign(Defines.begin(), Defines.end());
   auto FR = fe::runFrontend(sourceList(*G), TextureNames, FeOpts, errs());
@@ -201,7 +230,8 @@ static int run() {
   Opts.EvalMode = *Mode;
   Opts.Tgt = *Target;
   Opts.GraphPath = fs::absolute(fs::path(GraphPath.getValue())).lexically_normal().string();
-  Opts.UserCode = renderReachableUserCode(*FR, *CG, CG->liveFunctions());
+  Opts.UserCode = renderReachableUserCode(*FR, *CG, CG->liveFunctions(),
+                                          Shape ? cg::hoistingFunctions(*CG) : std::set<std::string>{});
   // The interp kernel (interp mode, shape mode's fallback) calls the functions of dead nodes
   // too (CompiledGraph::Signatures): a rewiring onto one is then an upload, not a rebuild.
   // (With no live node no edit can wire one in: materials are not edited.)

@@ -50,6 +50,9 @@ struct Layout {
   std::string InterpFallback;
   unsigned NumShapes = 0;
   std::string ShapeHash;  // kernel.shapeHash: the shapes the shape kernel was made for
+  // kernel.uniforms: the shape kernel's texcc_uniforms, which computes hoisted values into
+  // fakeStack; run after every upload of args.bin, before the shape kernel ("" when none).
+  std::string Uniforms;
   unsigned StackSlots = 0;
   unsigned StackLimit = 32;
   bool Spill = false;

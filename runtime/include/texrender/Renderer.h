@@ -158,6 +158,10 @@ private:
   // and the superseded ones still running (joined, their results dropped).
   double Epoch = 0;                         // steadySeconds() at construction
   std::string ActiveTier;
+  // The shape tier's texcc_uniforms (Layout::Uniforms), and whether fakeStack changed (or the
+  // kernel did) since it last ran.
+  cl::Kernel UniformsKernel;
+  bool UniformsDirty = true;
   cl::Program ShapeProgram, InterpProgram;
   unsigned FallbackSlots = 0;
   std::unique_ptr<BackgroundBuild> Pending;

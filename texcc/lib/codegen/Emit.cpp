@@ -131,16 +131,19 @@ std::string hostArrayName(unsigned NodeIndex, const CompiledArg &A) {
   return "texcc_array_" + std::to_string(NodeIndex) + "_" + A.Name;
 }
 
-/// The word index W of a constant (a literal, or `rec + 4u` relative to a record).
-static std::string fakeStackConstant(const std::string &W, const CompiledArg &A) {
-  switch (A.Type.Base) {
+uint32_t hoistedRelativeWord(const CompiledNode &N, const FunctionSignature &Sig, size_t H) {
+  return (sourceWordsBytes(N.Args.size()) + hoistedOffsets(Sig).at(H)) / 4;
+}
+
+std::string fakeStackRead(BaseType B, const std::string &W) {
+  switch (B) {
   case BaseType::Float:
     return "as_float(fakeStack[" + W + "])";
   case BaseType::Int:
   case BaseType::Sampler:
     return "as_int(fakeStack[" + W + "])";
   default:
-    return "vload" + std::to_string(componentCount(A.Type.Base)) +
+    return "vload" + std::to_string(componentCount(B)) +
            "(0, (__global const float *)fakeStack + " + W + ")";
   }
 }
@@ -165,7 +168,7 @@ std::string ArgEmitter::argument(const CompiledNode &N, unsigned NodeIndex,
   case CompiledArg::Source::Constant:
     if (BakeConstants || (BakeMarked && A.Bake))
       return constantLiteral(B, A.Values.data(), Tgt);
-    return fakeStackConstant(Word, A);
+    return fakeStackRead(B, Word);
   case CompiledArg::Source::Attribute:
     E = "texcc_attr_" + attributeTable().at(A.AttrId).first + "(texcc_ctx)";
     break;
@@ -178,18 +181,20 @@ std::string ArgEmitter::argument(const CompiledNode &N, unsigned NodeIndex,
   return E;
 }
 
-std::string ArgEmitter::call(const CompiledGraph &CG, unsigned NodeIndex) const {
+std::string ArgEmitter::call(const CompiledGraph &CG, unsigned NodeIndex,
+                             const std::string &Callee, const std::vector<std::string> &Extra) const {
   const CompiledNode &N = CG.Nodes[NodeIndex];
-  const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
+  const std::string &Name = Callee.empty() ? CG.Signatures.at(N.Fn).RenamedName : Callee;
   std::vector<std::string> Args{"texcc_ctx"};
-  size_t Length = Sig.RenamedName.size();
-  for (const CompiledArg &A : N.Args) {
+  for (const CompiledArg &A : N.Args)
     Args.push_back(argument(N, NodeIndex, A));
-    Length += Args.back().size() + 2;
-  }
+  Args.insert(Args.end(), Extra.begin(), Extra.end());
+  size_t Length = Name.size();
+  for (size_t I = 1; I < Args.size(); ++I) // texcc_ctx not counted
+    Length += Args[I].size() + 2;
   // Long calls get one argument per line.
   const std::string Separator = Length > 72 ? ",\n" + std::string(ArgIndent, ' ') : ", ";
-  std::string S = Sig.RenamedName + "(";
+  std::string S = Name + "(";
   for (size_t I = 0; I < Args.size(); ++I)
     S += (I ? Separator : "") + Args[I];
   return S + ")";

@@ -59,9 +59,17 @@ struct ArgEmitter {
   std::function<std::string(unsigned NodeIndex)> RecordWord;
   std::string argument(const graph::CompiledNode &N, unsigned NodeIndex,
                        const graph::CompiledArg &A) const;
-  /// `fn(texcc_ctx, arg0, arg1, ...)` for node NodeIndex.
-  std::string call(const graph::CompiledGraph &CG, unsigned NodeIndex) const;
+  /// `fn(texcc_ctx, arg0, arg1, ...)` for node NodeIndex; Callee instead of the renamed
+  /// function when given, and Extra after the node's arguments.
+  std::string call(const graph::CompiledGraph &CG, unsigned NodeIndex,
+                   const std::string &Callee = "", const std::vector<std::string> &Extra = {}) const;
 };
+
+/// A value of type B read from fakeStack at word index Word (an expression).
+std::string fakeStackRead(graph::BaseType B, const std::string &Word);
+/// Word index of hoisted value H of node N, relative to the record's first word.
+uint32_t hoistedRelativeWord(const graph::CompiledNode &N, const graph::FunctionSignature &Sig,
+                             size_t H);
 
 /// The name of the static array that holds the host literal of an array argument.
 std::string hostArrayName(unsigned NodeIndex, const graph::CompiledArg &A);

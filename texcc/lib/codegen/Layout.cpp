@@ -25,6 +25,8 @@ static Json kernelJson(const CompiledGraph &CG, const CodegenOptions &Opts) {
       Shapes.push_back(Json{{"id", I}, {"materials", Groups[I].Materials}});
     K["shapes"] = std::move(Shapes);
     K["shapeHash"] = shapeHash(CG);
+    if (!hoistingFunctions(CG).empty())
+      K["uniforms"] = UniformsEntry;
     return K;
   }
   if (Opts.EvalMode != Mode::Wavefront) {

@@ -6,6 +6,8 @@
 // stack. Baked arguments ("bake": true, --bake) are literals.
 #include "Emit.h"
 
+#include "texcc/Graph/Passes.h"
+
 #include <unordered_map>
 
 using namespace texcc::graph;
@@ -54,8 +56,20 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
     if (readsRecord(N))
       OS << "  const uint r" << J << " = fakeStack[prog + " << 4 + 3 * J
          << "u] / 4u; /* the record, in words */\n";
-    OS << "  const " << spelling(N.Return) << " s" << J << " = " << E.call(CG, NodeIndex)
-       << ";\n";
+    const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
+    std::string Call;
+    if (hoistsUniforms(N, Sig)) {
+      // The values texcc_uniforms computed into the record.
+      std::vector<std::string> Hoisted;
+      for (size_t H = 0; H < Sig.Hoisted.size(); ++H)
+        Hoisted.push_back(fakeStackRead(
+            Sig.Hoisted[H].Type,
+            "r" + std::to_string(J) + " + " + std::to_string(hoistedRelativeWord(N, Sig, H)) + "u"));
+      Call = E.call(CG, NodeIndex, "texcc_hoisted_" + Sig.RenamedName, Hoisted);
+    } else {
+      Call = E.call(CG, NodeIndex);
+    }
+    OS << "  const " << spelling(N.Return) << " s" << J << " = " << Call << ";\n";
   }
   for (size_t O = 0; O < M.Outputs.size(); ++O) {
     const BaseType T = CG.Nodes[M.Outputs[O].Node].Return;
@@ -66,10 +80,106 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
   OS << "}\n\n";
 }
 
+static std::string uniformsFunctionName(unsigned K) {
+  return "texcc_uniforms_" + std::to_string(K);
+}
+
+/// Whether a node of shape S computes hoisted values.
+static bool shapeHoists(const CompiledGraph &CG, const MaterialShape &S) {
+  for (const Instruction &In : CG.Materials[S.Materials.front()].Program) {
+    const CompiledNode &N = CG.Nodes[In.Node];
+    if (hoistsUniforms(N, CG.Signatures.at(N.Fn)))
+      return true;
+  }
+  return false;
+}
+
+/// texcc_uniforms_<k>: for each node of shape K that hoists, its texcc_uniform_ function on
+/// the node's constants, the results stored after the parameters in the material's record.
+static void emitShapeUniforms(std::ostringstream &OS, const CompiledGraph &CG,
+                              const MaterialShape &S, unsigned K) {
+  const CompiledMaterial &M = CG.Materials[S.Materials.front()];
+  OS << "/* shape " << K << ": the values its nodes compute from constants only, once per "
+     << "material (kernel texcc_uniforms) */\n"
+     << "TEXCC_FN static inline void " << uniformsFunctionName(K)
+     << "(__global uint *fakeStack, const uint prog) {\n";
+  ArgEmitter E;
+  E.Tgt = Target::OpenCL;
+  E.BakeConstants = false;
+  E.BakeMarked = true;
+  for (size_t J = 0; J < M.Program.size(); ++J) {
+    const unsigned NodeIndex = M.Program[J].Node;
+    const CompiledNode &N = CG.Nodes[NodeIndex];
+    const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
+    if (!hoistsUniforms(N, Sig))
+      continue;
+    const std::string R = "r" + std::to_string(J);
+    E.RecordWord = [&R](unsigned) { return R; };
+    OS << "  { /* node '" << N.Id << "' (" << Sig.Name << ") */\n"
+       << "    const uint " << R << " = fakeStack[prog + " << 4 + 3 * J << "u] / 4u;\n";
+    std::string Call = "texcc_uniform_" + Sig.RenamedName + "(";
+    for (size_t I = 0; I < Sig.HoistedFrom.size(); ++I)
+      Call += (I ? ", " : "") + E.argument(N, NodeIndex, N.Args[Sig.HoistedFrom[I]]);
+    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
+      OS << "    " << spelling(Sig.Hoisted[H].Type) << " h" << H << ";\n";
+      Call += ", &h" + std::to_string(H);
+    }
+    OS << "    " << Call << ");\n";
+    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
+      const std::string W = R + " + " + std::to_string(hoistedRelativeWord(N, Sig, H)) + "u";
+      const BaseType B = Sig.Hoisted[H].Type;
+      if (B == BaseType::Float || B == BaseType::Int)
+        OS << "    fakeStack[" << W << "] = as_uint(h" << H << ");\n";
+      else
+        OS << "    vstore" << componentCount(B) << "(h" << H << ", 0, (__global float *)fakeStack + "
+           << W << ");\n";
+    }
+    OS << "  }\n";
+  }
+  OS << "}\n\n";
+}
+
+/// The kernel texcc_uniforms (docs/abi.md): one work-item computes every material's hoisted
+/// values, one material after the other (materials that share a record write the same values).
+static void emitUniformsKernel(std::ostringstream &OS, const CompiledGraph &CG,
+                               const std::vector<MaterialShape> &Shapes) {
+  OS << "/* Run once after every upload of args.bin, before texcc_proctex. numMaterials:\n"
+     << " * TEXCC_NUM_MATERIALS, or 0 to launch it without work (a warm-up). */\n"
+     << "__kernel void " << UniformsEntry
+     << "(__global uint *fakeStack, const int numMaterials) {\n"
+     << "  if (get_global_id(0) != 0)\n"
+     << "    return;\n";
+  for (unsigned K = 0; K < Shapes.size(); ++K) {
+    if (!shapeHoists(CG, Shapes[K]))
+      continue;
+    for (unsigned Mat : Shapes[K].Materials)
+      OS << "  if (numMaterials > " << Mat << ") /* '" << CG.Materials[Mat].Name << "' */\n"
+         << "    " << uniformsFunctionName(K) << "(fakeStack, "
+         << CG.Materials[Mat].ProgramWordOffset << "u);\n";
+  }
+  OS << "}\n\n";
+}
+
+std::set<std::string> hoistingFunctions(const CompiledGraph &CG) {
+  std::set<std::string> Names;
+  for (const CompiledNode &N : CG.Nodes) {
+    const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
+    if (hoistsUniforms(N, Sig))
+      Names.insert(Sig.RenamedName);
+  }
+  return Names;
+}
+
 void emitShape(std::ostringstream &OS, const CompiledGraph &CG) {
   const std::vector<MaterialShape> Shapes = groupShapes(CG);
   for (unsigned K = 0; K < Shapes.size(); ++K)
     emitShapeBody(OS, CG, Shapes[K], K);
+  if (!hoistingFunctions(CG).empty()) {
+    for (unsigned K = 0; K < Shapes.size(); ++K)
+      if (shapeHoists(CG, Shapes[K]))
+        emitShapeUniforms(OS, CG, Shapes[K], K);
+    emitUniformsKernel(OS, CG, Shapes);
+  }
   OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
   emitKernelPrologue(OS, "");
   if (Shapes.empty()) {

@@ -73,7 +73,6 @@ public:
 
 private:
   std::optional<graph::ValueType> paramType(clang::QualType T) const;
-  std::optional<graph::BaseType> valueType(clang::QualType T) const;
   std::set<std::string> reachableFrom(const std::string &Renamed) const;
   /// Signature Cost: the estimated work of one call (statements, times loop trip counts, with
   /// the costs of the user functions it calls).

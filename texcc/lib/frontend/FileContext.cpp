@@ -10,6 +10,45 @@ FileContext::FileContext(ASTContext &Ctx, std::string Path, std::string Prefix)
     : Ctx(Ctx), SM(Ctx.getSourceManager()), Path(std::move(Path)), Prefix(std::move(Prefix)),
       Edits(Ctx.getSourceManager(), Ctx.getLangOpts()) {}
 
+std::optional<graph::BaseType> textureValueType(QualType T) {
+  // sam2D is a typedef of int: tell them apart by the sugar the user wrote.
+  for (QualType Cur = T;;) {
+    if (const auto *TD = Cur->getAs<TypedefType>()) {
+      if (TD->getDecl()->getName() == "sam2D")
+        return graph::BaseType::Sampler;
+      Cur = TD->desugar();
+      continue;
+    }
+    break;
+  }
+  QualType C = T.getCanonicalType();
+  if (const auto *V = C->getAs<ExtVectorType>()) {
+    if (!V->getElementType()->isSpecificBuiltinType(BuiltinType::Float))
+      return std::nullopt;
+    switch (V->getNumElements()) {
+    case 2: return graph::BaseType::Float2;
+    case 3: return graph::BaseType::Float3;
+    case 4: return graph::BaseType::Float4;
+    default: return std::nullopt;
+    }
+  }
+  if (C->isSpecificBuiltinType(BuiltinType::Float))
+    return graph::BaseType::Float;
+  if (C->isSpecificBuiltinType(BuiltinType::Int))
+    return graph::BaseType::Int;
+  return std::nullopt;
+}
+
+std::string lineDirective(unsigned Line, llvm::StringRef Path) {
+  std::string Out = "#line " + std::to_string(Line) + " \"";
+  for (char C : Path) {
+    if (C == '"' || C == '\\')
+      Out += '\\';
+    Out += C;
+  }
+  return Out + "\"";
+}
+
 bool FileContext::isUserFunction(const FunctionDecl *FD) const {
   if (!FD || FD->isImplicit() || FD->getBuiltinID() != 0)
     return false;

@@ -14,6 +14,7 @@
 #include "clang/Basic/Diagnostic.h"
 
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -41,6 +42,13 @@ struct CallSite {
   std::string Caller, Callee; // renamed names
   clang::SourceLocation Loc;  // the callee token
 };
+
+/// The graph type of a value type a texture may use: float, float2..4, int, or sam2D (a typedef
+/// of int, told apart by the sugar the user wrote); std::nullopt for anything else.
+std::optional<graph::BaseType> textureValueType(clang::QualType T);
+
+/// `#line Line "Path"` (no newline), the path escaped as a C string.
+std::string lineDirective(unsigned Line, llvm::StringRef Path);
 
 class FileContext {
 public:

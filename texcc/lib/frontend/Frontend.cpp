@@ -1,6 +1,7 @@
 // runFrontend: one Clang parse per user source (each is its own translation unit, so two files
 // may define the same names), the match callbacks over its AST, the edits applied once.
 #include "Callbacks.h"
+#include "Hoisting.h"
 
 #include "texcc/Config.h"
 #include "texcc/Frontend/Frontend.h"
@@ -28,6 +29,7 @@ const char *const PreludePath = "/texcc-virtual/texcc_prelude.h";
 struct SourceJob {
   std::string Path, Prefix;
   const std::set<std::string> *TextureNames = nullptr;
+  const std::map<std::string, std::set<std::string>> *HoistableParams = nullptr;
   std::map<std::string, std::string> EarlierTextures; // name -> file
   std::vector<std::pair<std::string, std::string>> Defines;
   TranslatedSource Out;
@@ -133,16 +135,6 @@ void TexccConsumer::HandleTranslationUnit(ASTContext &Ctx) {
   buildOutput(FC);
 }
 
-static std::string lineDirective(unsigned Line, StringRef Path) {
-  std::string Out = "#line " + std::to_string(Line) + " \"";
-  for (char C : Path) {
-    if (C == '"' || C == '\\')
-      Out += '\\';
-    Out += C;
-  }
-  return Out + "\"";
-}
-
 /// The edits of File plus, for each user header it includes, the header's own rewritten text
 /// in place of the #include line, framed by #line directives.
 llvm::Expected<tooling::Replacements>
@@ -214,6 +206,22 @@ void TexccConsumer::buildOutput(FileContext &FC) {
     R.FirstLine = SM.getExpansionLineNumber(B);
     R.LineAfter = SM.getExpansionLineNumber(E);
     Out.Definitions[Renamed] = R;
+    // A texture function of this file: what shape code may compute once per material.
+    auto Sig = Job.Textures.find(Name);
+    if (Sig == Job.Textures.end() || Sig->second.RenamedName != Renamed)
+      continue;
+    auto Params = Job.HoistableParams->find(Name);
+    if (Params == Job.HoistableParams->end())
+      continue;
+    HoistPlan Plan = planHoisting(FC, FD, Params->second);
+    if (Plan.Decls.empty())
+      continue;
+    std::string Functions = hoistedFunctions(FC, FD, Plan, *Repl, Out.Text, R.Begin, R.End, Renamed);
+    if (Functions.empty())
+      continue;
+    Out.Hoisted[Renamed] = std::move(Functions);
+    Sig->second.Hoisted = Plan.Values;
+    Sig->second.HoistedFrom = Plan.From;
   }
   for (const CallSite &C : FC.Calls)
     Out.Calls[C.Caller].insert(C.Callee);
@@ -376,6 +384,7 @@ llvm::Expected<FrontendResult> runFrontend(const std::vector<std::string> &Sourc
     Job.Path = Sources[I];
     Job.Prefix = Prefixes[I];
     Job.TextureNames = &TextureNames;
+    Job.HoistableParams = &Opts.HoistableParams;
     Job.EarlierTextures = TextureFiles;
     Errors += runOne(Job, Opts, Diags);
     Job.Out.Path = Job.Path;

@@ -16,27 +16,40 @@ static std::string quoted(const std::string &Path) {
   return Out + "\"";
 }
 
-std::string TranslatedSource::render(const std::set<std::string> &Keep) const {
+std::string TranslatedSource::render(const std::set<std::string> &Keep,
+                                     const std::set<std::string> &Hoist) const {
   std::string Out;
   for (const auto &[Name, Value] : Predefined)
     Out += "#define " + Name + " " + Value + "\n";
   Out += "#line 1 " + quoted(Path) + "\n";
-  // Omitted definitions, in text order.
-  std::vector<const Range *> Skipped;
-  if (!Keep.empty())
-    for (const auto &[Name, R] : Definitions)
-      if (!Keep.count(Name))
-        Skipped.push_back(&R);
-  std::sort(Skipped.begin(), Skipped.end(),
-            [](const Range *A, const Range *B) { return A->Begin < B->Begin; });
-  size_t Pos = 0;
-  for (const Range *R : Skipped) {
-    if (R->Begin < Pos || R->End > Text.size())
+  // Omitted definitions, and the hoisted functions after their definitions, in text order.
+  struct Piece {
+    size_t Begin, End;
+    const Range *R;
+    const std::string *Insert;
+  };
+  std::vector<Piece> Pieces;
+  for (const auto &[Name, R] : Definitions) {
+    if (!Keep.empty() && !Keep.count(Name)) {
+      Pieces.push_back({R.Begin, R.End, &R, nullptr});
       continue;
-    Out.append(Text, Pos, R->Begin - Pos);
+    }
+    auto It = Hoisted.find(Name);
+    if (Hoist.count(Name) && It != Hoisted.end())
+      Pieces.push_back({R.End, R.End, &R, &It->second});
+  }
+  std::sort(Pieces.begin(), Pieces.end(),
+            [](const Piece &A, const Piece &B) { return A.Begin < B.Begin; });
+  size_t Pos = 0;
+  for (const Piece &P : Pieces) {
+    if (P.Begin < Pos || P.End > Text.size())
+      continue;
+    Out.append(Text, Pos, P.Begin - Pos);
+    if (P.Insert)
+      Out += "\n" + *P.Insert;
     // The rest of the definition's last line continues as user line LineAfter.
-    Out += "\n#line " + std::to_string(R->LineAfter) + " " + quoted(Path) + "\n";
-    Pos = R->End;
+    Out += "\n#line " + std::to_string(P.R->LineAfter) + " " + quoted(Path) + "\n";
+    Pos = P.End;
   }
   Out.append(Text, Pos, std::string::npos);
   if (!Out.empty() && Out.back() != '\n')

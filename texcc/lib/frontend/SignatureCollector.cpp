@@ -35,46 +35,17 @@ void SignatureCollector::run(const MatchFinder::MatchResult &Result) {
   FC.Called.emplace(FC.renamed(Callee), Loc);
 }
 
-std::optional<BaseType> SignatureCollector::valueType(QualType T) const {
-  // sam2D is a typedef of int: tell them apart by the sugar the user wrote.
-  for (QualType Cur = T;;) {
-    if (const auto *TD = Cur->getAs<TypedefType>()) {
-      if (TD->getDecl()->getName() == "sam2D")
-        return BaseType::Sampler;
-      Cur = TD->desugar();
-      continue;
-    }
-    break;
-  }
-  QualType C = T.getCanonicalType();
-  if (const auto *V = C->getAs<ExtVectorType>()) {
-    if (!V->getElementType()->isSpecificBuiltinType(BuiltinType::Float))
-      return std::nullopt;
-    switch (V->getNumElements()) {
-    case 2: return BaseType::Float2;
-    case 3: return BaseType::Float3;
-    case 4: return BaseType::Float4;
-    default: return std::nullopt;
-    }
-  }
-  if (C->isSpecificBuiltinType(BuiltinType::Float))
-    return BaseType::Float;
-  if (C->isSpecificBuiltinType(BuiltinType::Int))
-    return BaseType::Int;
-  return std::nullopt;
-}
-
 std::optional<graph::ValueType> SignatureCollector::paramType(QualType T) const {
   if (const auto *P = T->getAs<PointerType>()) {
     QualType Pointee = P->getPointeeType();
     if (Pointee.getAddressSpace() != LangAS::opencl_global || !Pointee.isConstQualified())
       return std::nullopt;
-    auto B = valueType(Pointee.getUnqualifiedType());
+    auto B = textureValueType(Pointee.getUnqualifiedType());
     if (!B || *B == BaseType::Sampler)
       return std::nullopt;
     return graph::ValueType{*B, true};
   }
-  auto B = valueType(T.getUnqualifiedType());
+  auto B = textureValueType(T.getUnqualifiedType());
   if (!B)
     return std::nullopt;
   return graph::ValueType{*B, false};
@@ -212,7 +183,7 @@ void SignatureCollector::finish(const std::set<std::string> &TextureNames,
     Sig.RenamedName = FC.renamed(FD);
     Sig.File = FC.Path;
     bool Ok = true;
-    auto Ret = valueType(FD->getReturnType());
+    auto Ret = textureValueType(FD->getReturnType());
     if (!Ret || *Ret == BaseType::Int || *Ret == BaseType::Sampler) {
       SourceLocation Loc = FD->getReturnTypeSourceRange().getBegin();
       FC.report(Loc.isValid() ? Loc : FD->getLocation(), Diag::BadReturnType)

@@ -37,16 +37,47 @@ uint32_t elementStride(BaseType B) { return sizeOf(ValueType{B, false}); }
 
 } // namespace
 
-std::vector<uint32_t> parameterOffsets(const FunctionSignature &Sig, uint32_t &BlockSize) {
+/// Offsets of the parameters, then of the hoisted values, and where the last one ends.
+static std::vector<uint32_t> blockOffsets(const FunctionSignature &Sig, uint32_t &End) {
   std::vector<uint32_t> Offsets;
-  uint32_t Offset = 0;
-  for (const Param &P : Sig.Params) {
-    Offset = alignTo(Offset, alignOf(P.Type));
-    Offsets.push_back(Offset);
-    Offset += sizeOf(P.Type);
-  }
-  BlockSize = alignTo(Offset, 16);
+  End = 0;
+  auto place = [&](ValueType T) {
+    End = alignTo(End, alignOf(T));
+    Offsets.push_back(End);
+    End += sizeOf(T);
+  };
+  for (const Param &P : Sig.Params)
+    place(P.Type);
+  for (const HoistedValue &H : Sig.Hoisted)
+    place(ValueType{H.Type, false});
   return Offsets;
+}
+
+std::vector<uint32_t> parameterOffsets(const FunctionSignature &Sig, uint32_t &BlockSize) {
+  std::vector<uint32_t> Offsets = blockOffsets(Sig, BlockSize);
+  BlockSize = alignTo(BlockSize, 16);
+  Offsets.resize(Sig.Params.size());
+  return Offsets;
+}
+
+std::vector<uint32_t> hoistedOffsets(const FunctionSignature &Sig) {
+  uint32_t End = 0;
+  std::vector<uint32_t> Offsets = blockOffsets(Sig, End);
+  Offsets.erase(Offsets.begin(), Offsets.begin() + Sig.Params.size());
+  return Offsets;
+}
+
+bool hoistsUniforms(const CompiledNode &N, const FunctionSignature &Sig) {
+  if (Sig.Hoisted.empty() || Sig.HoistedFrom.empty())
+    return false;
+  bool AllBaked = true;
+  for (unsigned P : Sig.HoistedFrom) {
+    if (P >= N.Args.size() || N.Args[P].Src != CompiledArg::Source::Constant ||
+        N.Args[P].Type.IsGlobalArray)
+      return false;
+    AllBaked = AllBaked && N.Args[P].Bake;
+  }
+  return !AllBaked;
 }
 
 uint32_t sourceWordsBytes(size_t NumParams) {

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace texcc::graph {
@@ -30,6 +31,22 @@ std::string imagePath(const std::string &GraphPath, const std::string &Image) {
   return absolutePath((fs::path(GraphPath).parent_path() / P).string());
 }
 
+/// {"values": [{name, type, size, offset}], "from": [parameter names]}.
+OJson hoistedJson(const FunctionSignature &Sig) {
+  const std::vector<uint32_t> Offsets = hoistedOffsets(Sig);
+  OJson Values = OJson::array(), From = OJson::array();
+  for (size_t I = 0; I < Sig.Hoisted.size(); ++I) {
+    const ValueType T{Sig.Hoisted[I].Type, false};
+    Values.push_back({{"name", Sig.Hoisted[I].Name},
+                      {"type", spelling(T)},
+                      {"size", sizeOf(T)},
+                      {"offset", Offsets[I]}});
+  }
+  for (unsigned P : Sig.HoistedFrom)
+    From.push_back(Sig.Params.at(P).Name);
+  return {{"values", Values}, {"from", From}};
+}
+
 OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
   uint32_t BlockSize = 0;
   std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
@@ -42,16 +59,19 @@ OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
                       {"align", alignOf(P.Type)},
                       {"offset", Offsets[I]}});
   }
-  return {{"id", Id},
-          {"name", Sig.Name},
-          {"renamed", Sig.RenamedName},
-          {"file", Sig.File},
-          {"return", spelling(Sig.Return)},
-          {"blockSize", BlockSize},
-          {"params", Params},
-          {"attributes", Sig.Attributes},
-          {"settings", Sig.Settings},
-          {"cost", Sig.Cost}};
+  OJson F = {{"id", Id},
+             {"name", Sig.Name},
+             {"renamed", Sig.RenamedName},
+             {"file", Sig.File},
+             {"return", spelling(Sig.Return)},
+             {"blockSize", BlockSize},
+             {"params", Params},
+             {"attributes", Sig.Attributes},
+             {"settings", Sig.Settings},
+             {"cost", Sig.Cost}};
+  if (!Sig.Hoisted.empty())
+    F["hoisted"] = hoistedJson(Sig);
+  return F;
 }
 
 OJson superinstructionJson(const CompiledGraph &CG, const Superinstruction &S) {
@@ -230,6 +250,28 @@ bool readLayoutSignatures(const std::string &LayoutJsonText, SignatureMap &Sigs,
       if (F.contains("settings"))
         S.Settings = F.at("settings").get<std::vector<std::string>>();
       S.Cost = F.value("cost", 0u);
+      if (F.contains("hoisted") && !F.at("hoisted").is_null()) {
+        const auto &H = F.at("hoisted");
+        for (const auto &V : H.at("values")) {
+          auto T = parseSpelling(V.at("type").get<std::string>());
+          if (!T || T->IsGlobalArray || T->Base == BaseType::Sampler) {
+            Error = "function '" + S.Name + "': bad hoisted type '" +
+                    V.at("type").get<std::string>() + "'";
+            return false;
+          }
+          S.Hoisted.push_back({V.at("name").get<std::string>(), T->Base});
+        }
+        for (const auto &P : H.at("from")) {
+          const std::string Name = P.get<std::string>();
+          auto It = std::find_if(S.Params.begin(), S.Params.end(),
+                                 [&](const Param &Q) { return Q.Name == Name; });
+          if (It == S.Params.end()) {
+            Error = "function '" + S.Name + "': hoisted from an unknown parameter '" + Name + "'";
+            return false;
+          }
+          S.HoistedFrom.push_back(static_cast<unsigned>(It - S.Params.begin()));
+        }
+      }
       FnIds[S.Name] = F.at("id").get<unsigned>();
       Sigs[S.Name] = std::move(S);
     }

@@ -51,6 +51,7 @@ struct LayoutInfo {
   std::vector<unsigned> OutputsPerMaterial;
   std::vector<std::string> Launches; // wavefront node kernels, in order
   std::string Entry;
+  std::string Uniforms;              // shape mode: texcc_uniforms, run once before Entry
   unsigned NumImages = 0;
 };
 
@@ -122,6 +123,7 @@ LayoutInfo readLayout(const std::string &OutDir) {
   Info.NumMaterials = static_cast<unsigned>(Info.OutputsPerMaterial.size());
   const Json &K = L.at("kernel");
   Info.Entry = K.at("entry").get<std::string>();
+  Info.Uniforms = K.value("uniforms", "");
   if (K.contains("launches"))
     for (const Json &Launch : K.at("launches"))
       Info.Launches.push_back(Launch.at("kernel").get<std::string>());
@@ -204,7 +206,7 @@ std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Opt
   };
   cl::Buffer Hits = buffer(In.Hits, CL_MEM_READ_ONLY);
   cl::Buffer HitMaterial = buffer(In.HitMaterial, CL_MEM_READ_ONLY);
-  cl::Buffer FakeStack = buffer(Words, CL_MEM_READ_ONLY);
+  cl::Buffer FakeStack = buffer(Words, CL_MEM_READ_WRITE); // texcc_uniforms writes into it
   cl::Buffer Settings = buffer(std::vector<TexccSettings>{In.Settings}, CL_MEM_READ_ONLY);
   cl::Buffer Texels = buffer(In.Texels, CL_MEM_READ_ONLY);
   cl::Buffer Images = buffer(In.Images, CL_MEM_READ_ONLY);
@@ -212,6 +214,13 @@ std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Opt
   cl::Buffer Outputs = buffer(Out, CL_MEM_READ_WRITE);
   std::vector<cl_float4> Scratch(NumHits * Info.ScratchPerHit);
   cl::Buffer ScratchBuf = buffer(Scratch, CL_MEM_READ_WRITE);
+  if (!Info.Uniforms.empty()) {
+    // Shape mode's hoisted values, computed into fakeStack once, as the runtime does.
+    cl::Kernel U(Prog, Info.Uniforms.c_str());
+    U.setArg(0, FakeStack);
+    U.setArg(1, static_cast<cl_int>(Info.NumMaterials));
+    Q.enqueueNDRangeKernel(U, cl::NullRange, cl::NDRange(1), cl::NullRange);
+  }
   std::vector<std::string> Kernels = Info.Launches;
   Kernels.push_back(Info.Entry);
   for (const std::string &Name : Kernels) {

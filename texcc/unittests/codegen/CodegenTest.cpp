@@ -48,9 +48,15 @@ CompiledGraph twoNodeGraph() {
   FunctionSignature Noise{"noise", "t_noise", "t.cl", BaseType::Float,
                           {{"p", {BaseType::Float3, false}}, {"s", {BaseType::Float, false}}},
                           {},
+                          {},
+                          0,
+                          {},
                           {}};
   FunctionSignature Tint{"tint", "t_tint", "t.cl", BaseType::Float3,
                          {{"c", {BaseType::Float3, false}}},
+                         {},
+                         {},
+                         0,
                          {},
                          {}};
   CG.Signatures = {{"noise", Noise}, {"tint", Tint}};

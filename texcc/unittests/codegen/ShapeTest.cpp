@@ -19,9 +19,15 @@ SignatureMap signatures() {
                           {"s", {BaseType::Float, false}},
                           {"mode", {BaseType::Int, false}}},
                          {},
+                         {},
+                         0,
+                         {},
                          {}};
   FunctionSignature Tint{"tint", "t_tint", "t.cl", BaseType::Float3,
                          {{"t", {BaseType::Float, false}}, {"c", {BaseType::Float3, false}}},
+                         {},
+                         {},
+                         0,
                          {},
                          {}};
   return {{"wave", Wave}, {"tint", Tint}};

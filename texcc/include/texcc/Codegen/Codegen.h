@@ -9,6 +9,7 @@
 #include "texcc/Graph/Compile.h"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -41,9 +42,18 @@ struct CodegenOptions {
 /// The entry points every mode's kernel defines (docs/abi.md).
 constexpr const char *KernelEntry = "texcc_proctex";          // interp, inline, shape
 constexpr const char *WavefrontOutputsEntry = "texcc_wf_outputs";
+/// Shape mode, when a node hoists values (layout.json kernel.uniforms): computes them into
+/// fakeStack, once per material; the runtime runs it after every upload of args.bin and before
+/// the shape kernel's next launch (docs/abi.md).
+constexpr const char *UniformsEntry = "texcc_uniforms";
 constexpr const char *HostEntry = "texcc_host_evaluate";     // target host (extern "C")
 /// "texcc_wf_<NodeIndex>".
 std::string wavefrontKernelName(unsigned NodeIndex);
+
+/// The renamed texture functions whose hoisted values some live node computes once per material
+/// in shape mode (graph::hoistsUniforms): their texcc_uniform_ and texcc_hoisted_ functions go
+/// into the shape kernel.
+std::set<std::string> hoistingFunctions(const graph::CompiledGraph &CG);
 
 /// "proctex.cl" or "proctex.cpp".
 std::string kernelFileName(Target T);

@@ -26,6 +26,10 @@ struct FrontendOptions {
   std::vector<std::string> Defines;      // -D NAME[=V]
   /// In-memory file contents by path (unit tests); files not listed are read from disk.
   std::map<std::string, std::string> VirtualFiles;
+  /// Hoisting (shape mode): per texture function, the parameters that every node of the graph
+  /// binds to a constant; only declarations that read nothing else are hoisted. A function not
+  /// listed hoists nothing.
+  std::map<std::string, std::set<std::string>> HoistableParams;
 };
 
 /// One user source after rewriting.
@@ -40,7 +44,14 @@ struct TranslatedSource {
   /// The rewritten text: `#line` directives map every line back to Path; macros the file
   /// defines are #undef'd at the end (hygiene). Function definitions whose renamed name is not
   /// in Keep are left out (their lines are skipped with #line); an empty Keep keeps everything.
-  std::string render(const std::set<std::string> &Keep = {}) const;
+  /// After each kept definition whose renamed name is in Hoist come its Hoisted functions.
+  std::string render(const std::set<std::string> &Keep = {},
+                     const std::set<std::string> &Hoist = {}) const;
+
+  /// Texture functions with declarations that shape code computes once per material (their
+  /// signatures' Hoisted): renamed name -> the text of texcc_uniform_<renamed> and
+  /// texcc_hoisted_<renamed> (docs/frontend.md, "Hoisting").
+  std::map<std::string, std::string> Hoisted;
 
   // Implementation detail of render(): the rewritten text and, for each defined function,
   // the byte range of its definition in it.

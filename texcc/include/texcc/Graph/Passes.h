@@ -52,8 +52,15 @@ std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S);
 void encodeArgsBin(CompiledGraph &CG);
 
 /// Byte offsets of one parameter block: the offset of each parameter, and the block size
-/// (a multiple of 16). Every node of a function shares them (CompiledArg::BlockOffset).
+/// (a multiple of 16; it covers the hoisted values too). Every node of a function shares them
+/// (CompiledArg::BlockOffset).
 std::vector<uint32_t> parameterOffsets(const FunctionSignature &Sig, uint32_t &BlockSize);
+/// Byte offsets of Sig.Hoisted inside the parameter block, after the parameters.
+std::vector<uint32_t> hoistedOffsets(const FunctionSignature &Sig);
+/// Whether shape code computes Sig.Hoisted of node N once per material: every parameter in
+/// Sig.HoistedFrom is a constant at N and not every one of them is baked (baked ones are
+/// literals, which the OpenCL compiler folds by itself).
+bool hoistsUniforms(const CompiledNode &N, const FunctionSignature &Sig);
 /// Bytes of a record's source words, padded to 16: where its parameter block starts, relative
 /// to the record (the same for every node of a function).
 uint32_t sourceWordsBytes(size_t NumParams);

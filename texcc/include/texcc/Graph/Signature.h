@@ -18,6 +18,17 @@ struct Param {
   ValueType Type;
 };
 
+/// A local of a texture function that depends on constant parameters only: a declaration at
+/// the top level of its body whose initializer reads parameters that the body never changes
+/// (HoistedFrom) and calls only OpenCL builtins (frontend.md, "Hoisting"). Where a node binds
+/// every one of those parameters to a constant, shape code computes it once per material
+/// (kernel texcc_uniforms) into the node's parameter block, after the parameters, instead of
+/// once per hit.
+struct HoistedValue {
+  std::string Name;
+  BaseType Type = BaseType::Float;  // Float..Float4 or Int
+};
+
 struct FunctionSignature {
   std::string Name;          // as the user wrote it, and as graph.json's "fn" names it
   std::string RenamedName;   // the per-file name in the generated kernel, e.g. "noise_fbm3"
@@ -30,6 +41,10 @@ struct FunctionSignature {
   /// body, plus, per call of another user function, that function's Cost); 0 when unknown.
   /// Superinstructions fuse only light functions (Cost in 1..CompileOptions::LightCost).
   unsigned Cost = 0;
+  /// Locals computed once per material in shape mode, in declaration order (empty in every
+  /// other mode: texcc drops them there), and the indices of the parameters they read.
+  std::vector<HoistedValue> Hoisted;
+  std::vector<unsigned> HoistedFrom;
 };
 
 using SignatureMap = std::map<std::string, FunctionSignature>;  // by Name
