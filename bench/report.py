@@ -423,7 +423,9 @@ def instructions_section(d):
              "instructions of PoCL's work-group functions, library calls included "
              "(`--toggle-collect=_pocl_kernel_*`), over the textured hits. A count does not "
              "depend on the machine's load, so small differences are real; it is not a time "
-             "(section 2c has times). The per-node rows bake only that node's constants into "
+             "(sections 2c and 2e have times). `shape` hoists what the user's functions compute "
+             "from constants alone (`texcc_uniforms`, counted once per run over the grid), "
+             "`shape --no-hoist` does not. The per-node rows bake only that node's constants into "
              "shape's code: the instructions saved are what inline's constant folding gains "
              "on that node." % d["grid"], "",
              "| texture | configuration | instructions per textured hit | / inline |",

@@ -81,6 +81,7 @@ public:
   bool Ok = true;
   unsigned BuiltinCalls = 0;
   std::set<unsigned> Params;
+  bool ReadsHoisted = false;
 
   bool VisitDeclRefExpr(DeclRefExpr *E) {
     const ValueDecl *D = E->getDecl();
@@ -94,7 +95,10 @@ public:
       return true;
     }
     const auto *V = dyn_cast<VarDecl>(D);
-    return V && Hoisted.count(V) ? true : fail();
+    if (!V || !Hoisted.count(V))
+      return fail();
+    ReadsHoisted = true;
+    return true;
   }
   bool VisitCallExpr(CallExpr *C) {
     const FunctionDecl *Callee = C->getDirectCallee();
@@ -162,7 +166,7 @@ HoistPlan planHoisting(const FileContext &FC, const FunctionDecl *FD,
     std::set<unsigned> Params;
     std::vector<graph::HoistedValue> Values;
     unsigned Calls = 0;
-    bool Ok = true;
+    bool Ok = true, ReadsHoisted = false;
     for (const Decl *D : DS->decls()) {
       const auto *VD = dyn_cast<VarDecl>(D);
       std::optional<graph::BaseType> T = VD ? hoistableType(VD->getType()) : std::nullopt;
@@ -177,13 +181,14 @@ HoistPlan planHoisting(const FileContext &FC, const FunctionDecl *FD,
         break;
       }
       Calls += U.BuiltinCalls;
+      ReadsHoisted = ReadsHoisted || U.ReadsHoisted;
       Params.insert(U.Params.begin(), U.Params.end());
       Values.push_back({VD->getName().str(), *T});
       Candidates.insert(VD);
     }
-    // Nothing to gain from a declaration without a call, or one without a parameter (the
-    // compiler folds it).
-    if (!Ok || Calls == 0 || Params.empty())
+    // Nothing to gain from a declaration without a call, or one that reads neither a
+    // parameter nor a hoisted variable (the compiler folds it).
+    if (!Ok || Calls == 0 || (Params.empty() && !ReadsHoisted))
       continue;
     Hoisted = std::move(Candidates);
     From.insert(Params.begin(), Params.end());

@@ -170,3 +170,61 @@ TEST(FrontendTest, MissingFileIsAnError) {
 }
 
 } // namespace
+
+namespace {
+
+FrontendRun hoistingRun(const std::string &Code, const std::set<std::string> &Constant) {
+  FrontendOptions Opts;
+  Opts.VirtualFiles = {{"h.cl", Code}};
+  Opts.HoistableParams = {{"f", Constant}};
+  std::string Diags;
+  llvm::raw_string_ostream OS(Diags);
+  auto R = runFrontend({"h.cl"}, {"f"}, Opts, OS);
+  OS.flush();
+  return {std::move(R), Diags};
+}
+
+std::vector<std::string> hoistedNames(const FrontendResult &R) {
+  std::vector<std::string> Names;
+  for (const graph::HoistedValue &V : R.Textures.at("f").Hoisted)
+    Names.push_back(V.Name);
+  return Names;
+}
+
+} // namespace
+
+TEST(FrontendTest, HoistsOnlyDeclarationsOfConstantParametersSpelledInTheFile) {
+  const std::string Code = "#define DECL(v, e) float v = e;\n"
+                           "float f(float3 p, float a, float b) {\n"
+                           "  float c = cos(a);\n"       // hoisted
+                           "  DECL(d, sin(a))\n"         // made by a macro: stays
+                           "  float e = sin(b);\n"       // b is not constant: stays
+                           "  float g = fmax(c, 0.5f);\n" // reads hoisted c: hoisted
+                           "  if (p.x > 0.0f) {\n"
+                           "    float h = cos(a);\n"     // not at the top level: stays
+                           "    return h;\n"
+                           "  }\n"
+                           "  return c + d + e + g + p.y;\n"
+                           "}\n";
+  FrontendRun R = hoistingRun(Code, {"a"});
+  ASSERT_TRUE(bool(R.Result)) << R.Diags;
+  EXPECT_EQ(hoistedNames(*R.Result), (std::vector<std::string>{"c", "g"}));
+  EXPECT_EQ(R.Result->Textures.at("f").HoistedFrom, std::vector<unsigned>{1});
+  const TranslatedSource &S = R.Result->Sources.at(0);
+  ASSERT_EQ(S.Hoisted.count("h_f"), 1u);
+  const std::string &Text = S.Hoisted.at("h_f");
+  EXPECT_NE(Text.find("void texcc_uniform_h_f(float a, float *texcc_out_c, float *texcc_out_g)"),
+            std::string::npos) << Text;
+  EXPECT_NE(Text.find("texcc_hoisted_h_f(TEXCC_CTX_PARAM, float3 p, float a, float b, float c, "
+                      "float g)"),
+            std::string::npos) << Text;
+  // render() puts them after the definition only when asked (shape code).
+  EXPECT_EQ(S.render().find("texcc_hoisted_h_f"), std::string::npos);
+  EXPECT_NE(S.render({}, {"h_f"}).find("texcc_hoisted_h_f"), std::string::npos);
+
+  // With no parameter known constant (every other mode), nothing is hoisted.
+  FrontendRun None = hoistingRun(Code, {});
+  ASSERT_TRUE(bool(None.Result)) << None.Diags;
+  EXPECT_TRUE(None.Result->Textures.at("f").Hoisted.empty());
+  EXPECT_TRUE(None.Result->Sources.at(0).Hoisted.empty());
+}

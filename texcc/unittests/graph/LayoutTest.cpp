@@ -282,3 +282,72 @@ TEST(Signature, AttributeTableIsAbiOrder) {
 }
 
 } // namespace
+
+namespace {
+
+/// turn(float3 p, float angle, float stretch) with c, s (from angle) and dir (a float3, from
+/// stretch) hoisted, as the front end would report them in shape mode.
+SignatureMap hoistingSigs() {
+  SignatureMap S = sigs(R"([
+    {"name": "turn", "return": "float3", "params": [{"name": "p", "type": "float3"},
+      {"name": "angle", "type": "float"}, {"name": "stretch", "type": "float"}]}
+  ])");
+  FunctionSignature &T = S.at("turn");
+  T.Hoisted = {{"c", BaseType::Float}, {"s", BaseType::Float}, {"dir", BaseType::Float3}};
+  T.HoistedFrom = {1, 2};
+  return S;
+}
+
+} // namespace
+
+TEST(Layout, HoistedValuesFollowTheParametersInTheBlock) {
+  const SignatureMap Sigs = hoistingSigs();
+  const FunctionSignature &T = Sigs.at("turn");
+  uint32_t Block = 0;
+  EXPECT_EQ(parameterOffsets(T, Block), (std::vector<uint32_t>{0, 16, 20}));
+  // c at 24, s at 28, dir (16-aligned) at 32; the block covers them: 48.
+  EXPECT_EQ(hoistedOffsets(T), (std::vector<uint32_t>{24, 28, 32}));
+  EXPECT_EQ(Block, 48u);
+  FunctionSignature Plain = T;
+  Plain.Hoisted.clear();
+  Plain.HoistedFrom.clear();
+  parameterOffsets(Plain, Block);
+  EXPECT_EQ(Block, 32u);
+}
+
+TEST(Layout, ANodeHoistsWhenEveryParameterItReadsIsAnUnbakedConstant) {
+  CompiledGraph CG = compiled(R"({"texcc": 1, "nodes": [
+    {"id": "k", "fn": "turn", "args": {"p": {"attr": "ObjectPos"}, "angle": 0.5, "stretch": 2}},
+    {"id": "w", "fn": "turn", "args": {"p": {"node": "k"}, "angle": {"attr": "AO"}, "stretch": 2}},
+    {"id": "b", "fn": "turn", "args": {"p": {"node": "w"}, "angle": {"value": 1, "bake": true},
+                                       "stretch": {"value": 3, "bake": true}}},
+    {"id": "h", "fn": "turn", "args": {"p": {"node": "b"}, "angle": {"value": 1, "bake": true},
+                                       "stretch": 4}}],
+    "materials": {"m": {"bsdf": "diffuse", "color": {"node": "h"}}}})",
+                              CompileOptions(), hoistingSigs());
+  const FunctionSignature &T = CG.Signatures.at("turn");
+  EXPECT_TRUE(hoistsUniforms(CG.Nodes[CG.findNode("k")], T));
+  EXPECT_FALSE(hoistsUniforms(CG.Nodes[CG.findNode("w")], T)); // angle is an attribute
+  EXPECT_FALSE(hoistsUniforms(CG.Nodes[CG.findNode("b")], T)); // all baked: literals
+  EXPECT_TRUE(hoistsUniforms(CG.Nodes[CG.findNode("h")], T));  // stretch is not baked
+  for (const CompiledNode &N : CG.Nodes)
+    EXPECT_EQ(N.RecordSize, 16u + 48u) << N.Id; // the block has room for the hoisted values
+
+  // layout.json lists them, and the live editor reads them back.
+  nlohmann::json J = nlohmann::json::parse(layoutJson(CG));
+  const auto &H = J["functions"][0]["hoisted"];
+  EXPECT_EQ(H["values"][2]["name"], "dir");
+  EXPECT_EQ(H["values"][2]["type"], "float3");
+  EXPECT_EQ(H["values"][2]["offset"], 32);
+  EXPECT_EQ(H["from"], nlohmann::json::parse(R"(["angle", "stretch"])"));
+  SignatureMap Back;
+  std::map<std::string, unsigned> Ids;
+  std::string Error;
+  ASSERT_TRUE(readLayoutSignatures(layoutJson(CG), Back, Ids, Error)) << Error;
+  ASSERT_EQ(Back.at("turn").Hoisted.size(), 3u);
+  EXPECT_EQ(Back.at("turn").Hoisted[2].Type, BaseType::Float3);
+  EXPECT_EQ(Back.at("turn").HoistedFrom, (std::vector<unsigned>{1, 2}));
+  uint32_t Block = 0;
+  parameterOffsets(Back.at("turn"), Block);
+  EXPECT_EQ(Block, 48u);
+}
