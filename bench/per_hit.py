@@ -1,19 +1,21 @@
 #!/usr/bin/env python3
 """Figure 2e: per-hit texture cost of every mode side by side on PoCL, on the two textures of the
-paper's Table 1 (examples/rust and examples/scratches on the atrium), with shape mode's hoisting
+paper's Table 1 (examples/rust and examples/scratches), with shape mode's hoisting
 (docs/frontend.md, "Hoisting") on and off.
 
-Configurations: interp (superinstructions on), inline, wavefront, shape, and shape --no-hoist
-(every declaration of the user's functions computed per hit). Per workload, every repetition
-renders all of them back to back in a rotating order, each in its own texrender process with a
-warm program cache (common.per_hit_samples); shape renders with --tier=shape (texrender's
-default for a single render), and its cost includes texcc_uniforms, which runs once per frame.
-The cost is the texture kernels' device time over the texture stage's work-items, in ms per
-million hits. PoCL runs one thread (POCL_MAX_PTHREAD_COUNT=1): on the shared 2-core machine a
-kernel spread over both cores varies threefold between runs. Ratios to inline are taken per
-repetition, then the median, and between the minima.
+Configurations: inline (first: the ratios are to it), interp (superinstructions on), wavefront,
+shape, and shape --no-hoist (every declaration of the user's functions computed per hit). One
+`texcc-eval --time R` process per texture builds every configuration's kernel and runs all of
+them over the same random hits (texcc-eval's grid: positions, normals, AO and UVs drawn as in
+the equivalence tests) in R rounds, each round launching every configuration once in an order
+that rotates with the round (docs/cli.md, texcc-eval). The cost is the texture kernels' device
+time (OpenCL profiling) per textured hit; shape's texcc_uniforms runs once before the rounds,
+as it runs once per upload in the renderer. The ratio to inline is taken within each round and
+the median reported: on the shared 2-core machine whole renders of one configuration varied by
+15% or more between processes (an earlier version of this figure timed renders), while rounds
+of one process see the same load. PoCL runs one thread (POCL_MAX_PTHREAD_COUNT=1).
 
-usage: bench/per_hit.py [--build DIR] [--reps N] [--size WxH] [--spp N] [--only rust,scratches]
+usage: bench/per_hit.py [--build DIR] [--rounds N] [--grid N] [--only rust,scratches]
                         [--out FILE]
 """
 import argparse
@@ -23,27 +25,14 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
-import superinstructions  # noqa: E402
 
-CONFIGS = (("interp", "interp", []),
-           ("inline", "inline", []),
+CONFIGS = (("inline", "inline", []),
+           ("interp", "interp", []),
            ("wavefront", "wavefront", []),
            ("shape", "shape", []),
            ("shape-unhoisted", "shape", ["--no-hoist"]))
-WORKLOADS = ("rust", "scratches")
-
-
-def summarize(samples):
-    """Per configuration: the samples, their minimum and median; per configuration other than
-    inline: the per-repetition ratios to inline, their median, and the ratio of the minima."""
-    ratios = {cfg: [x / y for x, y in zip(v, samples["inline"])]
-              for cfg, v in samples.items() if cfg != "inline"}
-    return {"msPerMillionHits": samples,
-            "minMsPerMillionHits": {k: min(v) for k, v in samples.items()},
-            "medianMsPerMillionHits": {k: common.median(v) for k, v in samples.items()},
-            "ratiosToInline": ratios,
-            "medianRatiosToInline": {k: common.median(v) for k, v in ratios.items()},
-            "minRatiosToInline": {k: min(samples[k]) / min(samples["inline"]) for k in ratios}}
+GRAPHS = {"rust": os.path.join("examples", "rust", "graph.json"),
+          "scratches": os.path.join("examples", "scratches", "graph.json")}
 
 
 def hoisted_values(folder):
@@ -54,53 +43,61 @@ def hoisted_values(folder):
             for fn in layout["functions"] if "hoisted" in fn}
 
 
-def measure_workloads(tools, names, reps, opts):
-    results = {}
-    for name in names:
-        graph, scene, _ = superinstructions.WORKLOADS[name]
-        samples, hits, folders = common.per_hit_samples(tools, name, graph, scene, CONFIGS,
-                                                        reps, opts)
-        row = {"scene": os.path.relpath(scene, common.ROOT), "hits": hits,
-               "hoisted": hoisted_values(folders["shape"])}
-        row.update(summarize(samples))
-        results[name] = row
-        common.log("%s: ms per 1M hits min %s; median ratios to inline %s, ratios of minima %s"
-                   % (name, {k: round(v, 2) for k, v in row["minMsPerMillionHits"].items()},
-                      {k: round(v, 3) for k, v in row["medianRatiosToInline"].items()},
-                      {k: round(v, 3) for k, v in row["minRatiosToInline"].items()}))
-    return results
+def measure_texture(tools, name, rounds, grid):
+    graph = os.path.join(common.ROOT, GRAPHS[name])
+    folders = []
+    for cfg, mode, extra in CONFIGS:
+        folder = os.path.join(tools.work, "perhit-%s-%s" % (name, cfg))
+        common.texcc(tools, graph, folder, mode, extra)
+        folders.append(folder)
+    tool = os.path.join(tools.build, "bin", "texcc-eval")
+    cmd = [tool] + folders + ["--time", str(rounds), "--grid", str(grid)]
+    env = dict(os.environ, POCL_MAX_PTHREAD_COUNT="1")
+    r = common.subprocess.run(cmd, stdout=common.subprocess.PIPE, stderr=common.subprocess.PIPE,
+                              text=True, env=env)
+    if r.returncode != 0:
+        raise common.BenchError("%s failed: %s" % (" ".join(cmd), r.stderr[-1000:]))
+    out = json.loads(r.stdout)
+    row = {"graph": GRAPHS[name], "device": out["device"], "texturedHits": out["texturedHits"],
+           "hoisted": hoisted_values(folders[CONFIGS.index(("shape", "shape", []))]),
+           "command": " ".join(os.path.relpath(c, tools.work) if c.startswith(tools.work) else c
+                               for c in cmd),
+           "configs": {}}
+    for (cfg, _, extra), f in zip(CONFIGS, out["folders"]):
+        row["configs"][cfg] = {"texccOptions": extra, "nsPerHit": f["nsPerHit"],
+                               "medianNsPerHit": f["medianNsPerHit"],
+                               "minNsPerHit": f["minNsPerHit"],
+                               "medianRatioToInline": f["medianRatioToFirst"]}
+    common.log("%s: ns per textured hit (median) %s; median ratios to inline %s" % (
+        name, {c: round(v["medianNsPerHit"], 1) for c, v in row["configs"].items()},
+        {c: round(v["medianRatioToInline"], 3) for c, v in row["configs"].items()}))
+    return row
 
 
 def measure(tools, quick):
-    """bench/run's figure: both textures, 1 spp, one PoCL thread; 128x128 and 3 repetitions
-    quick, 256x256 and 9 full (at 128x128 a frame's texture work is about 1.5 ms, and seven
-    repetitions on the shared machine varied by 15% or more)."""
-    reps, size = (3, "128x128") if quick else (9, "256x256")
-    opts = ["--size", size, "--spp", "1"]
-    workloads = common.with_one_pocl_thread(lambda: measure_workloads(tools, WORKLOADS, reps, opts))
-    return {"reps": reps, "size": size, "spp": 1, "poclMaxPthreadCount": "1",
-            "workloads": workloads}
+    """bench/run's figure: both textures, one PoCL thread; 7 rounds over 1024 hits quick, 21
+    rounds over 4096 full."""
+    rounds, grid = (7, 1024) if quick else (21, 4096)
+    return {"rounds": rounds, "grid": grid, "poclMaxPthreadCount": "1",
+            "textures": {name: measure_texture(tools, name, rounds, grid) for name in GRAPHS}}
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
     ap.add_argument("--work", default=None)
-    ap.add_argument("--reps", type=int, default=9)
-    ap.add_argument("--size", default="256x256")
-    ap.add_argument("--spp", default="1")
-    ap.add_argument("--only", default=",".join(WORKLOADS))
+    ap.add_argument("--rounds", type=int, default=21)
+    ap.add_argument("--grid", type=int, default=4096)
+    ap.add_argument("--only", default=",".join(GRAPHS))
     ap.add_argument("--out", default=os.path.join(common.RESULTS, "per_hit.json"))
     args = ap.parse_args()
     work = args.work or os.path.join(args.build, "bench-per-hit")
     os.makedirs(work, exist_ok=True)
     tools = common.Tools(args.build, work)
-    opts = ["--size", args.size, "--spp", args.spp]
-    names = args.only.split(",")
-    data = {"machine": common.machine(), "git": common.git_head(), "reps": args.reps,
-            "size": args.size, "spp": int(args.spp), "poclMaxPthreadCount": "1",
-            "workloads": common.with_one_pocl_thread(
-                lambda: measure_workloads(tools, names, args.reps, opts))}
+    data = {"machine": common.machine(), "git": common.git_head(), "rounds": args.rounds,
+            "grid": args.grid, "poclMaxPthreadCount": "1",
+            "textures": {name: measure_texture(tools, name, args.rounds, args.grid)
+                         for name in args.only.split(",")}}
     os.makedirs(os.path.dirname(args.out), exist_ok=True)
     with open(args.out, "w") as f:
         json.dump(data, f, indent=1, sort_keys=True)

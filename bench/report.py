@@ -385,29 +385,32 @@ def shape_verdict(d):
 
 def per_hit_section(d):
     title = "## 2e. Per-hit texture cost of every mode, shape's hoisting on and off"
-    if not d:
+    if not d or "textures" not in d:
         return [title, "", "Not measured yet.", ""]
-    names = ("interp", "inline", "wavefront", "shape", "shape-unhoisted")
+    names = ("inline", "interp", "wavefront", "shape", "shape-unhoisted")
     lines = [title, "",
-             "`bench/per_hit.py`: rust and scratches on the atrium, %s, %d spp, PoCL on one "
-             "thread; %d repetitions, the five configurations in rotating order in each. "
-             "Texture-kernel device time (shape: `texcc_uniforms` included) per million "
-             "texture-stage work-items, median (minimum), and the median of the per-repetition "
-             "ratios to inline. `shape-unhoisted` is `texcc --mode=shape --no-hoist`: every "
-             "declaration computed per hit (docs/frontend.md, Hoisting)."
-             % (d["size"], d["spp"], d["reps"]), "",
+             "`bench/per_hit.py`: one `texcc-eval --time %d --grid %d` process per texture "
+             "builds every configuration's kernel and runs them all over the same random hits, "
+             "%d rounds, every configuration once per round in a rotating order; PoCL on one "
+             "thread. Texture-kernel device time per textured hit (OpenCL profiling), median "
+             "(minimum) in ns, and the median of the per-round ratios to inline (one process, "
+             "so the machine's drifting load cancels). `shape` runs `texcc_uniforms` once "
+             "before the rounds, as the renderer runs it once per upload; `shape-unhoisted` is "
+             "`texcc --mode=shape --no-hoist` (docs/frontend.md, Hoisting)."
+             % (d["rounds"], d["grid"], d["rounds"]), "",
              "| texture | hoisted | " + " | ".join(names) + " | " +
              " | ".join("%s / inline" % n for n in names if n != "inline") + " |",
              "|---|---|" + "---|" * (2 * len(names) - 1)]
-    for tex, r in d["workloads"].items():
-        med, mn, rat = (r["medianMsPerMillionHits"], r["minMsPerMillionHits"],
-                        r["medianRatiosToInline"])
+    for tex, r in d["textures"].items():
+        c = r["configs"]
         hoisted = "; ".join("%s: %s" % (fn, ", ".join(v)) for fn, v in r["hoisted"].items())
         lines.append("| %s | %s | %s | %s |" % (
             tex, hoisted or "none",
-            " | ".join("%s (%s)" % (fmt(med[n]), fmt(mn[n])) for n in names),
-            " | ".join("**%.3fx**" % rat[n] for n in names if n != "inline")))
-    far = [t for t, r in d["workloads"].items() if r["medianRatiosToInline"]["shape"] > 1.05]
+            " | ".join("%s (%s)" % (fmt(c[n]["medianNsPerHit"]), fmt(c[n]["minNsPerHit"]))
+                       for n in names),
+            " | ".join("**%.3fx**" % c[n]["medianRatioToInline"] for n in names if n != "inline")))
+    far = [t for t, r in d["textures"].items()
+           if r["configs"]["shape"]["medianRatioToInline"] > 1.05]
     lines += ["", "Issue 9's target, shape within 1.05x of inline on PoCL (median ratio): %s." % (
         "met on both textures" if not far else "missed on %s" % ", ".join(far)), ""]
     return lines

@@ -6,11 +6,15 @@
 // OUTDIR/proctex.cpp with g++ (-O1 -shared) and calls texcc_host_evaluate through dlopen.
 // Images bound in layout.json are replaced by small synthetic ones (deterministic, the same in
 // both paths), so that no image loader is needed.
+// With --time R and one or more folders of one graph (modes, options), it prints instead the
+// texture kernels' device time per textured hit of each, over R rounds in one process
+// (timeOpenCL): the per-hit figure of bench/per_hit.py that the machine's load does not swamp.
 #include "texcc_abi.h"
 
 #include <CL/opencl.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -19,6 +23,7 @@
 #include <dlfcn.h>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -29,7 +34,9 @@ using Json = nlohmann::json;
 namespace {
 
 struct Options {
-  std::string OutDir;
+  std::string OutDir;                // the first of OutDirs
+  std::vector<std::string> OutDirs;  // several only with --time
+  unsigned TimeReps = 0;             // --time R
   unsigned Grid = 16;
   uint64_t Seed = 1;
   bool Host = false;
@@ -174,71 +181,166 @@ template <class T> std::vector<T> nonEmpty(std::vector<T> V) {
   return V;
 }
 
-std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Options &Opts) {
+cl::Device firstDevice() {
   std::vector<cl::Platform> Platforms;
   cl::Platform::get(&Platforms);
-  std::vector<cl::Device> Devices;
   for (cl::Platform &P : Platforms) {
     std::vector<cl::Device> D;
     P.getDevices(CL_DEVICE_TYPE_ALL, &D);
-    Devices.insert(Devices.end(), D.begin(), D.end());
+    if (!D.empty())
+      return D.front();
   }
-  if (Devices.empty())
-    die("no OpenCL device found");
-  cl::Device Dev = Devices.front();
+  die("no OpenCL device found");
+}
+
+/// One texcc output folder on the device: its program built, its buffers (the inputs shared by
+/// every folder of one graph), its kernels with their arguments set, texcc_uniforms run.
+struct DeviceRun {
+  DeviceRun(const cl::Context &Ctx, const cl::Device &Dev, cl::CommandQueue &Q,
+            const std::string &OutDir, const LayoutInfo &Info, const Inputs &In)
+      : Info(Info), NumHits(In.Hits.size()) {
+    cl::Program Prog(Ctx, readFile(OutDir + "/proctex.cl"));
+    try {
+      Prog.build({Dev}, "-cl-std=CL1.2");
+    } catch (const cl::Error &) {
+      die("building " + OutDir + "/proctex.cl on '" + Dev.getInfo<CL_DEVICE_NAME>() +
+          "' failed:\n" + Prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(Dev));
+    }
+    std::string Args = readFile(OutDir + "/args.bin");
+    std::vector<cl_uint> Words((Args.size() + 3) / 4 + 1, 0);
+    std::memcpy(Words.data(), Args.data(), Args.size());
+    auto buffer = [&](auto Vec, cl_mem_flags Flags) {
+      auto V = nonEmpty(Vec);
+      using T = typename decltype(V)::value_type;
+      return cl::Buffer(Ctx, Flags | CL_MEM_COPY_HOST_PTR, V.size() * sizeof(T), V.data());
+    };
+    cl::Buffer Hits = buffer(In.Hits, CL_MEM_READ_ONLY);
+    cl::Buffer HitMaterial = buffer(In.HitMaterial, CL_MEM_READ_ONLY);
+    cl::Buffer FakeStack = buffer(Words, CL_MEM_READ_WRITE); // texcc_uniforms writes into it
+    cl::Buffer Settings = buffer(std::vector<TexccSettings>{In.Settings}, CL_MEM_READ_ONLY);
+    cl::Buffer Texels = buffer(In.Texels, CL_MEM_READ_ONLY);
+    cl::Buffer Images = buffer(In.Images, CL_MEM_READ_ONLY);
+    Outputs = buffer(std::vector<float>(NumHits * Info.MaxOutputs * 4, 0.0f), CL_MEM_READ_WRITE);
+    cl::Buffer Scratch =
+        buffer(std::vector<cl_float4>(NumHits * Info.ScratchPerHit), CL_MEM_READ_WRITE);
+    if (!Info.Uniforms.empty()) {
+      // Shape mode's hoisted values, computed into fakeStack once, as the runtime does.
+      cl::Kernel U(Prog, Info.Uniforms.c_str());
+      U.setArg(0, FakeStack);
+      U.setArg(1, static_cast<cl_int>(Info.NumMaterials));
+      Q.enqueueNDRangeKernel(U, cl::NullRange, cl::NDRange(1), cl::NullRange);
+    }
+    std::vector<std::string> Names = Info.Launches;
+    Names.push_back(Info.Entry);
+    for (const std::string &Name : Names) {
+      cl::Kernel K(Prog, Name.c_str());
+      K.setArg(0, Hits);
+      K.setArg(1, HitMaterial);
+      K.setArg(2, static_cast<cl_int>(NumHits));
+      K.setArg(3, FakeStack);
+      K.setArg(4, Settings);
+      K.setArg(5, Texels);
+      K.setArg(6, Images);
+      K.setArg(7, Outputs);
+      K.setArg(8, Scratch);
+      Kernels.push_back(K);
+    }
+    // A kernel does not retain its buffer arguments: the run owns them.
+    Buffers = {Hits, HitMaterial, FakeStack, Settings, Texels, Images, Scratch};
+  }
+
+  /// Enqueues every texture kernel once over all hits; their events go to Events.
+  void enqueue(cl::CommandQueue &Q, std::vector<cl::Event> *Events = nullptr) {
+    for (cl::Kernel &K : Kernels) {
+      if (!NumHits)
+        continue;
+      cl::Event E;
+      Q.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(NumHits), cl::NullRange, nullptr, &E);
+      if (Events)
+        Events->push_back(E);
+    }
+  }
+
+  std::vector<float> read(cl::CommandQueue &Q) {
+    std::vector<float> Out(NumHits * Info.MaxOutputs * 4, 0.0f);
+    Q.enqueueReadBuffer(Outputs, CL_TRUE, 0, Out.size() * sizeof(float), Out.data());
+    return Out;
+  }
+
+  LayoutInfo Info;
+  size_t NumHits;
+  cl::Buffer Outputs;
+  std::vector<cl::Buffer> Buffers;
+  std::vector<cl::Kernel> Kernels;
+};
+
+std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Options &Opts) {
+  cl::Device Dev = firstDevice();
   cl::Context Ctx(Dev);
-  cl::Program Prog(Ctx, readFile(Opts.OutDir + "/proctex.cl"));
-  try {
-    Prog.build({Dev}, "-cl-std=CL1.2");
-  } catch (const cl::Error &) {
-    die("building proctex.cl on '" + Dev.getInfo<CL_DEVICE_NAME>() +
-        "' failed:\n" + Prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(Dev));
-  }
   cl::CommandQueue Q(Ctx, Dev);
-  const size_t NumHits = In.Hits.size();
-  std::string Args = readFile(Opts.OutDir + "/args.bin");
-  std::vector<cl_uint> Words((Args.size() + 3) / 4 + 1, 0);
-  std::memcpy(Words.data(), Args.data(), Args.size());
-  auto buffer = [&](auto Vec, cl_mem_flags Flags) {
-    auto V = nonEmpty(Vec);
-    using T = typename decltype(V)::value_type;
-    return cl::Buffer(Ctx, Flags | CL_MEM_COPY_HOST_PTR, V.size() * sizeof(T), V.data());
-  };
-  cl::Buffer Hits = buffer(In.Hits, CL_MEM_READ_ONLY);
-  cl::Buffer HitMaterial = buffer(In.HitMaterial, CL_MEM_READ_ONLY);
-  cl::Buffer FakeStack = buffer(Words, CL_MEM_READ_WRITE); // texcc_uniforms writes into it
-  cl::Buffer Settings = buffer(std::vector<TexccSettings>{In.Settings}, CL_MEM_READ_ONLY);
-  cl::Buffer Texels = buffer(In.Texels, CL_MEM_READ_ONLY);
-  cl::Buffer Images = buffer(In.Images, CL_MEM_READ_ONLY);
-  std::vector<float> Out(NumHits * Info.MaxOutputs * 4, 0.0f);
-  cl::Buffer Outputs = buffer(Out, CL_MEM_READ_WRITE);
-  std::vector<cl_float4> Scratch(NumHits * Info.ScratchPerHit);
-  cl::Buffer ScratchBuf = buffer(Scratch, CL_MEM_READ_WRITE);
-  if (!Info.Uniforms.empty()) {
-    // Shape mode's hoisted values, computed into fakeStack once, as the runtime does.
-    cl::Kernel U(Prog, Info.Uniforms.c_str());
-    U.setArg(0, FakeStack);
-    U.setArg(1, static_cast<cl_int>(Info.NumMaterials));
-    Q.enqueueNDRangeKernel(U, cl::NullRange, cl::NDRange(1), cl::NullRange);
+  DeviceRun Run(Ctx, Dev, Q, Opts.OutDir, Info, In);
+  Run.enqueue(Q);
+  return Run.read(Q);
+}
+
+double median(std::vector<double> V) {
+  std::sort(V.begin(), V.end());
+  return V.empty() ? 0.0 : (V[(V.size() - 1) / 2] + V[V.size() / 2]) / 2;
+}
+
+/// --time R: the texture kernels of every folder (one graph, several modes or options) over the
+/// same hits, in one process on one queue: one untimed warm-up each (PoCL compiles the
+/// work-group function at the first launch), then R rounds that launch every folder once, in
+/// an order that rotates with the round. Device time from the profiling events, per hit;
+/// ratios to the first folder are taken within each round, so that the load of the machine,
+/// which drifts between rounds, cancels. Prints one JSON object.
+void timeOpenCL(const Options &Opts) {
+  cl::Device Dev = firstDevice();
+  cl::Context Ctx(Dev);
+  cl::CommandQueue Q(Ctx, Dev, CL_QUEUE_PROFILING_ENABLE);
+  const LayoutInfo First = readLayout(Opts.OutDirs.front());
+  const Inputs In = makeInputs(First, Opts);
+  std::vector<std::unique_ptr<DeviceRun>> Runs;
+  for (const std::string &Dir : Opts.OutDirs) {
+    LayoutInfo Info = readLayout(Dir);
+    if (Info.OutputsPerMaterial != First.OutputsPerMaterial || Info.NumImages != First.NumImages)
+      die(Dir + ": not the materials of " + Opts.OutDirs.front() + " (time folders of one graph)");
+    Runs.push_back(std::make_unique<DeviceRun>(Ctx, Dev, Q, Dir, Info, In));
+    Runs.back()->enqueue(Q);
+    Q.finish();
   }
-  std::vector<std::string> Kernels = Info.Launches;
-  Kernels.push_back(Info.Entry);
-  for (const std::string &Name : Kernels) {
-    cl::Kernel K(Prog, Name.c_str());
-    K.setArg(0, Hits);
-    K.setArg(1, HitMaterial);
-    K.setArg(2, static_cast<cl_int>(NumHits));
-    K.setArg(3, FakeStack);
-    K.setArg(4, Settings);
-    K.setArg(5, Texels);
-    K.setArg(6, Images);
-    K.setArg(7, Outputs);
-    K.setArg(8, ScratchBuf);
-    if (NumHits)
-      Q.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(NumHits), cl::NullRange);
+  size_t Textured = 0;
+  for (cl_int M : In.HitMaterial)
+    Textured += M >= 0;
+  const size_t N = Runs.size();
+  std::vector<std::vector<double>> NsPerHit(N), Ratios(N);
+  for (unsigned Round = 0; Round < Opts.TimeReps; ++Round) {
+    std::vector<double> This(N);
+    for (size_t J = 0; J < N; ++J) {
+      const size_t I = (J + Round) % N;
+      std::vector<cl::Event> Events;
+      Runs[I]->enqueue(Q, &Events);
+      Q.finish();
+      double Ns = 0;
+      for (cl::Event &E : Events)
+        Ns += double(E.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                     E.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+      This[I] = Ns / double(Textured ? Textured : 1);
+    }
+    for (size_t I = 0; I < N; ++I) {
+      NsPerHit[I].push_back(This[I]);
+      Ratios[I].push_back(This[I] / This[0]);
+    }
   }
-  Q.enqueueReadBuffer(Outputs, CL_TRUE, 0, Out.size() * sizeof(float), Out.data());
-  return Out;
+  Json Out = {{"device", Dev.getInfo<CL_DEVICE_NAME>()}, {"texturedHits", Textured},
+              {"rounds", Opts.TimeReps}, {"folders", Json::array()}};
+  for (size_t I = 0; I < N; ++I)
+    Out["folders"].push_back({{"folder", Opts.OutDirs[I]},
+                              {"nsPerHit", NsPerHit[I]},
+                              {"medianNsPerHit", median(NsPerHit[I])},
+                              {"minNsPerHit", *std::min_element(NsPerHit[I].begin(), NsPerHit[I].end())},
+                              {"medianRatioToFirst", median(Ratios[I])}});
+  std::cout << Out.dump(1) << "\n";
 }
 
 using HostEntry = int (*)(int, const TexccHitAttrs *, const TexccSettings *, const cl_float4 *,
@@ -288,14 +390,23 @@ Options parseArgs(int Argc, char **Argv) {
       Opts.Seed = std::stoull(value());
     else if (A == "--host")
       Opts.Host = true;
+    else if (A == "--time")
+      Opts.TimeReps = static_cast<unsigned>(std::stoul(value()));
     else if (A == "--help" || A == "-h") {
-      std::cout << "usage: texcc-eval OUTDIR [--grid N] [--seed S] [--host]\n";
+      std::cout << "usage: texcc-eval OUTDIR [--grid N] [--seed S] [--host]\n"
+                   "       texcc-eval OUTDIR [OUTDIR ...] --time R [--grid N] [--seed S]\n";
       std::exit(0);
     } else if (!A.empty() && A[0] == '-')
       die("unknown option '" + A + "'");
     else
-      Opts.OutDir = A;
+      Opts.OutDirs.push_back(A);
   }
+  if (!Opts.OutDirs.empty())
+    Opts.OutDir = Opts.OutDirs.front();
+  if (Opts.OutDirs.size() > 1 && !Opts.TimeReps)
+    die("several texcc output folders are for --time only");
+  if (Opts.TimeReps && Opts.Host)
+    die("--time measures the OpenCL kernels, not --host");
   if (Opts.OutDir.empty())
     die("no texcc output folder given (usage: texcc-eval OUTDIR [--grid N] [--seed S] "
         "[--host])");
@@ -307,6 +418,10 @@ Options parseArgs(int Argc, char **Argv) {
 int main(int Argc, char **Argv) {
   Options Opts = parseArgs(Argc, Argv);
   try {
+    if (Opts.TimeReps) {
+      timeOpenCL(Opts);
+      return 0;
+    }
     LayoutInfo Info = readLayout(Opts.OutDir);
     Inputs In = makeInputs(Info, Opts);
     std::vector<float> Out = Opts.Host ? runHost(Info, In, Opts) : runOpenCL(Info, In, Opts);
