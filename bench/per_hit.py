@@ -4,7 +4,8 @@ paper's Table 1 (examples/rust and examples/scratches), with shape mode's hoisti
 (docs/frontend.md, "Hoisting") on and off.
 
 Configurations: inline (first: the ratios are to it), interp (superinstructions on), wavefront,
-shape, and shape --no-hoist (every declaration of the user's functions computed per hit). One
+shape, shape --no-hoist (every declaration of the user's functions computed per hit), and
+shape+bake (every constant int argument baked, --bake: the "mode" arguments, as in section 3). One
 `texcc-eval --time R` process per texture builds every configuration's kernel and runs all of
 them over the same random hits (texcc-eval's grid: positions, normals, AO and UVs drawn as in
 the equivalence tests) in R rounds, each round launching every configuration once in an order
@@ -25,6 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
+import resources  # noqa: E402
 
 CONFIGS = (("inline", "inline", []),
            ("interp", "interp", []),
@@ -45,8 +47,12 @@ def hoisted_values(folder):
 
 def measure_texture(tools, name, rounds, grid):
     graph = os.path.join(common.ROOT, GRAPHS[name])
+    probe = os.path.join(tools.work, "perhit-%s-probe" % name)
+    common.texcc(tools, graph, probe, "shape")
+    bake = ["--bake=" + a for a in resources.int_arguments(os.path.join(probe, "layout.json"))]
+    configs = CONFIGS + (("shape+bake", "shape", bake),)
     folders = []
-    for cfg, mode, extra in CONFIGS:
+    for cfg, mode, extra in configs:
         folder = os.path.join(tools.work, "perhit-%s-%s" % (name, cfg))
         common.texcc(tools, graph, folder, mode, extra)
         folders.append(folder)
@@ -63,7 +69,7 @@ def measure_texture(tools, name, rounds, grid):
            "command": " ".join(os.path.relpath(c, tools.work) if c.startswith(tools.work) else c
                                for c in cmd),
            "configs": {}}
-    for (cfg, _, extra), f in zip(CONFIGS, out["folders"]):
+    for (cfg, _, extra), f in zip(configs, out["folders"]):
         row["configs"][cfg] = {"texccOptions": extra, "nsPerHit": f["nsPerHit"],
                                "medianNsPerHit": f["medianNsPerHit"],
                                "minNsPerHit": f["minNsPerHit"],
@@ -75,9 +81,9 @@ def measure_texture(tools, name, rounds, grid):
 
 
 def measure(tools, quick):
-    """bench/run's figure: both textures, one PoCL thread; 7 rounds over 1024 hits quick, 21
-    rounds over 4096 full."""
-    rounds, grid = (7, 1024) if quick else (21, 4096)
+    """bench/run's figure: both textures, one PoCL thread; 21 rounds over 1024 hits quick, 101
+    rounds over 4096 full (a round of all five configurations takes about 0.1 s)."""
+    rounds, grid = (21, 1024) if quick else (101, 4096)
     return {"rounds": rounds, "grid": grid, "poclMaxPthreadCount": "1",
             "textures": {name: measure_texture(tools, name, rounds, grid) for name in GRAPHS}}
 
@@ -86,7 +92,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
     ap.add_argument("--work", default=None)
-    ap.add_argument("--rounds", type=int, default=21)
+    ap.add_argument("--rounds", type=int, default=101)
     ap.add_argument("--grid", type=int, default=4096)
     ap.add_argument("--only", default=",".join(GRAPHS))
     ap.add_argument("--out", default=os.path.join(common.RESULTS, "per_hit.json"))

@@ -387,7 +387,7 @@ def per_hit_section(d):
     title = "## 2e. Per-hit texture cost of every mode, shape's hoisting on and off"
     if not d or "textures" not in d:
         return [title, "", "Not measured yet.", ""]
-    names = ("inline", "interp", "wavefront", "shape", "shape-unhoisted")
+    names = ("inline", "interp", "wavefront", "shape", "shape-unhoisted", "shape+bake")
     lines = [title, "",
              "`bench/per_hit.py`: one `texcc-eval --time %d --grid %d` process per texture "
              "builds every configuration's kernel and runs them all over the same random hits, "
@@ -396,7 +396,9 @@ def per_hit_section(d):
              "(minimum) in ns, and the median of the per-round ratios to inline (one process, "
              "so the machine's drifting load cancels). `shape` runs `texcc_uniforms` once "
              "before the rounds, as the renderer runs it once per upload; `shape-unhoisted` is "
-             "`texcc --mode=shape --no-hoist` (docs/frontend.md, Hoisting)."
+             "`texcc --mode=shape --no-hoist` (docs/frontend.md, Hoisting); `shape+bake` bakes "
+             "every constant int argument (`--bake`, listed below the table), as section 3 "
+             "does."
              % (d["rounds"], d["grid"], d["rounds"]), "",
              "| texture | hoisted | " + " | ".join(names) + " | " +
              " | ".join("%s / inline" % n for n in names if n != "inline") + " |",
@@ -406,9 +408,14 @@ def per_hit_section(d):
         hoisted = "; ".join("%s: %s" % (fn, ", ".join(v)) for fn, v in r["hoisted"].items())
         lines.append("| %s | %s | %s | %s |" % (
             tex, hoisted or "none",
-            " | ".join("%s (%s)" % (fmt(c[n]["medianNsPerHit"]), fmt(c[n]["minNsPerHit"]))
+            " | ".join("%.0f (%.0f)" % (c[n]["medianNsPerHit"], c[n]["minNsPerHit"])
                        for n in names),
             " | ".join("**%.3fx**" % c[n]["medianRatioToInline"] for n in names if n != "inline")))
+    lines.append("")
+    for tex, r in d["textures"].items():
+        baked = [o.split("=", 1)[1] for o in r["configs"]["shape+bake"]["texccOptions"]]
+        lines.append("- %s, shape+bake: %s." % (tex, ", ".join("`%s`" % b for b in baked)
+                                                 or "no int argument"))
     far = [t for t, r in d["textures"].items()
            if r["configs"]["shape"]["medianRatioToInline"] > 1.05]
     lines += ["", "Issue 9's target, shape within 1.05x of inline on PoCL (median ratio): %s." % (
