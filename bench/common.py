@@ -168,12 +168,14 @@ def git_head():
     return head + ("+dirty" if dirty else "")
 
 
-def save(name, data):
-    os.makedirs(RESULTS, exist_ok=True)
-    path = os.path.join(RESULTS, name + ".json")
+def save(name, data, path=None):
+    """Writes data to path, by default bench/results/<name>.json; returns the path."""
+    path = path or os.path.join(RESULTS, name + ".json")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
         json.dump(data, f, indent=1, sort_keys=True)
         f.write("\n")
+    log("wrote " + path)
     return path
 
 

@@ -104,11 +104,7 @@ def main():
             "grid": args.grid, "poclMaxPthreadCount": "1",
             "textures": {name: measure_texture(tools, name, args.rounds, args.grid)
                          for name in args.only.split(",")}}
-    os.makedirs(os.path.dirname(args.out), exist_ok=True)
-    with open(args.out, "w") as f:
-        json.dump(data, f, indent=1, sort_keys=True)
-        f.write("\n")
-    common.log("wrote " + args.out)
+    common.save(None, data, args.out)
 
 
 if __name__ == "__main__":

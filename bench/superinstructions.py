@@ -135,11 +135,7 @@ def main():
             "size": args.size, "spp": int(args.spp),
             "poclMaxPthreadCount": os.environ.get("POCL_MAX_PTHREAD_COUNT"),
             "workloads": measure_workloads(tools, names, args.reps, opts)}
-    os.makedirs(os.path.dirname(args.out), exist_ok=True)
-    with open(args.out, "w") as f:
-        json.dump(data, f, indent=1, sort_keys=True)
-        f.write("\n")
-    common.log("wrote " + args.out)
+    common.save(None, data, args.out)
 
 
 if __name__ == "__main__":
