@@ -182,6 +182,8 @@ Layout loadLayout(const std::string &OutDir) {
     if (K.contains("shapes"))
       L.NumShapes = unsigned(K["shapes"].size());
     L.ShapeHash = K.value("shapeHash", "");
+    if (K.contains("uniforms") && !K["uniforms"].is_string())
+      R.fail("/kernel/uniforms", "the hoisted-value kernel's name must be a string");
     L.Uniforms = K.value("uniforms", "");
     if (L.Mode == "shape" && L.InterpFallback.empty())
       R.fail("/kernel/interpFallback", "a shape-mode layout names its interp fallback kernel");

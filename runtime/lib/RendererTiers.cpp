@@ -27,7 +27,7 @@ cl::Program Renderer::buildForeground(const std::string &Path, const std::string
   std::vector<std::string> Names = textureKernelNames();
   if (Tier == "shape" && !Lay.Uniforms.empty())
     Names.push_back(Lay.Uniforms);
-  warmUpKernels(*Cl, P, Names);
+  warmUpKernels(*Cl, P, Names, Path);
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);

@@ -45,12 +45,19 @@ namespace {
 
 } // namespace
 
-void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels) {
+void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
+                   const std::string &File) {
   // The renderer's work-group size: PoCL compiles per local size.
   cl::Buffer Dummy(Cl.context(), CL_MEM_READ_WRITE, sizeof(TexccHitAttrs) * 4);
   cl::CommandQueue Queue(Cl.context(), Cl.device());
   for (const std::string &Name : Kernels) {
-    cl::Kernel K(P, Name.c_str());
+    cl::Kernel K;
+    try {
+      K = cl::Kernel(P, Name.c_str());
+    } catch (const cl::Error &E) {
+      throw Error(File + ": no kernel '" + Name + "' in the texture program (" +
+                  clErrorName(E.err()) + ")");
+    }
     // Texture kernels take 9 arguments (numHits third); texcc_uniforms takes 2 (fakeStack,
     // numMaterials). A count of 0 makes every work-item return at once.
     const cl_uint Args = K.getInfo<CL_KERNEL_NUM_ARGS>();
@@ -69,7 +76,7 @@ namespace {
 cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Source,
                          const std::vector<std::string> &Kernels, const std::string &Options) {
   cl::Program P = Cl.buildProgram(Path, Source, Options, "", /*Background=*/true);
-  warmUpKernels(Cl, P, Kernels);
+  warmUpKernels(Cl, P, Kernels, Path);
   return P;
 }
 

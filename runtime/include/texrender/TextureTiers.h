@@ -74,7 +74,9 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
 
 /// Launches each of Kernels of P once over one work-group whose items all return at once
 /// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here.
-void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels);
+/// A kernel the program lacks: Error "File: no kernel 'NAME' in the texture program".
+void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
+                   const std::string &File);
 
 /// A job on its own std::thread. The thread owns every OpenCL object it creates; only the
 /// programs cross over (kernels are created from them on the main thread, so no cl_kernel is

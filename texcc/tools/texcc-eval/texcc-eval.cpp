@@ -223,9 +223,16 @@ struct DeviceRun {
     Outputs = buffer(std::vector<float>(NumHits * Info.MaxOutputs * 4, 0.0f), CL_MEM_READ_WRITE);
     cl::Buffer Scratch =
         buffer(std::vector<cl_float4>(NumHits * Info.ScratchPerHit), CL_MEM_READ_WRITE);
+    auto kernel = [&](const std::string &Name) {
+      try {
+        return cl::Kernel(Prog, Name.c_str());
+      } catch (const cl::Error &) {
+        die(OutDir + "/proctex.cl: no kernel '" + Name + "' (layout.json names it)");
+      }
+    };
     if (!Info.Uniforms.empty()) {
       // Shape mode's hoisted values, computed into fakeStack once, as the runtime does.
-      cl::Kernel U(Prog, Info.Uniforms.c_str());
+      cl::Kernel U = kernel(Info.Uniforms);
       U.setArg(0, FakeStack);
       U.setArg(1, static_cast<cl_int>(Info.NumMaterials));
       Q.enqueueNDRangeKernel(U, cl::NullRange, cl::NDRange(1), cl::NullRange);
@@ -233,7 +240,7 @@ struct DeviceRun {
     std::vector<std::string> Names = Info.Launches;
     Names.push_back(Info.Entry);
     for (const std::string &Name : Names) {
-      cl::Kernel K(Prog, Name.c_str());
+      cl::Kernel K = kernel(Name);
       K.setArg(0, Hits);
       K.setArg(1, HitMaterial);
       K.setArg(2, static_cast<cl_int>(NumHits));
