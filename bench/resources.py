@@ -98,7 +98,8 @@ def entries_of(src):
     """The texture kernels of a generated file: not shape mode's texcc_uniforms, which one
     work-item runs once per upload of args.bin (its registers do not limit the per-hit work)."""
     with open(src) as f:
-        return set(re.findall(r"__kernel\s+void\s+(\w+)", f.read())) - {"texcc_uniforms"}
+        return set(re.findall(r"__kernel\s+(?:__attribute__\(\(.*?\)\)\s+)?void\s+(\w+)",
+                              f.read())) - {"texcc_uniforms"}
 
 
 def int_arguments(layout_path):

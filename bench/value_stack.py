@@ -1,12 +1,18 @@
-"""Figure 3b: where interp's value stack lives on a GPU. texcc's interp kernel keeps it in a
-private array `float4 stack[TEXCC_STACK_SLOTS]` indexed by slot numbers read from args.bin; a
-GPU cannot index registers by a per-lane value, so the array goes to scratch memory. This
-figure rewrites the generated kernel of rust and scratches two ways that keep the slots in
-registers, and compiles all three for gfx90a (bench/resources.py's command): "registers",
+"""Figure 3b: where interp's value stack lives on a GPU. With --local-stack-limit=0 texcc's
+interp kernel keeps it in a private array `float4 stack[TEXCC_STACK_SLOTS]` indexed by slot
+numbers read from args.bin ("array"); a GPU cannot index registers by a per-lane value, so the
+array goes to scratch memory. By default (at most 4 slots) it is a __local array of the
+work-group, `__local float4 stack[TEXCC_STACK_SLOTS * 64]` ("local", docs/modes.md). This
+figure also rewrites the private kernel of rust and scratches two ways that keep the slots in
+registers, and compiles all four for gfx90a (bench/resources.py's command): "registers",
 one float4 variable per slot, read through a chain of selects and written through an if chain;
 "soa", four float arrays (x, y, z, w), which LLVM's AMDGPU alloca promotion turns into
 registers. The rewrites are textual, on the kernel texcc writes today (they fail loudly when
-its text changes); they are measurements, not a texcc mode."""
+its text changes); they are measurements, not a texcc mode. Occupancy: the compiler's remark,
+and the bound that local memory puts on it, computed (not measured on a GPU): gfx90a has 64 KiB
+of LDS per compute unit and 4 SIMDs, and a work-group of 64 is one wave, so at most
+floor(floor(65536 / LDS) / 4) waves per SIMD."""
+import json
 import os
 
 import common
@@ -68,20 +74,35 @@ def measure(tools, quick):
     rows = []
     for tex, graph in resources.GRAPHS.items():
         folder = os.path.join(tools.work, "vs-%s" % tex)
-        common.texcc(tools, os.path.join(common.ROOT, graph), folder, "interp")
+        common.texcc(tools, os.path.join(common.ROOT, graph), folder, "interp",
+                     ["--local-stack-limit=0"])
+        local = os.path.join(tools.work, "vs-%s-local" % tex)
+        common.texcc(tools, os.path.join(common.ROOT, graph), local, "interp")
         src = os.path.join(folder, "proctex.cl")
         with open(src) as f:
             text = f.read()
         slots = int(text.split("#define TEXCC_STACK_SLOTS ")[1].split()[0])
-        for variant, edits in (("array", None), ("registers", registers), ("soa", soa)):
+        with open(os.path.join(local, "layout.json")) as f:
+            if json.load(f)["valueStack"] != "local":
+                raise common.BenchError("value_stack: %s has %d slots, over texcc's default "
+                                        "--local-stack-limit" % (tex, slots))
+        for variant, edits in (("array", None), ("local", None), ("registers", registers),
+                               ("soa", soa)):
             path = src if edits is None else os.path.join(folder, "proctex-%s.cl" % variant)
+            if variant == "local":
+                path = os.path.join(local, "proctex.cl")
             if edits is not None:
                 with open(path, "w") as f:
                     f.write(rewrite(text, edits(slots), "%s/%s" % (tex, variant)))
             k = resources.amdgpu(path, folder, {"texcc_proctex"})["kernels"]["texcc_proctex"]
-            common.log("value stack %s %s: %s VGPRs, %s B scratch" % (
-                tex, variant, k.get("VGPRs"), k.get("ScratchSize")))
+            lds = k.get("LDS Size", 0)
+            occupancy = k.get("Occupancy")
+            if lds:
+                occupancy = min(occupancy, (65536 // lds) // 4)
+            common.log("value stack %s %s: %s VGPRs, %s B scratch, %s B LDS" % (
+                tex, variant, k.get("VGPRs"), k.get("ScratchSize"), lds))
             rows.append({"texture": tex, "variant": variant, "stackSlots": slots,
                          "VGPRs": k.get("VGPRs"), "scratch": k.get("ScratchSize"),
-                         "occupancy": k.get("Occupancy")})
+                         "lds": lds, "occupancy": k.get("Occupancy"),
+                         "occupancyWithLds": occupancy})
     return {"rows": rows}

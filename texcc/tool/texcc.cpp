@@ -44,6 +44,12 @@ static cl::opt<unsigned> StackLimit(
     cl::desc("Private value-stack cap in float4 slots; beyond it the interpreter spills to "
              "global memory (default 32)"),
     cl::value_desc("N"), cl::init(32), cl::cat(TexccCategory));
+static cl::opt<unsigned> LocalStackLimit(
+    "local-stack-limit",
+    cl::desc("interp: a value stack of at most N float4 slots is a __local array of the "
+             "work-group (out of scratch on a GPU; N*1 KiB of local memory per 64 work-items), "
+             "a larger one a private array (default 4; 0: always private)"),
+    cl::value_desc("N"), cl::init(4), cl::cat(TexccCategory));
 static cl::opt<bool> NoHoist(
     "no-hoist",
     cl::desc("shape: compute every declaration of the user's functions per hit, none once per "
@@ -208,6 +214,7 @@ static int run() {
 
   gr::CompileOptions CompileOpts;
   CompileOpts.StackLimit = StackLimit;
+  CompileOpts.LocalStackLimit = LocalStackLimit;
   // Superinstructions are cases of the interp kernel (shape mode's fallback included); the
   // other modes never read a program's opcodes.
   if ((*Mode == cg::Mode::Interp || *Mode == cg::Mode::Shape) && *Target == cg::Target::OpenCL &&

@@ -5,7 +5,9 @@ same grid of hits, and compares every mode with the host (compare.py, max abs di
 Shape mode must also agree bit for bit (--tol 0) with its interp fallback, proctex.interp.cl,
 which the tiered runtime swaps in while a new shape's kernel builds, and interp (with its
 superinstructions, the default) bit for bit with interp --no-superinstructions (one case per
-node); the line says how many instructions the superinstructions fused. Every mode after interp
+node); the line says how many instructions the superinstructions fused. An interp kernel whose
+value stack is a __local array (layout.json valueStack) must equal the same graph with a private
+one (--local-stack-limit=0) bit for bit, and a private one a local one. Every mode after interp
 must equal interp bit for bit too: every kernel has FP_CONTRACT OFF, so the modes differ only in
 how the same user code is called, never in its arithmetic.
 
@@ -124,6 +126,28 @@ def check_unfused(out, dump, graph, args, extra, lines):
                    "(superinstructions %d, fused pairs %d)" % (graph, table, fused), lines)
 
 
+def check_stack(out, dump, graph, args, extra, lines):
+    """interp (out) against the same graph with its value stack in the other kind of memory,
+    bit for bit: a __local array (layout.json valueStack "local") against a private one
+    (--local-stack-limit=0), and a private one against a local one (--local-stack-limit at its
+    slot count). True without a check when the stack spills to global memory."""
+    with open(os.path.join(out, "layout.json")) as f:
+        layout = json.load(f)
+    kind = layout.get("valueStack")
+    if kind not in ("local", "private"):
+        return True
+    other = "private" if kind == "local" else "local"
+    limit = 0 if kind == "local" else layout["stackSlots"]
+    alt = out + "-" + other
+    alt_dump = alt + ".txt"
+    if not (run([args.texcc, "--mode=interp", "--graph", graph, "-o", alt] + extra +
+                ["--local-stack-limit=%d" % limit], lines)
+            and run([args.eval, alt, "--grid", str(args.grid)], lines, alt_dump)):
+        return False
+    return compare(dump, alt_dump, 0.0, "%s interp (value stack %s) = interp "
+                   "--local-stack-limit=%d (%s)" % (graph, kind, limit, other), lines)
+
+
 def check_graph(g, graph, args, modes, extra):
     """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
     lines, failures = [], 0
@@ -144,6 +168,7 @@ def check_graph(g, graph, args, modes, extra):
             ok = check_fallback(out, dump, graph, args, lines)
         if ok and mode == "interp":
             ok = check_unfused(out, dump, graph, args, extra, lines)
+            ok = ok and check_stack(out, dump, graph, args, extra, lines)
             interp_dump = dump
         elif ok and interp_dump:
             ok = compare(interp_dump, dump, 0.0, "%s %s = interp" % (graph, mode), lines)

@@ -31,7 +31,7 @@ std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Si
   mergeIdenticalNodes(*CG, Opts.Log);
   assignFunctionIds(*CG, Sigs, Opts, Opts.Log);
   orderPrograms(*CG, Opts.Log);
-  allocateStackSlots(*CG, Opts.StackLimit, Opts.Log);
+  allocateStackSlots(*CG, Opts.StackLimit, Opts.Log, Opts.LocalStackLimit);
   computeWavefrontOrder(*CG, Opts.Log);
   layoutArguments(*CG, Opts.Log);
   selectSuperinstructions(*CG, Opts, Opts.Log);

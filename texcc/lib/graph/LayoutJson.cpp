@@ -141,6 +141,7 @@ std::string layoutJson(const CompiledGraph &CG) {
   J["stackSlots"] = CG.StackSlots;
   J["stackLimit"] = CG.StackLimit;
   J["spill"] = CG.Spill;
+  J["valueStack"] = CG.Spill ? "global" : CG.LocalStack ? "local" : "private";
   J["maxOutputs"] = CG.MaxOutputs;
   J["scratchFloat4PerHit"] = CG.Spill ? CG.StackSlots : 0;
   J["argsBin"] = {{"size", CG.ArgsBin.size()},

@@ -261,8 +261,11 @@ struct DeviceRun {
     for (cl::Kernel &K : Kernels) {
       if (!NumHits)
         continue;
+      // Work-groups of 64, over a multiple of 64 items, as texrender launches them (abi.md).
       cl::Event E;
-      Q.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(NumHits), cl::NullRange, nullptr, &E);
+      const size_t Global = (NumHits + WorkGroup - 1) / WorkGroup * WorkGroup;
+      Q.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(Global), cl::NDRange(WorkGroup),
+                             nullptr, &E);
       if (Events)
         Events->push_back(E);
     }
@@ -274,6 +277,7 @@ struct DeviceRun {
     return Out;
   }
 
+  static constexpr size_t WorkGroup = 64;
   LayoutInfo Info;
   size_t NumHits;
   cl::Buffer Outputs;
