@@ -168,6 +168,9 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   // (interp mode, shape mode's fallback) has a case for each: a rewiring onto any node is a
   // re-encoding with the ids pinned, never a new function.
   Opts.StackLimit = Lay.StackLimit;
+  // An interp kernel that hoists reads every hoisting node's values from its record: a
+  // rewiring of a parameter they come from needs a new kernel (texcc then hoists less).
+  Opts.InterpHoistedCalls = Lay.Mode == "interp" && !Lay.Uniforms.empty();
   KernelShapeHash = Lay.ShapeHash;
   Editor = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
   if (!Editor->init(Diags))

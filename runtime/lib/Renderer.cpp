@@ -129,7 +129,7 @@ void Renderer::uploadLayoutData() {
   const cl_mem_flags RO = CL_MEM_READ_ONLY;
   B["materials"] = Cl->allocateWith("materials", Data.Materials.data(), bytes(Data.Materials), RO);
   B["bsdfNodes"] = Cl->allocateWith("bsdfNodes", Data.BsdfNodes.data(), bytes(Data.BsdfNodes), RO);
-  // Read-write: a shape kernel's texcc_uniforms writes hoisted values into it.
+  // Read-write: texcc_uniforms (shape, interp) writes hoisted values into it.
   B["fakeStack"] = Cl->allocateWith("fakeStack", Lay.ArgsBin.data(), Lay.ArgsBin.size(),
                                     CL_MEM_READ_WRITE);
   UniformsDirty = true;

@@ -25,13 +25,19 @@ cl::Program Renderer::buildForeground(const std::string &Path, const std::string
   cl::Program P = Cl->buildProgram(Path, Source, programOptions());
   // PoCL's compile at the first launch is part of the build the frame waits for.
   std::vector<std::string> Names = textureKernelNames();
-  if (Tier == "shape" && !Lay.Uniforms.empty())
+  if (tierUsesUniforms(Tier))
     Names.push_back(Lay.Uniforms);
   warmUpKernels(*Cl, P, Names, Path);
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);
   return P;
+}
+
+bool Renderer::tierUsesUniforms(const std::string &Tier) const {
+  // The layout's own kernel (shape mode's shape tier, or an interp-mode kernel that hoists);
+  // shape mode's interp fallback never reads hoisted values.
+  return !Lay.Uniforms.empty() && !(Lay.Mode == "shape" && Tier == "interp");
 }
 
 std::vector<std::string> Renderer::textureKernelNames() const {
@@ -66,7 +72,7 @@ void Renderer::activate(const cl::Program &P, const std::string &Tier) {
   }
   UniformsKernel = cl::Kernel();
   UniformsDirty = true;
-  if (Tier == "shape" && !Lay.Uniforms.empty()) {
+  if (tierUsesUniforms(Tier)) {
     try {
       UniformsKernel = cl::Kernel(P, Lay.Uniforms.c_str());
     } catch (const cl::Error &E) {

@@ -52,8 +52,8 @@ static cl::opt<unsigned> LocalStackLimit(
     cl::value_desc("N"), cl::init(4), cl::cat(TexccCategory));
 static cl::opt<bool> NoHoist(
     "no-hoist",
-    cl::desc("shape: compute every declaration of the user's functions per hit, none once per "
-             "material (docs/frontend.md, Hoisting), for A/B measurement and debugging"),
+    cl::desc("shape, interp: compute every declaration of the user's functions per hit, none "
+             "once per material (docs/frontend.md, Hoisting), for A/B measurement and debugging"),
     cl::cat(TexccCategory));
 
 static cl::opt<bool> NoSuperinstructions(
@@ -196,10 +196,13 @@ static int run() {
   for (const gr::Node &N : G->Nodes)
     TextureNames.insert(N.Fn);
   fe::FrontendOptions FeOpts;
-  // Only shape code computes hoisted values once per material (elsewhere they would only take
-  // room in the parameter blocks).
+  // Shape code and the interp kernel compute hoisted values once per material (inline and
+  // wavefront code would only give them room in the parameter blocks; shape mode's interp
+  // fallback does not use them).
   const bool Shape = *Mode == cg::Mode::Shape && *Target == cg::Target::OpenCL;
-  if (Shape && !NoHoist)
+  const bool InterpHoists =
+      *Mode == cg::Mode::Interp && *Target == cg::Target::OpenCL && !NoHoist;
+  if ((Shape && !NoHoist) || InterpHoists)
     FeOpts.HoistableParams = constantParameters(*G);
   FeOpts.IncludeDirs.assign(IncludeDirs.begin(), IncludeDirs.end());
   FeOpts.Defines.assign(Defines.begin(), Defines.end());
@@ -237,6 +240,7 @@ static int run() {
   Opts.EvalMode = *Mode;
   Opts.Tgt = *Target;
   Opts.GraphPath = fs::absolute(fs::path(GraphPath.getValue())).lexically_normal().string();
+  Opts.InterpHoists = InterpHoists;
   Opts.UserCode = renderReachableUserCode(*FR, *CG, CG->liveFunctions(),
                                           Shape ? cg::hoistingFunctions(*CG) : std::set<std::string>{});
   // The interp kernel (interp mode, shape mode's fallback) calls the functions of dead nodes
@@ -247,7 +251,9 @@ static int run() {
     std::set<std::string> All;
     for (const auto &KV : CG->Signatures)
       All.insert(KV.first);
-    Opts.InterpUserCode = renderReachableUserCode(*FR, *CG, All);
+    Opts.InterpUserCode = renderReachableUserCode(
+        *FR, *CG, All,
+        InterpHoists ? cg::interpHoistingFunctions(*CG) : std::set<std::string>{});
   }
   std::string Error;
   if (!cg::writeOutputsAtomically(OutDir, cg::generateOutputs(*CG, Opts, !Dump.empty()), Error))

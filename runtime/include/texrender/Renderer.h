@@ -158,8 +158,9 @@ private:
   // and the superseded ones still running (joined, their results dropped).
   double Epoch = 0;                         // steadySeconds() at construction
   std::string ActiveTier;
-  // The shape tier's texcc_uniforms (Layout::Uniforms), and whether fakeStack changed (or the
-  // kernel did) since it last ran.
+  // The texcc_uniforms of the shape tier or of an interp kernel that hoists (Layout::Uniforms),
+  // and whether fakeStack changed (or the kernel did) since it last ran.
+  bool tierUsesUniforms(const std::string &Tier) const;
   cl::Kernel UniformsKernel;
   bool UniformsDirty = true;
   cl::Program ShapeProgram, InterpProgram;

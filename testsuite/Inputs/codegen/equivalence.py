@@ -7,7 +7,8 @@ which the tiered runtime swaps in while a new shape's kernel builds, and interp 
 superinstructions, the default) bit for bit with interp --no-superinstructions (one case per
 node); the line says how many instructions the superinstructions fused. An interp kernel whose
 value stack is a __local array (layout.json valueStack) must equal the same graph with a private
-one (--local-stack-limit=0) bit for bit, and a private one a local one. Every mode after interp
+one (--local-stack-limit=0) bit for bit, and a private one a local one; an interp kernel that
+hoists values (layout.json kernel.uniforms) interp --no-hoist. Every mode after interp
 must equal interp bit for bit too: every kernel has FP_CONTRACT OFF, so the modes differ only in
 how the same user code is called, never in its arithmetic.
 
@@ -148,6 +149,24 @@ def check_stack(out, dump, graph, args, extra, lines):
                    "--local-stack-limit=%d (%s)" % (graph, kind, limit, other), lines)
 
 
+def check_unhoisted(out, dump, graph, args, extra, lines):
+    """interp whose kernel hoists (layout.json kernel.uniforms) against interp --no-hoist, bit
+    for bit; true without a check when nothing is hoisted."""
+    with open(os.path.join(out, "layout.json")) as f:
+        layout = json.load(f)
+    if not layout["kernel"].get("uniforms"):
+        return True
+    hoisted = sum(len(fn["hoisted"]["values"]) for fn in layout["functions"] if "hoisted" in fn)
+    plain = out + "-unhoisted"
+    plain_dump = plain + ".txt"
+    if not (run([args.texcc, "--mode=interp", "--no-hoist", "--graph", graph, "-o", plain] +
+                extra, lines)
+            and run([args.eval, plain, "--grid", str(args.grid)], lines, plain_dump)):
+        return False
+    return compare(dump, plain_dump, 0.0, "%s interp = interp --no-hoist (hoisted values %d)"
+                   % (graph, hoisted), lines)
+
+
 def check_graph(g, graph, args, modes, extra):
     """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
     lines, failures = [], 0
@@ -169,6 +188,7 @@ def check_graph(g, graph, args, modes, extra):
         if ok and mode == "interp":
             ok = check_unfused(out, dump, graph, args, extra, lines)
             ok = ok and check_stack(out, dump, graph, args, extra, lines)
+            ok = ok and check_unhoisted(out, dump, graph, args, extra, lines)
             interp_dump = dump
         elif ok and interp_dump:
             ok = compare(interp_dump, dump, 0.0, "%s %s = interp" % (graph, mode), lines)

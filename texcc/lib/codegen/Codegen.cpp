@@ -179,7 +179,7 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
   else if (Opts.EvalMode == Mode::Shape)
     emitShape(OS, CG);
   else
-    emitInterp(OS, CG);
+    emitInterp(OS, CG, Opts.InterpHoists);
   if (Host)
     OS << "} // namespace texcc_cl\n";
   return OS.str();

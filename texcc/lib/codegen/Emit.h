@@ -89,7 +89,7 @@ void emitStraightLineMaterial(std::ostringstream &OS, const graph::CompiledGraph
                               const graph::CompiledMaterial &M, Target T);
 
 /// Mode-specific generators (the evaluation code and kernels after the user code).
-void emitInterp(std::ostringstream &OS, const graph::CompiledGraph &CG);
+void emitInterp(std::ostringstream &OS, const graph::CompiledGraph &CG, bool Hoists);
 void emitShape(std::ostringstream &OS, const graph::CompiledGraph &CG);
 /// `texcc_program(fakeStack, mat)`: the word offset of material mat's program (interp, shape).
 void emitProgramLocator(std::ostringstream &OS);

@@ -105,12 +105,25 @@ static void emitDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
 /// layout, and a function that only dead nodes name has no node to take them from): the graph
 /// library's, never recomputed here. A superinstruction's second call gets parameter Fed as the
 /// expression FedExpr instead.
-static std::string interpCall(const FunctionSignature &Sig, const std::string &Rec = "rec",
-                              int Fed = -1, const std::string &FedExpr = "") {
+static bool interpHoists(const FunctionSignature &Sig) {
+  return !Sig.Hoisted.empty() && !Sig.HoistedFrom.empty();
+}
+
+/// Word of hoisted value H in a record of Sig's function, relative to the record.
+static uint32_t hoistedWord(const FunctionSignature &Sig, size_t H) {
+  return (sourceWordsBytes(Sig.Params.size()) + hoistedOffsets(Sig).at(H)) / 4;
+}
+
+static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
+                              const std::string &Rec = "rec", int Fed = -1,
+                              const std::string &FedExpr = "") {
   uint32_t BlockSize = 0;
   const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
   const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
-  std::string S = Sig.RenamedName + "(texcc_ctx";
+  // With hoisting, the function without its hoisted declarations, their values from the
+  // record (texcc_uniforms computed them).
+  const bool Hoisted = Hoists && interpHoists(Sig);
+  std::string S = (Hoisted ? "texcc_hoisted_" : "") + Sig.RenamedName + "(texcc_ctx";
   for (size_t P = 0; P < Sig.Params.size(); ++P) {
     const ValueType &T = Sig.Params[P].Type;
     std::string At = Rec + " + " + std::to_string(SourceWords + Offsets[P] / 4) + "u";
@@ -129,6 +142,11 @@ static std::string interpCall(const FunctionSignature &Sig, const std::string &R
       S += "TEXCC_ARG_IN(" + Rec + ", " + std::to_string(P) + "u, " + At + ", " +
            std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
   }
+  if (Hoisted)
+    for (size_t H = 0; H < Sig.Hoisted.size(); ++H)
+      S += ",\n          " +
+           fakeStackRead(Sig.Hoisted[H].Type,
+                         Rec + " + " + std::to_string(hoistedWord(Sig, H)) + "u");
   return S + ")";
 }
 
@@ -137,7 +155,7 @@ static std::string interpCall(const FunctionSignature &Sig, const std::string &R
 /// is set exactly then), Second's record and result slot from the next instruction, which the
 /// loop then skips. First's value never touches the value stack.
 static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph &CG,
-                                     const Superinstruction &Sup) {
+                                     const Superinstruction &Sup, bool Hoists) {
   const FunctionSignature &F = CG.Signatures.at(Sup.First);
   const FunctionSignature &G = CG.Signatures.at(Sup.Second);
   const BaseType Fed = G.Params.at(Sup.Param).Type.Base;
@@ -147,19 +165,19 @@ static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph
   OS << "    case " << Sup.Opcode << "u: { /* superinstruction: " << F.Name << " -> " << G.Name
      << "." << G.Params[Sup.Param].Name << ", the next instruction; " << F.File
      << (G.File == F.File ? "" : ", " + G.File) << " */\n"
-     << "      const " << spelling(F.Return) << " texcc_first = " << interpCall(F) << ";\n"
+     << "      const " << spelling(F.Return) << " texcc_first = " << interpCall(F, Hoists) << ";\n"
      << "      skipNext = true;\n"
      << "      resultSlot = fakeStack[prog + 6u + 3u * i];\n"
      << "      const uint rec2 = fakeStack[prog + 7u + 3u * i] / 4u;\n"
      << "      r = "
-     << widenToFloat4(G.Return, interpCall(G, "rec2", static_cast<int>(Sup.Param), Value),
+     << widenToFloat4(G.Return, interpCall(G, Hoists, "rec2", static_cast<int>(Sup.Param), Value),
                       Target::OpenCL)
      << ";\n"
      << "      break;\n"
      << "    }\n";
 }
 
-static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
+static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoists) {
   if (CG.LocalStack) {
     // Out of scratch on a GPU (docs/modes.md): a __local array at kernel scope, which needs
     // the work-group size at compile time; the runtime launches every kernel in groups of 64.
@@ -202,11 +220,12 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
     const FunctionSignature &Sig = It->second;
     OS << "    case " << Id << "u: /* " << signatureComment(Sig) << ", " << Sig.File
        << (Live.count(Sig.Name) ? "" : "; only dead nodes name it") << " */\n"
-       << "      r = " << widenToFloat4(Sig.Return, interpCall(Sig), Target::OpenCL) << ";\n"
+       << "      r = " << widenToFloat4(Sig.Return, interpCall(Sig, Hoists), Target::OpenCL)
+       << ";\n"
        << "      break;\n";
   }
   for (const Superinstruction &Sup : CG.Superinstructions)
-    emitSuperinstructionCase(OS, CG, Sup);
+    emitSuperinstructionCase(OS, CG, Sup, Hoists);
   OS << "    default:\n"
         "      r = (float4)(0.0f);\n"
         "      break;\n"
@@ -219,7 +238,80 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG) {
         "}\n";
 }
 
-void emitInterp(std::ostringstream &OS, const CompiledGraph &CG) {
+/// texcc_uniforms for the interp kernel: one work-item walks every material's program and, for
+/// each instruction whose function hoists (its opcode, or a superinstruction whose first
+/// function it is; the second is the next instruction, with its own opcode), computes the
+/// hoisted values from the record's constants into the record, after the parameters. Driven by
+/// the programs in args.bin, so a live edit's re-encoding needs no new kernel.
+static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) {
+  OS << "/* Run once after every upload of args.bin, before texcc_proctex. numMaterials:\n"
+     << " * TEXCC_NUM_MATERIALS, or 0 to launch it without work (a warm-up). */\n"
+     << "__kernel void " << UniformsEntry
+     << "(__global uint *fakeStack, const int numMaterials) {\n"
+     << "  if (get_global_id(0) != 0)\n"
+     << "    return;\n"
+     << "  uint prog = 0u;\n"
+     << "  for (int m = 0; m < numMaterials; ++m) {\n"
+     << "    const uint numInstructions = fakeStack[prog];\n"
+     << "    for (uint i = 0u; i < numInstructions; ++i) {\n"
+     << "      const uint rec = fakeStack[prog + 4u + 3u * i] / 4u;\n"
+     << "      switch (fakeStack[prog + 2u + 3u * i]) {\n";
+  for (unsigned Id = 0; Id < CG.FunctionsById.size(); ++Id) {
+    auto It = CG.Signatures.find(CG.FunctionsById[Id]);
+    if (It == CG.Signatures.end() || !interpHoists(It->second))
+      continue;
+    const FunctionSignature &Sig = It->second;
+    OS << "      case " << Id << "u: /* " << Sig.Name << " */\n";
+    for (const Superinstruction &Sup : CG.Superinstructions)
+      if (Sup.First == Sig.Name)
+        OS << "      case " << Sup.Opcode << "u: /* superinstruction " << Sup.First << " -> "
+           << Sup.Second << " */\n";
+    uint32_t BlockSize = 0;
+    const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
+    const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
+    OS << "      {\n";
+    std::string Call = "texcc_uniform_" + Sig.RenamedName + "(";
+    for (size_t I = 0; I < Sig.HoistedFrom.size(); ++I) {
+      const unsigned P = Sig.HoistedFrom[I];
+      Call += (I ? ", " : "") +
+              fakeStackRead(Sig.Params.at(P).Type.Base,
+                            "rec + " + std::to_string(SourceWords + Offsets.at(P) / 4) + "u");
+    }
+    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
+      OS << "        " << spelling(Sig.Hoisted[H].Type) << " h" << H << ";\n";
+      Call += ", &h" + std::to_string(H);
+    }
+    OS << "        " << Call << ");\n";
+    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
+      const std::string W = "rec + " + std::to_string(hoistedWord(Sig, H)) + "u";
+      const BaseType B = Sig.Hoisted[H].Type;
+      if (B == BaseType::Float || B == BaseType::Int)
+        OS << "        fakeStack[" << W << "] = as_uint(h" << H << ");\n";
+      else
+        OS << "        vstore" << componentCount(B) << "(h" << H
+           << ", 0, (__global float *)fakeStack + " << W << ");\n";
+    }
+    OS << "        break;\n"
+       << "      }\n";
+  }
+  OS << "      default:\n"
+     << "        break;\n"
+     << "      }\n"
+     << "    }\n"
+     << "    prog += 2u + 3u * numInstructions + fakeStack[prog + 1u];\n"
+     << "  }\n"
+     << "}\n\n";
+}
+
+std::set<std::string> interpHoistingFunctions(const CompiledGraph &CG) {
+  std::set<std::string> Names;
+  for (const auto &KV : CG.Signatures)
+    if (interpHoists(KV.second))
+      Names.insert(KV.second.RenamedName);
+  return Names;
+}
+
+void emitInterp(std::ostringstream &OS, const CompiledGraph &CG, bool Hoists) {
   if (CG.Nodes.empty()) {
     // No material has a texture output: nothing to evaluate.
     OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {}\n";
@@ -235,7 +327,10 @@ void emitInterp(std::ostringstream &OS, const CompiledGraph &CG) {
           "#define TEXCC_ARG_IN(r, p, at, n) \\\n"
           "  texcc_arg(hits + gid, fakeStack, fakeStack[(r) + (p)], (at), (n), "
        << Stack << ")\n\n";
-  emitKernel(OS, CG);
+  Hoists = Hoists && !interpHoistingFunctions(CG).empty();
+  if (Hoists)
+    emitInterpUniforms(OS, CG);
+  emitKernel(OS, CG, Hoists);
 }
 
 } // namespace texcc::codegen

@@ -31,6 +31,9 @@ static Json kernelJson(const CompiledGraph &CG, const CodegenOptions &Opts) {
   }
   if (Opts.EvalMode != Mode::Wavefront) {
     K["entry"] = KernelEntry;
+    if (Opts.EvalMode == Mode::Interp && Opts.InterpHoists && !CG.Nodes.empty() &&
+        !interpHoistingFunctions(CG).empty())
+      K["uniforms"] = UniformsEntry;
     return K;
   }
   // Wavefront: every node kernel in launch order, then the outputs kernel ("entry").

@@ -67,8 +67,12 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
     return false;
   CG = std::move(*C);
   NeedsRebuild = CG.StackSlots > KernelStackSlots || CG.MaxOutputs > KernelMaxOutputs;
-  for (const CompiledNode &N : CG.Nodes)
+  for (const CompiledNode &N : CG.Nodes) {
     NeedsRebuild |= !Opts.FixedFunctionIds.count(N.Fn);
+    if (Opts.InterpHoistedCalls)
+      for (unsigned P : CG.Signatures.at(N.Fn).HoistedFrom)
+        NeedsRebuild |= P >= N.Args.size() || N.Args[P].Src != CompiledArg::Source::Constant;
+  }
   NeedsAttributeCase = !std::includes(
       KernelArgumentAttributes.begin(), KernelArgumentAttributes.end(),
       CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());

@@ -37,6 +37,10 @@ struct CodegenOptions {
   /// the OpenCL interp kernel's (interp mode, shape mode's proctex.interp.cl), which has a case
   /// for each. Empty: UserCode.
   std::string InterpUserCode;
+  /// Interp mode: the interp kernel calls texcc_hoisted_<fn> for every function with hoisted
+  /// values (interpHoistingFunctions), reading them from the record, and has the kernel
+  /// texcc_uniforms that computes them (docs/modes.md). Off for shape mode's fallback.
+  bool InterpHoists = false;
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).
@@ -54,6 +58,10 @@ std::string wavefrontKernelName(unsigned NodeIndex);
 /// in shape mode (graph::hoistsUniforms): their texcc_uniform_ and texcc_hoisted_ functions go
 /// into the shape kernel.
 std::set<std::string> hoistingFunctions(const graph::CompiledGraph &CG);
+/// The renamed texture functions of the graph (live or dead nodes') with hoisted values: with
+/// CodegenOptions::InterpHoists the interp kernel calls their texcc_hoisted_ functions for
+/// every node (the front end hoists only what every node of the function binds to constants).
+std::set<std::string> interpHoistingFunctions(const graph::CompiledGraph &CG);
 
 /// "proctex.cl" or "proctex.cpp".
 std::string kernelFileName(Target T);

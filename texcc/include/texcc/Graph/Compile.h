@@ -39,6 +39,10 @@ struct CompileOptions {
   /// of the work-group (slot s of work-item l at s*64 + l), out of scratch on a GPU; above
   /// it, a private array (docs/modes.md). 0: always private.
   unsigned LocalStackLimit = 4;
+  /// Live edits of an interp kernel that hoists (layout.json kernel.uniforms): it calls
+  /// texcc_hoisted_<fn> for every node of a function with hoisted values, so an edit that
+  /// makes one of their Sig.HoistedFrom parameters a non-constant needs a new kernel.
+  bool InterpHoistedCalls = false;
   /// Function ids to keep (live edits: the kernel's switch cases must not move). Functions not
   /// listed get the next free ids.
   std::map<std::string, unsigned> FixedFunctionIds;
