@@ -386,11 +386,11 @@ def shape_verdict(d):
 
 
 def per_hit_section(d):
-    title = "## 2e. Per-hit texture cost of every mode, shape's hoisting on and off"
+    title = "## 2e. Per-hit texture cost of every mode, hoisting on and off"
     if not d or "textures" not in d:
         return [title, "", "Not measured yet.", ""]
-    names = tuple(n for n in ("inline", "interp", "interp-private", "wavefront", "shape",
-                              "shape-unhoisted", "shape+bake")
+    names = tuple(n for n in ("inline", "interp", "interp-private", "interp-unhoisted",
+                              "wavefront", "shape", "shape-unhoisted", "shape+bake")
                   if all(n in r["configs"] for r in d["textures"].values()))
     lines = [title, "",
              "`bench/per_hit.py`: one `texcc-eval --time %d --grid %d` process per texture "
@@ -400,7 +400,8 @@ def per_hit_section(d):
              "(minimum) in ns, and the median of the per-round ratios to inline (one process, "
              "so the machine's drifting load cancels). `interp` keeps its value stack in local "
              "memory (texcc's default for up to 4 slots), `interp-private` in a private array "
-             "(`--local-stack-limit=0`; docs/modes.md). `shape` runs `texcc_uniforms` once "
+             "(`--local-stack-limit=0`; docs/modes.md); both hoist, `interp-unhoisted` does not "
+             "(`--no-hoist`). `shape` and `interp` run `texcc_uniforms` once "
              "before the rounds, as the renderer runs it once per upload; `shape-unhoisted` is "
              "`texcc --mode=shape --no-hoist` (docs/frontend.md, Hoisting); `shape+bake` bakes "
              "every constant int argument (`--bake`, listed below the table), as section 3 "
@@ -445,7 +446,7 @@ def instructions_section(d):
              "depend on the machine's load, so small differences are real; it is not a time "
              "(sections 2c and 2e have times). `shape` hoists what the user's functions compute "
              "from constants alone (`texcc_uniforms`, counted once per run over the grid), "
-             "`shape --no-hoist` does not. The per-node rows bake only that node's constants into "
+             "`shape --no-hoist` does not; so does `interp`, `interp --no-hoist` does not. The per-node rows bake only that node's constants into "
              "shape's code: the instructions saved are what inline's constant folding gains "
              "on that node." % d["grid"], "",
              "| texture | configuration | instructions per textured hit | / inline |",
