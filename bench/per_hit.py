@@ -5,7 +5,8 @@ paper's Table 1 (examples/rust and examples/scratches), with shape mode's hoisti
 
 Configurations: inline (first: the ratios are to it), interp (superinstructions on; its value
 stack in local memory, texcc's default for these graphs' 2 and 3 slots), interp-private (the value
-stack a private array, --local-stack-limit=0), interp-unhoisted (interp --no-hoist), wavefront,
+stack a private array, --local-stack-limit=0), interp-unhoisted (interp --no-hoist),
+interp-unquickened (interp --max-quickened=0), wavefront,
 shape, shape --no-hoist (every declaration of the user's functions computed per hit), and
 shape+bake (every constant int argument baked, --bake: the "mode" arguments, as in section 3). One
 `texcc-eval --time R` process per texture builds every configuration's kernel and runs all of
@@ -34,6 +35,7 @@ CONFIGS = (("inline", "inline", []),
            ("interp", "interp", []),
            ("interp-private", "interp", ["--local-stack-limit=0"]),
            ("interp-unhoisted", "interp", ["--no-hoist"]),
+           ("interp-unquickened", "interp", ["--max-quickened=0"]),
            ("wavefront", "wavefront", []),
            ("shape", "shape", []),
            ("shape-unhoisted", "shape", ["--no-hoist"]))

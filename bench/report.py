@@ -390,7 +390,8 @@ def per_hit_section(d):
     if not d or "textures" not in d:
         return [title, "", "Not measured yet.", ""]
     names = tuple(n for n in ("inline", "interp", "interp-private", "interp-unhoisted",
-                              "wavefront", "shape", "shape-unhoisted", "shape+bake")
+                              "interp-unquickened", "wavefront", "shape", "shape-unhoisted",
+                              "shape+bake")
                   if all(n in r["configs"] for r in d["textures"].values()))
     lines = [title, "",
              "`bench/per_hit.py`: one `texcc-eval --time %d --grid %d` process per texture "
@@ -401,7 +402,8 @@ def per_hit_section(d):
              "so the machine's drifting load cancels). `interp` keeps its value stack in local "
              "memory (texcc's default for up to 4 slots), `interp-private` in a private array "
              "(`--local-stack-limit=0`; docs/modes.md); both hoist, `interp-unhoisted` does not "
-             "(`--no-hoist`). `shape` and `interp` run `texcc_uniforms` once "
+             "(`--no-hoist`); all three have quickened opcodes, `interp-unquickened` has none "
+             "(`--max-quickened=0`). `shape` and `interp` run `texcc_uniforms` once "
              "before the rounds, as the renderer runs it once per upload; `shape-unhoisted` is "
              "`texcc --mode=shape --no-hoist` (docs/frontend.md, Hoisting); `shape+bake` bakes "
              "every constant int argument (`--bake`, listed below the table), as section 3 "

@@ -162,7 +162,8 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   // The kernel's superinstructions: an edit re-encodes a fused opcode only where its pair
   // still occurs, the plain opcodes elsewhere (docs/modes.md).
   if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why) ||
-      !texcc::graph::readLayoutSuperinstructions(Lay.Text, Opts.Superinstructions, Why))
+      !texcc::graph::readLayoutSuperinstructions(Lay.Text, Opts.Superinstructions, Why) ||
+      !texcc::graph::readLayoutQuickened(Lay.Text, Opts.Quickened, Why))
     throw Error(Lay.Dir + "/layout.json: " + Why);
   // layout.json lists the function of every node, dead ones included, and the interp kernel
   // (interp mode, shape mode's fallback) has a case for each: a rewiring onto any node is a

@@ -65,6 +65,12 @@ static cl::opt<unsigned> MaxSuperinstructions(
     "max-superinstructions",
     cl::desc("interp: at most N fused pairs of light functions in the kernel (default 8)"),
     cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
+static cl::opt<unsigned> MaxQuickened(
+    "max-quickened",
+    cl::desc("interp: at most N quickened opcodes, cases for the most frequent (function, "
+             "argument sources) patterns that read their arguments without decoding (default "
+             "8; 0: none)"),
+    cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
 static cl::opt<unsigned> LightCost(
     "light-cost",
     cl::desc("interp: a function may be part of a superinstruction when its cost (layout.json "
@@ -223,6 +229,8 @@ static int run() {
   if ((*Mode == cg::Mode::Interp || *Mode == cg::Mode::Shape) && *Target == cg::Target::OpenCL &&
       !NoSuperinstructions)
     CompileOpts.MaxSuperinstructions = MaxSuperinstructions;
+  if (*Mode == cg::Mode::Interp && *Target == cg::Target::OpenCL)
+    CompileOpts.MaxQuickened = MaxQuickened;
   CompileOpts.LightCost = LightCost;
   for (const fe::TranslatedSource &S : FR->Sources)
     for (const auto &Fn : S.Functions)

@@ -8,7 +8,8 @@ superinstructions, the default) bit for bit with interp --no-superinstructions (
 node); the line says how many instructions the superinstructions fused. An interp kernel whose
 value stack is a __local array (layout.json valueStack) must equal the same graph with a private
 one (--local-stack-limit=0) bit for bit, and a private one a local one; an interp kernel that
-hoists values (layout.json kernel.uniforms) interp --no-hoist. Every mode after interp
+hoists values (layout.json kernel.uniforms) interp --no-hoist, and one with quickened opcodes
+interp --max-quickened=0. Every mode after interp
 must equal interp bit for bit too: every kernel has FP_CONTRACT OFF, so the modes differ only in
 how the same user code is called, never in its arithmetic.
 
@@ -167,6 +168,23 @@ def check_unhoisted(out, dump, graph, args, extra, lines):
                    % (graph, hoisted), lines)
 
 
+def check_unquickened(out, dump, graph, args, extra, lines):
+    """interp with quickened opcodes (layout.json "quickened") against --max-quickened=0, bit
+    for bit; true without a check when the table is empty."""
+    with open(os.path.join(out, "layout.json")) as f:
+        quickened = json.load(f).get("quickened", [])
+    if not quickened:
+        return True
+    plain = out + "-unquickened"
+    plain_dump = plain + ".txt"
+    if not (run([args.texcc, "--mode=interp", "--graph", graph, "-o", plain] + extra +
+                ["--max-quickened=0"], lines)
+            and run([args.eval, plain, "--grid", str(args.grid)], lines, plain_dump)):
+        return False
+    return compare(dump, plain_dump, 0.0, "%s interp = interp --max-quickened=0 (quickened %d)"
+                   % (graph, len(quickened)), lines)
+
+
 def check_graph(g, graph, args, modes, extra):
     """Compiles and evaluates one graph for the host and every mode; (report lines, failures)."""
     lines, failures = [], 0
@@ -189,6 +207,7 @@ def check_graph(g, graph, args, modes, extra):
             ok = check_unfused(out, dump, graph, args, extra, lines)
             ok = ok and check_stack(out, dump, graph, args, extra, lines)
             ok = ok and check_unhoisted(out, dump, graph, args, extra, lines)
+            ok = ok and check_unquickened(out, dump, graph, args, extra, lines)
             interp_dump = dump
         elif ok and interp_dump:
             ok = compare(interp_dump, dump, 0.0, "%s %s = interp" % (graph, mode), lines)

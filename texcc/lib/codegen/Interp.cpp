@@ -114,9 +114,28 @@ static uint32_t hoistedWord(const FunctionSignature &Sig, size_t H) {
   return (sourceWordsBytes(Sig.Params.size()) + hoistedOffsets(Sig).at(H)) / 4;
 }
 
+/// A float..float4 argument read the way a quickened opcode's pattern says (QuickenedOp::Sources):
+/// from the block at word At, from the slot in source word P, or the attribute; widened to
+/// float4 like texcc_arg's result.
+static std::string quickArgument(const std::string &Source, const std::string &Rec, size_t P,
+                                 const std::string &At, BaseType B) {
+  if (Source == "const")
+    return widenToFloat4(B, fakeStackRead(B, At), Target::OpenCL);
+  const bool Broadcast = Source.size() > 2 && Source.compare(Source.size() - 2, 2, ".x") == 0;
+  std::string V;
+  if (Source.rfind("slot", 0) == 0) {
+    V = "TEXCC_SLOT(fakeStack[" + Rec + " + " + std::to_string(P) + "u] & 0xFFFFu)";
+  } else {
+    const std::string Name = Source.substr(5, Source.size() - 5 - (Broadcast ? 2 : 0));
+    V = "texcc_interp_attr(hits + gid, " + std::to_string(attributeId(Name)) + "u)";
+  }
+  return Broadcast ? "(" + V + ").xxxx" : V;
+}
+
 static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
                               const std::string &Rec = "rec", int Fed = -1,
-                              const std::string &FedExpr = "") {
+                              const std::string &FedExpr = "",
+                              const std::vector<std::string> *Sources = nullptr) {
   uint32_t BlockSize = 0;
   const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
   const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
@@ -135,6 +154,8 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
            " *)((__global const uchar *)fakeStack + fakeStack[" + At + "])";
     else if (T.Base == BaseType::Int || T.Base == BaseType::Sampler)
       S += "as_int(fakeStack[" + At + "])";
+    else if (Sources)
+      S += quickArgument(Sources->at(P), Rec, P, At, T.Base) + narrowSwizzle(T.Base);
     else if (Rec == "rec")
       S += "TEXCC_ARG(" + std::to_string(P) + "u, " + At + ", " +
            std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
@@ -226,6 +247,21 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
   }
   for (const Superinstruction &Sup : CG.Superinstructions)
     emitSuperinstructionCase(OS, CG, Sup, Hoists);
+  for (const QuickenedOp &Q : CG.Quickened) {
+    auto It = CG.Signatures.find(Q.Fn);
+    if (It == CG.Signatures.end())
+      continue;
+    const FunctionSignature &Sig = It->second;
+    std::string Pattern;
+    for (size_t P = 0; P < Q.Sources.size(); ++P)
+      Pattern += (P ? ", " : "") + Sig.Params.at(P).Name + ": " + Q.Sources[P];
+    OS << "    case " << Q.Opcode << "u: /* quickened " << Sig.Name << " (" << Pattern << ") */\n"
+       << "      r = "
+       << widenToFloat4(Sig.Return, interpCall(Sig, Hoists, "rec", -1, "", &Q.Sources),
+                        Target::OpenCL)
+       << ";\n"
+       << "      break;\n";
+  }
   OS << "    default:\n"
         "      r = (float4)(0.0f);\n"
         "      break;\n"
@@ -266,6 +302,9 @@ static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) 
       if (Sup.First == Sig.Name)
         OS << "      case " << Sup.Opcode << "u: /* superinstruction " << Sup.First << " -> "
            << Sup.Second << " */\n";
+    for (const QuickenedOp &Q : CG.Quickened)
+      if (Q.Fn == Sig.Name)
+        OS << "      case " << Q.Opcode << "u: /* quickened " << Q.Fn << " */\n";
     uint32_t BlockSize = 0;
     const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
     const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;

@@ -35,6 +35,7 @@ std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Si
   computeWavefrontOrder(*CG, Opts.Log);
   layoutArguments(*CG, Opts.Log);
   selectSuperinstructions(*CG, Opts, Opts.Log);
+  selectQuickened(*CG, Opts, Opts.Log);
   encodeArgsBin(*CG);
   return CG;
 }

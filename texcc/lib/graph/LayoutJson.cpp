@@ -166,6 +166,10 @@ std::string layoutJson(const CompiledGraph &CG) {
   for (const Superinstruction &S : CG.Superinstructions)
     Supers.push_back(superinstructionJson(CG, S));
   J["superinstructions"] = Supers;
+  OJson Quick = OJson::array();
+  for (const QuickenedOp &Q : CG.Quickened)
+    Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Q.Sources}});
+  J["quickened"] = Quick;
   OJson Nodes = OJson::array();
   for (size_t I = 0; I < CG.Nodes.size(); ++I) {
     const CompiledNode &N = CG.Nodes[I];
@@ -199,6 +203,26 @@ std::string layoutJson(const CompiledGraph &CG) {
   }
   J["materials"] = Materials;
   return J.dump(2) + "\n";
+}
+
+bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<QuickenedOp> &Table,
+                         std::string &Error) {
+  try {
+    nlohmann::json J = nlohmann::json::parse(LayoutJsonText);
+    if (!J.contains("quickened"))
+      return true; // a kernel without them (older texcc, or --max-quickened=0)
+    for (const auto &E : J.at("quickened")) {
+      QuickenedOp Q;
+      Q.Opcode = E.at("opcode").get<unsigned>();
+      Q.Fn = E.at("function").get<std::string>();
+      Q.Sources = E.at("sources").get<std::vector<std::string>>();
+      Table.push_back(Q);
+    }
+  } catch (const nlohmann::json::exception &E) {
+    Error = std::string("malformed layout.json: ") + E.what();
+    return false;
+  }
+  return true;
 }
 
 bool readLayoutSuperinstructions(const std::string &LayoutJsonText,

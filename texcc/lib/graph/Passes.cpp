@@ -191,6 +191,8 @@ void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const Compil
     Used.insert(KV.second);
   for (const Superinstruction &S : Opts.Superinstructions) // the kernel's fused opcodes
     Used.insert(S.Opcode);
+  for (const QuickenedOp &Q : Opts.Quickened) // and its quickened ones
+    Used.insert(Q.Opcode);
   CG.Signatures.clear();
   std::set<std::string> Attributes, Settings;
   for (CompiledNode &N : CG.Nodes) {

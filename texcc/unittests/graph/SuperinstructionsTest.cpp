@@ -1,6 +1,8 @@
 // The superinstruction pass: which adjacent pairs fuse (a single reader, light functions),
 // the table (most frequent first, capped, dead entries dropped, opcodes after the function ids),
 // args.bin's opcode words, the kernel's table applied by live edits, layout.json round trip.
+// Also the quickened opcodes (same machinery: a table of patterns, opcodes after the
+// superinstructions', applied by live edits).
 
 #include "texcc/Graph/Edit.h"
 
@@ -241,6 +243,105 @@ TEST(Superinstructions, LayoutWithoutATableReadsAsEmpty) {
   EXPECT_TRUE(readLayoutSuperinstructions(R"({"functions": []})", T, Error));
   EXPECT_TRUE(T.empty());
   EXPECT_FALSE(readLayoutSuperinstructions(R"({"superinstructions": [{"opcode": 1}]})", T, Error));
+  EXPECT_NE(Error.find("malformed layout.json"), std::string::npos);
+}
+
+CompileOptions quickening(unsigned Max = 8) {
+  CompileOptions O;
+  O.MaxQuickened = Max;
+  return O;
+}
+
+TEST(Quickened, MostFrequentPatternsFirstCapped) {
+  // a and b are lite(attr AO, const), p pair(slot, slot), e lite(slot, const).
+  const std::string Json = graphJson(
+      {lite("a", "", 1), lite("b", "", 2),
+       R"({"id": "p", "fn": "pair", "args": {"a": {"node": "a"}, "b": {"node": "b"}}})",
+       lite("e", "p", 5)},
+      strengthOf("e"));
+  CompiledGraph CG = compiled(Json, quickening(), costSigs());
+  ASSERT_EQ(CG.Quickened.size(), 3u);
+  const unsigned First = static_cast<unsigned>(CG.FunctionsById.size());
+  EXPECT_EQ(CG.Quickened[0].Opcode, First);
+  EXPECT_EQ(CG.Quickened[0].Fn, "lite");
+  EXPECT_EQ(CG.Quickened[0].Sources, (std::vector<std::string>{"attr:AO", "const"}));
+  EXPECT_EQ(CG.Quickened[1].Fn, "pair");
+  EXPECT_EQ(CG.Quickened[1].Sources, (std::vector<std::string>{"slot", "slot"}));
+  EXPECT_EQ(CG.Quickened[2].Fn, "lite");
+  EXPECT_EQ(CG.Quickened[2].Sources, (std::vector<std::string>{"slot", "const"}));
+  EXPECT_EQ(opcodes(CG), (std::vector<uint32_t>{First, First, First + 1, First + 2}));
+  CompiledGraph One = compiled(Json, quickening(1), costSigs());
+  ASSERT_EQ(One.Quickened.size(), 1u);
+  EXPECT_EQ(One.Quickened[0].Sources, (std::vector<std::string>{"attr:AO", "const"}));
+  EXPECT_EQ(opcodes(One), (std::vector<uint32_t>{First, First, 1, 0}));
+}
+
+TEST(Quickened, NeitherHalfOfASuperinstructionOpcodesAfterTheirs) {
+  // a -> b fuses (both light); heavy h never fuses: it alone runs its own case.
+  CompileOptions O = fusing();
+  O.MaxQuickened = 8;
+  CompiledGraph CG = compiled(
+      graphJson({lite("a", ""), lite("b", "a", 2), unaryNode("h", "heavy", "b")},
+                strengthOf("h")),
+      O, costSigs());
+  ASSERT_EQ(CG.Superinstructions.size(), 1u);
+  ASSERT_EQ(CG.Quickened.size(), 1u);
+  EXPECT_EQ(CG.Quickened[0].Fn, "heavy");
+  EXPECT_EQ(CG.Quickened[0].Opcode, CG.FunctionsById.size() + 1);
+  std::vector<int> Quick;
+  for (const Instruction &In : CG.Materials[0].Program)
+    Quick.push_back(In.Quick);
+  EXPECT_EQ(Quick, (std::vector<int>{-1, -1, 0}));
+}
+
+TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
+  EXPECT_TRUE(compiled(graphJson({lite("a", "")}, strengthOf("a")), fusing(), costSigs())
+                  .Quickened.empty()); // off unless asked for
+  const std::string Json =
+      graphJson({lite("a", ""), lite("b", "", 2),
+                 R"({"id": "w", "fn": "wide", "args": {"v": {"node": "a"}}})",
+                 R"({"id": "p", "fn": "pair", "args": {"a": {"node": "a"}, "b": {"node": "b"}}})"},
+                R"({"m": {"bsdf": "diffuse", "color": {"node": "w"}},
+                    "n": {"bsdf": "emission", "color": 1, "strength": {"node": "p"}}})");
+  CompiledGraph CG = compiled(Json, quickening(), costSigs());
+  bool SawBroadcast = false;
+  for (const QuickenedOp &Q : CG.Quickened)
+    SawBroadcast |= Q.Fn == "wide" && Q.Sources == std::vector<std::string>{"slot.x"};
+  EXPECT_TRUE(SawBroadcast);
+  // A live edit compiles with the kernel's table: an instruction whose pattern changed (p.b
+  // rewired from b to a constant) runs its function's plain opcode; the others keep theirs.
+  DiagnosticSink D;
+  std::optional<Graph> G = parse(Json, D);
+  ASSERT_TRUE(G) << text(D);
+  CompileOptions Kernel;
+  Kernel.Quickened = CG.Quickened;
+  Kernel.Superinstructions = CG.Superinstructions;
+  GraphEditor E(*G, costSigs(), Kernel);
+  ASSERT_TRUE(E.init(D)) << text(D);
+  EXPECT_EQ(E.compiled().Quickened, CG.Quickened);
+  ASSERT_TRUE(E.setArgument("p", "b", "0.5", D)) << text(D);
+  const CompiledGraph &After = E.compiled();
+  for (const CompiledMaterial &M : After.Materials)
+    for (const Instruction &In : M.Program)
+      if (After.Nodes[In.Node].Id == "p")
+        EXPECT_EQ(In.Quick, -1);
+      else if (In.Super < 0)
+        EXPECT_GE(In.Quick, 0) << After.Nodes[In.Node].Id;
+  EXPECT_FALSE(E.needsRebuild());
+}
+
+TEST(Quickened, LayoutRoundTrip) {
+  CompiledGraph CG = compiled(graphJson({lite("a", ""), lite("b", "a", 2)}, strengthOf("b")),
+                              quickening(), costSigs());
+  ASSERT_FALSE(CG.Quickened.empty());
+  std::vector<QuickenedOp> T;
+  std::string Error;
+  ASSERT_TRUE(readLayoutQuickened(layoutJson(CG), T, Error)) << Error;
+  EXPECT_EQ(T, CG.Quickened);
+  T.clear();
+  EXPECT_TRUE(readLayoutQuickened("{}", T, Error)); // an older layout.json: none
+  EXPECT_TRUE(T.empty());
+  EXPECT_FALSE(readLayoutQuickened(R"({"quickened": [{"opcode": 1}]})", T, Error));
   EXPECT_NE(Error.find("malformed layout.json"), std::string::npos);
 }
 

@@ -32,6 +32,19 @@ struct Superinstruction {
   }
 };
 
+/// A quickened opcode of the interp kernel (docs/modes.md): function Fn with every argument's
+/// source fixed (Sources[p], argumentSource()): its case reads each argument straight from where
+/// the pattern says (the record's parameter block, the value-stack slot in the source word, an
+/// attribute), with no decoding of the source word's kind.
+struct QuickenedOp {
+  unsigned Opcode = 0;               // kernel case, after the superinstructions' opcodes
+  std::string Fn;
+  std::vector<std::string> Sources;  // per parameter: "const", "slot", "slot.x", "attr:Name", "attr:Name.x"
+  bool operator==(const QuickenedOp &O) const {
+    return Opcode == O.Opcode && Fn == O.Fn && Sources == O.Sources;
+  }
+};
+
 struct CompileOptions {
   /// Private value-stack cap in float4 slots; beyond it values live in a global spill slice.
   unsigned StackLimit = 32;
@@ -58,6 +71,13 @@ struct CompileOptions {
   /// The kernel's superinstruction table (live edits: layout.json "superinstructions"): applied
   /// wherever its pairs occur after the edit, nothing else chosen.
   std::vector<Superinstruction> Superinstructions;
+  /// Quickened opcodes: choose at most this many (function, argument sources) patterns, the
+  /// most frequent among the instructions that no superinstruction runs (0: none). Ignored
+  /// when Quickened is not empty.
+  unsigned MaxQuickened = 0;
+  /// The kernel's quickened opcodes (live edits: layout.json "quickened"): used wherever an
+  /// instruction's pattern matches one, nothing else chosen.
+  std::vector<QuickenedOp> Quickened;
 };
 
 /// One argument of a live node, resolved against the function's signature.
@@ -103,6 +123,9 @@ struct Instruction {
   /// Index into CompiledGraph::Superinstructions when this instruction and the next run as one
   /// (the fnId word is then its Opcode); -1 otherwise.
   int Super = -1;
+  /// Index into CompiledGraph::Quickened when this instruction (not a half of a
+  /// superinstruction) runs a quickened opcode; -1 otherwise.
+  int Quick = -1;
 };
 
 /// A BSDF input after compilation: a constant, or a texture output of the material.
@@ -148,6 +171,7 @@ struct CompiledGraph {
   /// dead nodes name (in graph.json order). Empty names are gaps (ids pinned by live edits).
   std::vector<std::string> FunctionsById;
   std::vector<Superinstruction> Superinstructions;  // the interp kernel's table, opcode order
+  std::vector<QuickenedOp> Quickened;               // likewise, after the superinstructions
   std::vector<CompiledNode> Nodes;         // live nodes
   /// Every function a node of the graph names (live or dead), in graph.json order of first
   /// use; and the attribute ids that node arguments read (live or dead nodes), sorted: the
@@ -208,6 +232,10 @@ std::string shapeHash(const CompiledGraph &CG);
 
 /// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
 std::string layoutJson(const CompiledGraph &CG);
+
+/// Reads layout.json's "quickened" (absent: none) for the runtime's live edits.
+bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<QuickenedOp> &Table,
+                         std::string &Error);
 
 /// Reads layout.json's "superinstructions" (absent: none) for the runtime's live edits.
 bool readLayoutSuperinstructions(const std::string &LayoutJsonText,

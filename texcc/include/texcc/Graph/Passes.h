@@ -50,6 +50,14 @@ void layoutArguments(CompiledGraph &CG, std::ostream *Log);
 void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
 /// The name of the parameter of S.Second that S feeds ("" when the signature is unknown).
 std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S);
+/// Quickened opcodes (interp): Opts.Quickened when given (live edits), else at most
+/// Opts.MaxQuickened (function, argument sources) patterns of the instructions that do not run
+/// in a superinstruction, most frequent first, numbered after the superinstructions'
+/// opcodes; marks the instructions (Instruction::Quick). Sets CG.Quickened.
+void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
+/// Where argument A of a node comes from, as QuickenedOp::Sources spells it: "const" for
+/// constants and for every int, sampler or array parameter (always read from the block).
+std::string argumentSource(const CompiledArg &A);
 /// Writes ArgsBin from the layout (docs/abi.md).
 void encodeArgsBin(CompiledGraph &CG);
 
