@@ -484,7 +484,8 @@ def value_stack_section(d):
     if not d:
         return ["## 3b. Where interp's value stack lives", "", "Not measured yet.", ""]
     lines = ["## 3b. Where interp's value stack lives (gfx90a, offline)", "",
-             "`bench/value_stack.py`: texcc's interp kernel with its value stack in a private "
+             "`bench/value_stack.py`: texcc's interp kernel (`--max-quickened=0`; section 3 has "
+             "the default kernel) with its value stack in a private "
              "array (`array`: `float4 stack[N]`, `--local-stack-limit=0`, indexed by slot "
              "numbers from args.bin, which a GPU places in scratch), in the work-group's local "
              "memory (`local`: `__local float4 stack[N * 64]`, texcc's default for N <= 4, "

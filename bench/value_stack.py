@@ -1,5 +1,6 @@
 """Figure 3b: where interp's value stack lives on a GPU. With --local-stack-limit=0 texcc's
-interp kernel keeps it in a private array `float4 stack[TEXCC_STACK_SLOTS]` indexed by slot
+interp kernel (here with --max-quickened=0: no quickened opcodes, whose cases the register
+rewrites below would have to rewrite too) keeps it in a private array `float4 stack[TEXCC_STACK_SLOTS]` indexed by slot
 numbers read from args.bin ("array"); a GPU cannot index registers by a per-lane value, so the
 array goes to scratch memory. By default (at most 4 slots) it is a __local array of the
 work-group, `__local float4 stack[TEXCC_STACK_SLOTS * 64]` ("local", docs/modes.md). This
@@ -74,10 +75,13 @@ def measure(tools, quick):
     rows = []
     for tex, graph in resources.GRAPHS.items():
         folder = os.path.join(tools.work, "vs-%s" % tex)
+        # Without quickened opcodes (section 3 has the default kernel): the register rewrites
+        # replace the one TEXCC_SLOT macro those cases would use as well.
         common.texcc(tools, os.path.join(common.ROOT, graph), folder, "interp",
-                     ["--local-stack-limit=0"])
+                     ["--local-stack-limit=0", "--max-quickened=0"])
         local = os.path.join(tools.work, "vs-%s-local" % tex)
-        common.texcc(tools, os.path.join(common.ROOT, graph), local, "interp")
+        common.texcc(tools, os.path.join(common.ROOT, graph), local, "interp",
+                     ["--max-quickened=0"])
         src = os.path.join(folder, "proctex.cl")
         with open(src) as f:
             text = f.read()
