@@ -131,8 +131,48 @@ std::string hostArrayName(unsigned NodeIndex, const CompiledArg &A) {
   return "texcc_array_" + std::to_string(NodeIndex) + "_" + A.Name;
 }
 
-uint32_t hoistedRelativeWord(const CompiledNode &N, const FunctionSignature &Sig, size_t H) {
-  return (sourceWordsBytes(N.Args.size()) + hoistedOffsets(Sig).at(H)) / 4;
+/// Word index of hoisted value H in a record of Sig's function, relative to the record.
+static uint32_t hoistedRelativeWord(const FunctionSignature &Sig, size_t H) {
+  return (sourceWordsBytes(Sig.Params.size()) + hoistedOffsets(Sig).at(H)) / 4;
+}
+
+std::vector<std::string> hoistedValueReads(const FunctionSignature &Sig, const std::string &Rec) {
+  std::vector<std::string> Reads;
+  for (size_t H = 0; H < Sig.Hoisted.size(); ++H)
+    Reads.push_back(fakeStackRead(Sig.Hoisted[H].Type,
+                                  Rec + " + " + std::to_string(hoistedRelativeWord(Sig, H)) + "u"));
+  return Reads;
+}
+
+void emitUniformCall(std::ostringstream &OS, const FunctionSignature &Sig,
+                     const std::vector<std::string> &Inputs, const std::string &Rec,
+                     const std::string &Indent) {
+  std::string Call = "texcc_uniform_" + Sig.RenamedName + "(";
+  for (size_t I = 0; I < Inputs.size(); ++I)
+    Call += (I ? ", " : "") + Inputs[I];
+  for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
+    OS << Indent << spelling(Sig.Hoisted[H].Type) << " h" << H << ";\n";
+    Call += ", &h" + std::to_string(H);
+  }
+  OS << Indent << Call << ");\n";
+  for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
+    const std::string W = Rec + " + " + std::to_string(hoistedRelativeWord(Sig, H)) + "u";
+    const BaseType B = Sig.Hoisted[H].Type;
+    if (B == BaseType::Float || B == BaseType::Int)
+      OS << Indent << "fakeStack[" << W << "] = as_uint(h" << H << ");\n";
+    else
+      OS << Indent << "vstore" << componentCount(B) << "(h" << H
+         << ", 0, (__global float *)fakeStack + " << W << ");\n";
+  }
+}
+
+void emitUniformsKernelHead(std::ostringstream &OS) {
+  OS << "/* Run once after every upload of args.bin, before texcc_proctex. numMaterials:\n"
+     << " * TEXCC_NUM_MATERIALS, or 0 to launch it without work (a warm-up). */\n"
+     << "__kernel void " << UniformsEntry
+     << "(__global uint *fakeStack, const int numMaterials) {\n"
+     << "  if (get_global_id(0) != 0)\n"
+     << "    return;\n";
 }
 
 std::string fakeStackRead(BaseType B, const std::string &W) {

@@ -67,9 +67,19 @@ struct ArgEmitter {
 
 /// A value of type B read from fakeStack at word index Word (an expression).
 std::string fakeStackRead(graph::BaseType B, const std::string &Word);
-/// Word index of hoisted value H of node N, relative to the record's first word.
-uint32_t hoistedRelativeWord(const graph::CompiledNode &N, const graph::FunctionSignature &Sig,
-                             size_t H);
+/// Hoisting (shape and interp, docs/modes.md): Sig.Hoisted read back from the record at word
+/// Rec (an expression), in order, for texcc_hoisted_<fn>.
+std::vector<std::string> hoistedValueReads(const graph::FunctionSignature &Sig,
+                                           const std::string &Rec);
+/// The body of one node's (or instruction's) part of texcc_uniforms: texcc_uniform_<fn> on
+/// Inputs (Sig.HoistedFrom's values, in order), its results stored into the record at word Rec
+/// after the parameters. Every line starts with Indent.
+void emitUniformCall(std::ostringstream &OS, const graph::FunctionSignature &Sig,
+                     const std::vector<std::string> &Inputs, const std::string &Rec,
+                     const std::string &Indent);
+/// The head of kernel texcc_uniforms (abi.md): its comment, signature and the return of every
+/// work-item but 0; the caller writes the body and the closing brace.
+void emitUniformsKernelHead(std::ostringstream &OS);
 
 /// The name of the static array that holds the host literal of an array argument.
 std::string hostArrayName(unsigned NodeIndex, const graph::CompiledArg &A);

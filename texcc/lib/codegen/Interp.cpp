@@ -109,11 +109,6 @@ static bool interpHoists(const FunctionSignature &Sig) {
   return !Sig.Hoisted.empty() && !Sig.HoistedFrom.empty();
 }
 
-/// Word of hoisted value H in a record of Sig's function, relative to the record.
-static uint32_t hoistedWord(const FunctionSignature &Sig, size_t H) {
-  return (sourceWordsBytes(Sig.Params.size()) + hoistedOffsets(Sig).at(H)) / 4;
-}
-
 /// A float..float4 argument read the way a quickened opcode's pattern says (QuickenedOp::Sources):
 /// from the block at word At, from the slot in source word P, or the attribute; widened to
 /// float4 like texcc_arg's result.
@@ -164,10 +159,8 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
            std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
   }
   if (Hoisted)
-    for (size_t H = 0; H < Sig.Hoisted.size(); ++H)
-      S += ",\n          " +
-           fakeStackRead(Sig.Hoisted[H].Type,
-                         Rec + " + " + std::to_string(hoistedWord(Sig, H)) + "u");
+    for (const std::string &V : hoistedValueReads(Sig, Rec))
+      S += ",\n          " + V;
   return S + ")";
 }
 
@@ -280,13 +273,8 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
 /// hoisted values from the record's constants into the record, after the parameters. Driven by
 /// the programs in args.bin, so a live edit's re-encoding needs no new kernel.
 static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) {
-  OS << "/* Run once after every upload of args.bin, before texcc_proctex. numMaterials:\n"
-     << " * TEXCC_NUM_MATERIALS, or 0 to launch it without work (a warm-up). */\n"
-     << "__kernel void " << UniformsEntry
-     << "(__global uint *fakeStack, const int numMaterials) {\n"
-     << "  if (get_global_id(0) != 0)\n"
-     << "    return;\n"
-     << "  uint prog = 0u;\n"
+  emitUniformsKernelHead(OS);
+  OS << "  uint prog = 0u;\n"
      << "  for (int m = 0; m < numMaterials; ++m) {\n"
      << "    const uint numInstructions = fakeStack[prog];\n"
      << "    for (uint i = 0u; i < numInstructions; ++i) {\n"
@@ -308,28 +296,12 @@ static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) 
     uint32_t BlockSize = 0;
     const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
     const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
+    std::vector<std::string> Inputs;
+    for (unsigned P : Sig.HoistedFrom)
+      Inputs.push_back(fakeStackRead(Sig.Params.at(P).Type.Base,
+                                     "rec + " + std::to_string(SourceWords + Offsets.at(P) / 4) + "u"));
     OS << "      {\n";
-    std::string Call = "texcc_uniform_" + Sig.RenamedName + "(";
-    for (size_t I = 0; I < Sig.HoistedFrom.size(); ++I) {
-      const unsigned P = Sig.HoistedFrom[I];
-      Call += (I ? ", " : "") +
-              fakeStackRead(Sig.Params.at(P).Type.Base,
-                            "rec + " + std::to_string(SourceWords + Offsets.at(P) / 4) + "u");
-    }
-    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
-      OS << "        " << spelling(Sig.Hoisted[H].Type) << " h" << H << ";\n";
-      Call += ", &h" + std::to_string(H);
-    }
-    OS << "        " << Call << ");\n";
-    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
-      const std::string W = "rec + " + std::to_string(hoistedWord(Sig, H)) + "u";
-      const BaseType B = Sig.Hoisted[H].Type;
-      if (B == BaseType::Float || B == BaseType::Int)
-        OS << "        fakeStack[" << W << "] = as_uint(h" << H << ");\n";
-      else
-        OS << "        vstore" << componentCount(B) << "(h" << H
-           << ", 0, (__global float *)fakeStack + " << W << ");\n";
-    }
+    emitUniformCall(OS, Sig, Inputs, "rec", "        ");
     OS << "        break;\n"
        << "      }\n";
   }

@@ -60,12 +60,8 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
     std::string Call;
     if (hoistsUniforms(N, Sig)) {
       // The values texcc_uniforms computed into the record.
-      std::vector<std::string> Hoisted;
-      for (size_t H = 0; H < Sig.Hoisted.size(); ++H)
-        Hoisted.push_back(fakeStackRead(
-            Sig.Hoisted[H].Type,
-            "r" + std::to_string(J) + " + " + std::to_string(hoistedRelativeWord(N, Sig, H)) + "u"));
-      Call = E.call(CG, NodeIndex, "texcc_hoisted_" + Sig.RenamedName, Hoisted);
+      Call = E.call(CG, NodeIndex, "texcc_hoisted_" + Sig.RenamedName,
+                    hoistedValueReads(Sig, "r" + std::to_string(J)));
     } else {
       Call = E.call(CG, NodeIndex);
     }
@@ -117,23 +113,10 @@ static void emitShapeUniforms(std::ostringstream &OS, const CompiledGraph &CG,
     E.RecordWord = [&R](unsigned) { return R; };
     OS << "  { /* node '" << N.Id << "' (" << Sig.Name << ") */\n"
        << "    const uint " << R << " = fakeStack[prog + " << 4 + 3 * J << "u] / 4u;\n";
-    std::string Call = "texcc_uniform_" + Sig.RenamedName + "(";
-    for (size_t I = 0; I < Sig.HoistedFrom.size(); ++I)
-      Call += (I ? ", " : "") + E.argument(N, NodeIndex, N.Args[Sig.HoistedFrom[I]]);
-    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
-      OS << "    " << spelling(Sig.Hoisted[H].Type) << " h" << H << ";\n";
-      Call += ", &h" + std::to_string(H);
-    }
-    OS << "    " << Call << ");\n";
-    for (size_t H = 0; H < Sig.Hoisted.size(); ++H) {
-      const std::string W = R + " + " + std::to_string(hoistedRelativeWord(N, Sig, H)) + "u";
-      const BaseType B = Sig.Hoisted[H].Type;
-      if (B == BaseType::Float || B == BaseType::Int)
-        OS << "    fakeStack[" << W << "] = as_uint(h" << H << ");\n";
-      else
-        OS << "    vstore" << componentCount(B) << "(h" << H << ", 0, (__global float *)fakeStack + "
-           << W << ");\n";
-    }
+    std::vector<std::string> Inputs;
+    for (unsigned P : Sig.HoistedFrom)
+      Inputs.push_back(E.argument(N, NodeIndex, N.Args[P]));
+    emitUniformCall(OS, Sig, Inputs, R, "    ");
     OS << "  }\n";
   }
   OS << "}\n\n";
@@ -143,12 +126,7 @@ static void emitShapeUniforms(std::ostringstream &OS, const CompiledGraph &CG,
 /// values, one material after the other (materials that share a record write the same values).
 static void emitUniformsKernel(std::ostringstream &OS, const CompiledGraph &CG,
                                const std::vector<MaterialShape> &Shapes) {
-  OS << "/* Run once after every upload of args.bin, before texcc_proctex. numMaterials:\n"
-     << " * TEXCC_NUM_MATERIALS, or 0 to launch it without work (a warm-up). */\n"
-     << "__kernel void " << UniformsEntry
-     << "(__global uint *fakeStack, const int numMaterials) {\n"
-     << "  if (get_global_id(0) != 0)\n"
-     << "    return;\n";
+  emitUniformsKernelHead(OS);
   for (unsigned K = 0; K < Shapes.size(); ++K) {
     if (!shapeHoists(CG, Shapes[K]))
       continue;

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <map>
+#include <set>
 #include <filesystem>
 
 namespace texcc::graph {
@@ -211,11 +213,51 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
     nlohmann::json J = nlohmann::json::parse(LayoutJsonText);
     if (!J.contains("quickened"))
       return true; // a kernel without them (older texcc, or --max-quickened=0)
-    for (const auto &E : J.at("quickened")) {
+    // The editor writes these opcodes into args.bin for the kernel's cases: an entry that names
+    // a function the layout lacks, has a source per parameter wrong, or reuses an opcode would
+    // run the wrong case (or none) silently, so it is an error here.
+    std::map<std::string, size_t> Params;
+    std::set<unsigned> Taken;
+    for (const auto &F : J.at("functions")) {
+      Params[F.at("name").get<std::string>()] = F.at("params").size();
+      Taken.insert(F.at("id").get<unsigned>());
+    }
+    if (J.contains("superinstructions"))
+      for (const auto &S : J.at("superinstructions"))
+        Taken.insert(S.at("opcode").get<unsigned>());
+    for (size_t K = 0; K < J.at("quickened").size(); ++K) {
+      const auto &E = J.at("quickened").at(K);
+      const std::string Where = "/quickened/" + std::to_string(K) + ": ";
       QuickenedOp Q;
       Q.Opcode = E.at("opcode").get<unsigned>();
       Q.Fn = E.at("function").get<std::string>();
       Q.Sources = E.at("sources").get<std::vector<std::string>>();
+      auto It = Params.find(Q.Fn);
+      if (It == Params.end()) {
+        Error = Where + "function '" + Q.Fn + "' is not in /functions";
+        return false;
+      }
+      if (Q.Sources.size() != It->second) {
+        Error = Where + std::to_string(Q.Sources.size()) + " sources for the " +
+                std::to_string(It->second) + " parameters of '" + Q.Fn + "'";
+        return false;
+      }
+      for (const std::string &S : Q.Sources) {
+        std::string Base = S.size() > 2 && S.compare(S.size() - 2, 2, ".x") == 0
+                               ? S.substr(0, S.size() - 2) : S;
+        const bool Known = S == "const" || Base == "slot" ||
+                           (Base.rfind("attr:", 0) == 0 && attributeId(Base.substr(5)) >= 0);
+        if (!Known) {
+          Error = Where + "unknown source '" + S +
+                  "' (expected const, slot, slot.x, attr:Name or attr:Name.x)";
+          return false;
+        }
+      }
+      if (!Taken.insert(Q.Opcode).second) {
+        Error = Where + "opcode " + std::to_string(Q.Opcode) +
+                " is already a function id, a superinstruction's or another entry's";
+        return false;
+      }
       Table.push_back(Q);
     }
   } catch (const nlohmann::json::exception &E) {

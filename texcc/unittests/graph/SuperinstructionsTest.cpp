@@ -343,6 +343,26 @@ TEST(Quickened, LayoutRoundTrip) {
   EXPECT_TRUE(T.empty());
   EXPECT_FALSE(readLayoutQuickened(R"({"quickened": [{"opcode": 1}]})", T, Error));
   EXPECT_NE(Error.find("malformed layout.json"), std::string::npos);
+  // Entries that would make the editor write an opcode the kernel runs wrongly.
+  auto Bad = [](const std::string &Entry) {
+    std::vector<QuickenedOp> Table;
+    std::string Why;
+    EXPECT_FALSE(readLayoutQuickened(
+        R"({"functions": [{"id": 0, "name": "lite", "params": [{}, {}]}],
+            "superinstructions": [{"opcode": 1}], "quickened": [)" + Entry + "]}",
+        Table, Why));
+    return Why;
+  };
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "gone", "sources": []})"),
+            "/quickened/0: function 'gone' is not in /functions");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const"]})"),
+            "/quickened/0: 1 sources for the 2 parameters of 'lite'");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const", "attr:Nope"]})"),
+            "/quickened/0: unknown source 'attr:Nope' (expected const, slot, slot.x, attr:Name "
+            "or attr:Name.x)");
+  EXPECT_EQ(Bad(R"({"opcode": 1, "function": "lite", "sources": ["const", "slot.x"]})"),
+            "/quickened/0: opcode 1 is already a function id, a superinstruction's or another "
+            "entry's");
 }
 
 } // namespace
