@@ -99,7 +99,8 @@ def check_fallback(out, dump, graph, args, lines):
 
 def fused_count(out):
     """(superinstructions in the kernel's table, instructions fused into one) of an interp
-    output folder: the programs in args.bin whose fnId word is a superinstruction's opcode."""
+    output folder: the programs in args.bin whose fnId word is a superinstruction's opcode or
+    a quickened superinstruction's."""
     import json
     import struct
     with open(os.path.join(out, "layout.json")) as f:
@@ -107,12 +108,13 @@ def fused_count(out):
     with open(os.path.join(out, "args.bin"), "rb") as f:
         words = struct.unpack("<%dI" % layout["argsBin"]["programWords"],
                               f.read(4 * layout["argsBin"]["programWords"]))
-    opcodes = {s["opcode"] for s in layout.get("superinstructions", [])}
+    table = {s["opcode"] for s in layout.get("superinstructions", [])}
+    opcodes = table | {q["opcode"] for q in layout.get("quickened", []) if "second" in q}
     fused = 0
     for m in layout["materials"]:
         at = m["program"]["wordOffset"]
         fused += sum(1 for i in range(words[at]) if words[at + 2 + 3 * i] in opcodes)
-    return len(opcodes), fused
+    return len(table), fused
 
 
 def check_unfused(out, dump, graph, args, extra, lines):

@@ -127,6 +127,15 @@ static std::string quickArgument(const std::string &Source, const std::string &R
   return Broadcast ? "(" + V + ").xxxx" : V;
 }
 
+/// "name: source, ..." of a quickened pattern, for the case's comment.
+static std::string patternComment(const FunctionSignature &Sig,
+                                  const std::vector<std::string> &Sources) {
+  std::string S;
+  for (size_t P = 0; P < Sources.size(); ++P)
+    S += (P ? ", " : "") + Sig.Params.at(P).Name + ": " + Sources[P];
+  return S;
+}
+
 static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
                               const std::string &Rec = "rec", int Fed = -1,
                               const std::string &FedExpr = "",
@@ -147,6 +156,8 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
     else if (T.IsGlobalArray)
       S += "(__global const " + spelling(T.Base) +
            " *)((__global const uchar *)fakeStack + fakeStack[" + At + "])";
+    else if (Sources && Sources->at(P).rfind("int:", 0) == 0)
+      S += "(" + Sources->at(P).substr(4) + ")"; // the value the pattern names
     else if (T.Base == BaseType::Int || T.Base == BaseType::Sampler)
       S += "as_int(fakeStack[" + At + "])";
     else if (Sources)
@@ -167,24 +178,35 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
 /// The case of a superinstruction: First into a register, fed to Second's parameter (a float
 /// feeding a float2..4 parameter is broadcast, as the source word's broadcast bit says: the bit
 /// is set exactly then), Second's record and result slot from the next instruction, which the
-/// loop then skips. First's value never touches the value stack.
+/// loop then skips. First's value never touches the value stack. With Quick, the case of a
+/// quickened superinstruction: both calls read their arguments as its pattern says.
 static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph &CG,
-                                     const Superinstruction &Sup, bool Hoists) {
+                                     const Superinstruction &Sup, bool Hoists,
+                                     const QuickenedOp *Quick = nullptr) {
   const FunctionSignature &F = CG.Signatures.at(Sup.First);
   const FunctionSignature &G = CG.Signatures.at(Sup.Second);
   const BaseType Fed = G.Params.at(Sup.Param).Type.Base;
   std::string Value = "texcc_first";
   if (F.Return != Fed)
     Value = "(" + spelling(Fed) + ")(" + Value + ")";
-  OS << "    case " << Sup.Opcode << "u: { /* superinstruction: " << F.Name << " -> " << G.Name
-     << "." << G.Params[Sup.Param].Name << ", the next instruction; " << F.File
-     << (G.File == F.File ? "" : ", " + G.File) << " */\n"
-     << "      const " << spelling(F.Return) << " texcc_first = " << interpCall(F, Hoists) << ";\n"
+  OS << "    case " << (Quick ? Quick->Opcode : Sup.Opcode) << "u: { /* "
+     << (Quick ? "quickened " : "") << "superinstruction: " << F.Name;
+  if (Quick)
+    OS << " (" << patternComment(F, Quick->Sources) << ")";
+  OS << " -> " << G.Name << "." << G.Params[Sup.Param].Name;
+  if (Quick)
+    OS << " (" << patternComment(G, Quick->SecondSources) << ")";
+  OS << ", the next instruction; " << F.File << (G.File == F.File ? "" : ", " + G.File)
+     << " */\n"
+     << "      const " << spelling(F.Return) << " texcc_first = "
+     << interpCall(F, Hoists, "rec", -1, "", Quick ? &Quick->Sources : nullptr) << ";\n"
      << "      skipNext = true;\n"
      << "      resultSlot = fakeStack[prog + 6u + 3u * i];\n"
      << "      const uint rec2 = fakeStack[prog + 7u + 3u * i] / 4u;\n"
      << "      r = "
-     << widenToFloat4(G.Return, interpCall(G, Hoists, "rec2", static_cast<int>(Sup.Param), Value),
+     << widenToFloat4(G.Return,
+                      interpCall(G, Hoists, "rec2", static_cast<int>(Sup.Param), Value,
+                                 Quick ? &Quick->SecondSources : nullptr),
                       Target::OpenCL)
      << ";\n"
      << "      break;\n"
@@ -242,13 +264,19 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
     emitSuperinstructionCase(OS, CG, Sup, Hoists);
   for (const QuickenedOp &Q : CG.Quickened) {
     auto It = CG.Signatures.find(Q.Fn);
-    if (It == CG.Signatures.end())
+    if (It == CG.Signatures.end() || (!Q.Second.empty() && !CG.Signatures.count(Q.Second)))
       continue;
+    if (!Q.Second.empty()) {
+      Superinstruction Sup;
+      Sup.First = Q.Fn;
+      Sup.Second = Q.Second;
+      Sup.Param = Q.Param;
+      emitSuperinstructionCase(OS, CG, Sup, Hoists, &Q);
+      continue;
+    }
     const FunctionSignature &Sig = It->second;
-    std::string Pattern;
-    for (size_t P = 0; P < Q.Sources.size(); ++P)
-      Pattern += (P ? ", " : "") + Sig.Params.at(P).Name + ": " + Q.Sources[P];
-    OS << "    case " << Q.Opcode << "u: /* quickened " << Sig.Name << " (" << Pattern << ") */\n"
+    OS << "    case " << Q.Opcode << "u: /* quickened " << Sig.Name << " ("
+       << patternComment(Sig, Q.Sources) << ") */\n"
        << "      r = "
        << widenToFloat4(Sig.Return, interpCall(Sig, Hoists, "rec", -1, "", &Q.Sources),
                         Target::OpenCL)
@@ -292,7 +320,9 @@ static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) 
            << Sup.Second << " */\n";
     for (const QuickenedOp &Q : CG.Quickened)
       if (Q.Fn == Sig.Name)
-        OS << "      case " << Q.Opcode << "u: /* quickened " << Q.Fn << " */\n";
+        OS << "      case " << Q.Opcode << "u: /* quickened "
+           << (Q.Second.empty() ? Q.Fn : "superinstruction " + Q.Fn + " -> " + Q.Second)
+           << " */\n";
     uint32_t BlockSize = 0;
     const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
     const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 #include <filesystem>
 
 namespace texcc::graph {
@@ -169,8 +170,12 @@ std::string layoutJson(const CompiledGraph &CG) {
     Supers.push_back(superinstructionJson(CG, S));
   J["superinstructions"] = Supers;
   OJson Quick = OJson::array();
-  for (const QuickenedOp &Q : CG.Quickened)
-    Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Q.Sources}});
+  for (const QuickenedOp &Q : CG.Quickened) {
+    OJson E = {{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Q.Sources}};
+    if (!Q.Second.empty())
+      E["second"] = {{"function", Q.Second}, {"paramIndex", Q.Param}, {"sources", Q.SecondSources}};
+    Quick.push_back(E);
+  }
   J["quickened"] = Quick;
   OJson Nodes = OJson::array();
   for (size_t I = 0; I < CG.Nodes.size(); ++I) {
@@ -216,15 +221,62 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
     // The editor writes these opcodes into args.bin for the kernel's cases: an entry that names
     // a function the layout lacks, has a source per parameter wrong, or reuses an opcode would
     // run the wrong case (or none) silently, so it is an error here.
-    std::map<std::string, size_t> Params;
+    std::map<std::string, std::vector<std::string>> ParamTypes;
     std::set<unsigned> Taken;
     for (const auto &F : J.at("functions")) {
-      Params[F.at("name").get<std::string>()] = F.at("params").size();
+      std::vector<std::string> &Types = ParamTypes[F.at("name").get<std::string>()];
+      for (const auto &P : F.at("params"))
+        Types.push_back(P.at("type").get<std::string>());
       Taken.insert(F.at("id").get<unsigned>());
     }
+    std::set<std::tuple<std::string, std::string, unsigned>> Pairs;
     if (J.contains("superinstructions"))
-      for (const auto &S : J.at("superinstructions"))
+      for (const auto &S : J.at("superinstructions")) {
         Taken.insert(S.at("opcode").get<unsigned>());
+        Pairs.insert({S.at("first").get<std::string>(), S.at("second").get<std::string>(),
+                      S.at("paramIndex").get<unsigned>()});
+      }
+    // One function's sources: one per parameter, each a kind the kernel has a case for; "int:N"
+    // only for an int parameter, "fed" only for the fed parameter of a pair's second.
+    auto CheckSources = [&](const std::string &Where, const std::string &Fn,
+                            const std::vector<std::string> &Sources, int Fed) {
+      auto It = ParamTypes.find(Fn);
+      if (It == ParamTypes.end()) {
+        Error = Where + "function '" + Fn + "' is not in /functions";
+        return false;
+      }
+      if (Sources.size() != It->second.size()) {
+        Error = Where + std::to_string(Sources.size()) + " sources for the " +
+                std::to_string(It->second.size()) + " parameters of '" + Fn + "'";
+        return false;
+      }
+      for (size_t P = 0; P < Sources.size(); ++P) {
+        const std::string &S = Sources[P];
+        std::string Base = S.size() > 2 && S.compare(S.size() - 2, 2, ".x") == 0
+                               ? S.substr(0, S.size() - 2) : S;
+        bool Known = S == "const" || Base == "slot" ||
+                     (Base.rfind("attr:", 0) == 0 && attributeId(Base.substr(5)) >= 0);
+        if (S.rfind("int:", 0) == 0 && It->second[P] == "int") {
+          size_t End = 0;
+          try {
+            (void)std::stoll(S.substr(4), &End);
+            Known = End == S.size() - 4;
+          } catch (const std::exception &) {
+          }
+        }
+        if ((static_cast<int>(P) == Fed) != (S == "fed") || (!Known && S != "fed")) {
+          Error = Where + "source '" + S + "' of parameter " + std::to_string(P) + " of '" + Fn +
+                  "' (expected " +
+                  (static_cast<int>(P) == Fed
+                       ? std::string("fed")
+                       : std::string("const, slot, slot.x, attr:Name, attr:Name.x") +
+                             (It->second[P] == "int" ? " or int:N" : "")) +
+                  ")";
+          return false;
+        }
+      }
+      return true;
+    };
     for (size_t K = 0; K < J.at("quickened").size(); ++K) {
       const auto &E = J.at("quickened").at(K);
       const std::string Where = "/quickened/" + std::to_string(K) + ": ";
@@ -232,26 +284,21 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
       Q.Opcode = E.at("opcode").get<unsigned>();
       Q.Fn = E.at("function").get<std::string>();
       Q.Sources = E.at("sources").get<std::vector<std::string>>();
-      auto It = Params.find(Q.Fn);
-      if (It == Params.end()) {
-        Error = Where + "function '" + Q.Fn + "' is not in /functions";
+      if (!CheckSources(Where, Q.Fn, Q.Sources, -1))
         return false;
-      }
-      if (Q.Sources.size() != It->second) {
-        Error = Where + std::to_string(Q.Sources.size()) + " sources for the " +
-                std::to_string(It->second) + " parameters of '" + Q.Fn + "'";
-        return false;
-      }
-      for (const std::string &S : Q.Sources) {
-        std::string Base = S.size() > 2 && S.compare(S.size() - 2, 2, ".x") == 0
-                               ? S.substr(0, S.size() - 2) : S;
-        const bool Known = S == "const" || Base == "slot" ||
-                           (Base.rfind("attr:", 0) == 0 && attributeId(Base.substr(5)) >= 0);
-        if (!Known) {
-          Error = Where + "unknown source '" + S +
-                  "' (expected const, slot, slot.x, attr:Name or attr:Name.x)";
+      if (E.contains("second")) {
+        const auto &S = E.at("second");
+        Q.Second = S.at("function").get<std::string>();
+        Q.Param = S.at("paramIndex").get<unsigned>();
+        Q.SecondSources = S.at("sources").get<std::vector<std::string>>();
+        if (!Pairs.count({Q.Fn, Q.Second, Q.Param})) {
+          Error = Where + "no superinstruction '" + Q.Fn + "' -> '" + Q.Second + "' (parameter " +
+                  std::to_string(Q.Param) + ") in /superinstructions";
           return false;
         }
+        if (!CheckSources(Where + "second: ", Q.Second, Q.SecondSources,
+                          static_cast<int>(Q.Param)))
+          return false;
       }
       if (!Taken.insert(Q.Opcode).second) {
         Error = Where + "opcode " + std::to_string(Q.Opcode) +

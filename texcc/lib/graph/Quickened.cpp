@@ -1,18 +1,21 @@
-// Quickened opcodes of the interp kernel (docs/modes.md): an instruction whose function and
-// argument sources (constant, value-stack slot, which attribute, broadcast or not) match an
-// entry of the table runs that entry's case, which reads every argument straight from where
-// the pattern says instead of decoding the kind of each source word. Chosen from the patterns
+// Quickened opcodes of the interp kernel (docs/modes.md): an instruction (or a superinstruction
+// pair) whose function and argument sources (constant, int value, value-stack slot, which
+// attribute, broadcast or not) match an entry of the table runs that entry's case, which reads
+// every argument straight from where the pattern says instead of decoding the kind of each
+// source word, and has int constants as literals. Chosen from the patterns
 // the programs contain (texcc) or taken from the kernel's table (live edits); encodeArgsBin
 // writes their opcodes.
 
 #include "texcc/Graph/Passes.h"
 
 #include <algorithm>
-#include <map>
 
 namespace texcc::graph {
 
 std::string argumentSource(const CompiledArg &A) {
+  if (A.Type.Base == BaseType::Int && !A.Type.IsGlobalArray &&
+      A.Src == CompiledArg::Source::Constant && A.Values.size() == 1)
+    return "int:" + std::to_string(static_cast<long long>(A.Values[0]));
   const bool Decoded = !A.Type.IsGlobalArray && A.Type.Base != BaseType::Int &&
                        A.Type.Base != BaseType::Sampler;
   if (!Decoded || A.Src == CompiledArg::Source::Constant)
@@ -25,19 +28,53 @@ std::string argumentSource(const CompiledArg &A) {
 
 namespace {
 
-using Pattern = std::pair<std::string, std::vector<std::string>>; // function, sources
-
-Pattern patternOf(const CompiledNode &N) {
-  Pattern P{N.Fn, {}};
+std::vector<std::string> sourcesOf(const CompiledNode &N) {
+  std::vector<std::string> S;
   for (const CompiledArg &A : N.Args)
-    P.second.push_back(argumentSource(A));
+    S.push_back(argumentSource(A));
+  return S;
+}
+
+/// The pattern instruction J of M runs: its function and sources, and for the first of a
+/// superinstruction the second's too (its fed parameter "fed"). Opcode unset.
+QuickenedOp patternAt(const CompiledGraph &CG, const CompiledMaterial &M, size_t J) {
+  QuickenedOp P;
+  const CompiledNode &N = CG.Nodes[M.Program[J].Node];
+  P.Fn = N.Fn;
+  P.Sources = sourcesOf(N);
+  if (M.Program[J].Super >= 0) {
+    const Superinstruction &S = CG.Superinstructions[M.Program[J].Super];
+    P.Second = S.Second;
+    P.Param = S.Param;
+    P.SecondSources = sourcesOf(CG.Nodes[M.Program[J + 1].Node]);
+    P.SecondSources.at(S.Param) = "fed";
+  }
   return P;
 }
 
-/// Whether instruction J is one half of a superinstruction: its first (the opcode is the
-/// superinstruction's) or its second (skipped: the superinstruction's case runs it).
-bool runsInSuperinstruction(const CompiledMaterial &M, size_t J) {
-  return M.Program[J].Super >= 0 || (J > 0 && M.Program[J - 1].Super >= 0);
+bool samePattern(const QuickenedOp &A, const QuickenedOp &B) {
+  QuickenedOp C = B;
+  C.Opcode = A.Opcode;
+  return A == C;
+}
+
+/// Whether instruction J is the second half of a superinstruction (skipped: the
+/// superinstruction's case runs it).
+bool secondOfSuperinstruction(const CompiledMaterial &M, size_t J) {
+  return J > 0 && M.Program[J - 1].Super >= 0;
+}
+
+std::string describe(const QuickenedOp &Q) {
+  std::string S = "'" + Q.Fn + "' (";
+  for (size_t P = 0; P < Q.Sources.size(); ++P)
+    S += (P ? ", " : "") + Q.Sources[P];
+  S += ")";
+  if (Q.Second.empty())
+    return S;
+  S += " -> '" + Q.Second + "' (";
+  for (size_t P = 0; P < Q.SecondSources.size(); ++P)
+    S += (P ? ", " : "") + Q.SecondSources[P];
+  return S + ")";
 }
 
 } // namespace
@@ -45,30 +82,36 @@ bool runsInSuperinstruction(const CompiledMaterial &M, size_t J) {
 void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log) {
   std::vector<QuickenedOp> Table = Opts.Quickened;
   if (Table.empty() && Opts.MaxQuickened > 0) {
-    // Every pattern of an instruction that runs its own case, counted over all programs;
-    // ties in order of first occurrence.
-    std::map<Pattern, unsigned> Count;
-    std::vector<Pattern> Order;
+    // Every pattern of an instruction that runs its own case or a superinstruction's, counted
+    // over all programs; ties in order of first occurrence.
+    std::vector<QuickenedOp> Order;
+    std::vector<unsigned> Count;
     for (const CompiledMaterial &M : CG.Materials)
       for (size_t J = 0; J < M.Program.size(); ++J) {
-        if (runsInSuperinstruction(M, J))
+        if (secondOfSuperinstruction(M, J))
           continue;
-        Pattern P = patternOf(CG.Nodes[M.Program[J].Node]);
-        if (Count[P]++ == 0)
+        const QuickenedOp P = patternAt(CG, M, J);
+        auto It = std::find_if(Order.begin(), Order.end(),
+                               [&](const QuickenedOp &Q) { return samePattern(Q, P); });
+        if (It == Order.end()) {
           Order.push_back(P);
+          Count.push_back(1);
+        } else {
+          ++Count[It - Order.begin()];
+        }
       }
-    std::stable_sort(Order.begin(), Order.end(), [&](const Pattern &A, const Pattern &B) {
-      return Count[A] > Count[B];
-    });
-    if (Order.size() > Opts.MaxQuickened)
-      Order.resize(Opts.MaxQuickened);
+    std::vector<size_t> Rank(Order.size());
+    for (size_t K = 0; K < Rank.size(); ++K)
+      Rank[K] = K;
+    std::stable_sort(Rank.begin(), Rank.end(),
+                     [&](size_t A, size_t B) { return Count[A] > Count[B]; });
+    if (Rank.size() > Opts.MaxQuickened)
+      Rank.resize(Opts.MaxQuickened);
     const unsigned First =
         static_cast<unsigned>(CG.FunctionsById.size() + CG.Superinstructions.size());
-    for (const Pattern &P : Order) {
-      QuickenedOp Q;
+    for (size_t K : Rank) {
+      QuickenedOp Q = Order[K];
       Q.Opcode = First + static_cast<unsigned>(Table.size());
-      Q.Fn = P.first;
-      Q.Sources = P.second;
       Table.push_back(Q);
     }
   }
@@ -77,12 +120,11 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
     for (size_t J = 0; J < M.Program.size(); ++J) {
       Instruction &In = M.Program[J];
       In.Quick = -1;
-      if (runsInSuperinstruction(M, J))
+      if (secondOfSuperinstruction(M, J))
         continue;
-      const Pattern P = patternOf(CG.Nodes[In.Node]);
-      auto It = std::find_if(Table.begin(), Table.end(), [&](const QuickenedOp &Q) {
-        return Q.Fn == P.first && Q.Sources == P.second;
-      });
+      const QuickenedOp P = patternAt(CG, M, J);
+      auto It = std::find_if(Table.begin(), Table.end(),
+                             [&](const QuickenedOp &Q) { return samePattern(Q, P); });
       if (It != Table.end()) {
         In.Quick = static_cast<int>(It - Table.begin());
         ++Uses[In.Quick];
@@ -91,12 +133,10 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
   CG.Quickened = Table;
   if (!Log)
     return;
-  for (size_t K = 0; K < Table.size(); ++K) {
-    *Log << "quickened: opcode " << Table[K].Opcode << ": '" << Table[K].Fn << "' (";
-    for (size_t P = 0; P < Table[K].Sources.size(); ++P)
-      *Log << (P ? ", " : "") << Table[K].Sources[P];
-    *Log << "), " << Uses[K] << " instruction" << (Uses[K] == 1 ? "" : "s") << "\n";
-  }
+  for (size_t K = 0; K < Table.size(); ++K)
+    *Log << "quickened: opcode " << Table[K].Opcode << ": " << describe(Table[K]) << ", "
+         << Uses[K] << " instruction" << (Table[K].Second.empty() ? "" : " pair")
+         << (Uses[K] == 1 ? "" : "s") << "\n";
 }
 
 } // namespace texcc::graph

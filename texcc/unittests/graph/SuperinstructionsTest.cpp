@@ -24,6 +24,8 @@ const SignatureMap &costSigs() {
       {"name": "c", "type": "float3"}]},
     {"name": "wide", "return": "float3", "cost": 12, "params": [{"name": "v", "type": "float3"}]},
     {"name": "heavy", "return": "float", "cost": 5000, "params": [{"name": "x", "type": "float"}]},
+    {"name": "octv", "return": "float", "cost": 5000, "params": [{"name": "x", "type": "float"},
+      {"name": "n", "type": "int"}]},
     {"name": "unknown", "return": "float", "params": [{"name": "x", "type": "float"}]}
   ])");
   return S;
@@ -276,8 +278,10 @@ TEST(Quickened, MostFrequentPatternsFirstCapped) {
   EXPECT_EQ(opcodes(One), (std::vector<uint32_t>{First, First, 1, 0}));
 }
 
-TEST(Quickened, NeitherHalfOfASuperinstructionOpcodesAfterTheirs) {
-  // a -> b fuses (both light); heavy h never fuses: it alone runs its own case.
+TEST(Quickened, SuperinstructionPairsHaveTheirOwnPatterns) {
+  // a -> b fuses (both light): the pair's pattern is both halves' sources, the fed parameter
+  // "fed"; its opcode (after the superinstruction's) replaces the superinstruction's in
+  // args.bin, and b, the second half, has none of its own. Heavy h never fuses.
   CompileOptions O = fusing();
   O.MaxQuickened = 8;
   CompiledGraph CG = compiled(
@@ -285,13 +289,64 @@ TEST(Quickened, NeitherHalfOfASuperinstructionOpcodesAfterTheirs) {
                 strengthOf("h")),
       O, costSigs());
   ASSERT_EQ(CG.Superinstructions.size(), 1u);
-  ASSERT_EQ(CG.Quickened.size(), 1u);
-  EXPECT_EQ(CG.Quickened[0].Fn, "heavy");
-  EXPECT_EQ(CG.Quickened[0].Opcode, CG.FunctionsById.size() + 1);
+  ASSERT_EQ(CG.Quickened.size(), 2u);
+  const unsigned First = static_cast<unsigned>(CG.FunctionsById.size() + 1);
+  EXPECT_EQ(CG.Quickened[0].Opcode, First);
+  EXPECT_EQ(CG.Quickened[0].Fn, "lite");
+  EXPECT_EQ(CG.Quickened[0].Sources, (std::vector<std::string>{"attr:AO", "const"}));
+  EXPECT_EQ(CG.Quickened[0].Second, "lite");
+  EXPECT_EQ(CG.Quickened[0].Param, 0u);
+  EXPECT_EQ(CG.Quickened[0].SecondSources, (std::vector<std::string>{"fed", "const"}));
+  EXPECT_EQ(CG.Quickened[1].Fn, "heavy");
+  EXPECT_TRUE(CG.Quickened[1].Second.empty());
   std::vector<int> Quick;
   for (const Instruction &In : CG.Materials[0].Program)
     Quick.push_back(In.Quick);
-  EXPECT_EQ(Quick, (std::vector<int>{-1, -1, 0}));
+  EXPECT_EQ(Quick, (std::vector<int>{0, -1, 1}));
+  EXPECT_EQ(CG.Materials[0].Program[0].Super, 0); // still a superinstruction: b is skipped
+  const uint32_t Plain = CG.Nodes[CG.Materials[0].Program[1].Node].FnId;
+  EXPECT_EQ(opcodes(CG), (std::vector<uint32_t>{First, Plain, First + 1}));
+}
+
+TEST(Quickened, IntConstantsArePartOfThePattern) {
+  // Two octv nodes with n = 3 and one with n = 5: two patterns, the int a literal in the case.
+  const std::string Json = graphJson(
+      {R"({"id": "p", "fn": "octv", "args": {"x": {"attr": "AO"}, "n": 3}})",
+       R"({"id": "q", "fn": "octv", "args": {"x": {"node": "p"}, "n": 5}})",
+       R"({"id": "r", "fn": "octv", "args": {"x": {"node": "q"}, "n": 3}})",
+       R"({"id": "s", "fn": "pair", "args": {"a": {"node": "r"}, "b": {"node": "p"}}})"},
+      strengthOf("s"));
+  CompiledGraph CG = compiled(Json, quickening(), costSigs());
+  std::vector<std::vector<std::string>> Octv;
+  for (const QuickenedOp &Q : CG.Quickened)
+    if (Q.Fn == "octv")
+      Octv.push_back(Q.Sources);
+  EXPECT_EQ(Octv, (std::vector<std::vector<std::string>>{{"attr:AO", "int:3"},
+                                                          {"slot", "int:5"},
+                                                          {"slot", "int:3"}}));
+  // A live edit of n (the fast path, a value patched in place) to a value no entry has runs
+  // the plain case, with no new kernel; to a value an entry has, that entry's opcode.
+  DiagnosticSink D;
+  std::optional<Graph> G = parse(Json, D);
+  ASSERT_TRUE(G) << text(D);
+  CompileOptions Kernel;
+  Kernel.Quickened = CG.Quickened;
+  GraphEditor E(*G, costSigs(), Kernel);
+  ASSERT_TRUE(E.init(D)) << text(D);
+  auto QuickOf = [&](const std::string &Id) {
+    const CompiledGraph &C = E.compiled();
+    for (const Instruction &In : C.Materials[0].Program)
+      if (C.Nodes[In.Node].Id == Id)
+        return In.Quick >= 0 ? C.Quickened[In.Quick].Sources.back() : std::string("plain");
+    return std::string("absent");
+  };
+  EXPECT_EQ(QuickOf("q"), "int:5");
+  ASSERT_TRUE(E.setArgument("q", "n", "4", D)) << text(D);
+  EXPECT_EQ(QuickOf("q"), "plain");
+  EXPECT_FALSE(E.needsRebuild());
+  ASSERT_TRUE(E.setArgument("q", "n", "3", D)) << text(D);
+  EXPECT_EQ(QuickOf("q"), "int:3");
+  EXPECT_FALSE(E.needsRebuild());
 }
 
 TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
@@ -348,8 +403,10 @@ TEST(Quickened, LayoutRoundTrip) {
     std::vector<QuickenedOp> Table;
     std::string Why;
     EXPECT_FALSE(readLayoutQuickened(
-        R"({"functions": [{"id": 0, "name": "lite", "params": [{}, {}]}],
-            "superinstructions": [{"opcode": 1}], "quickened": [)" + Entry + "]}",
+        R"({"functions": [{"id": 0, "name": "lite", "params": [{"type": "float"}, {"type": "float"}]},
+                          {"id": 3, "name": "octv", "params": [{"type": "float"}, {"type": "int"}]}],
+            "superinstructions": [{"opcode": 1, "first": "lite", "second": "lite", "paramIndex": 0}],
+            "quickened": [)" + Entry + "]}",
         Table, Why));
     return Why;
   };
@@ -358,11 +415,40 @@ TEST(Quickened, LayoutRoundTrip) {
   EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const"]})"),
             "/quickened/0: 1 sources for the 2 parameters of 'lite'");
   EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const", "attr:Nope"]})"),
-            "/quickened/0: unknown source 'attr:Nope' (expected const, slot, slot.x, attr:Name "
-            "or attr:Name.x)");
+            "/quickened/0: source 'attr:Nope' of parameter 1 of 'lite' (expected const, slot, "
+            "slot.x, attr:Name, attr:Name.x)");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const", "int:3"]})"),
+            "/quickened/0: source 'int:3' of parameter 1 of 'lite' (expected const, slot, "
+            "slot.x, attr:Name, attr:Name.x)");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "octv", "sources": ["const", "int:3x"]})"),
+            "/quickened/0: source 'int:3x' of parameter 1 of 'octv' (expected const, slot, "
+            "slot.x, attr:Name, attr:Name.x or int:N)");
   EXPECT_EQ(Bad(R"({"opcode": 1, "function": "lite", "sources": ["const", "slot.x"]})"),
             "/quickened/0: opcode 1 is already a function id, a superinstruction's or another "
             "entry's");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const", "const"],
+                    "second": {"function": "lite", "paramIndex": 1, "sources": ["const", "fed"]}})"),
+            "/quickened/0: no superinstruction 'lite' -> 'lite' (parameter 1) in "
+            "/superinstructions");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const", "const"],
+                    "second": {"function": "lite", "paramIndex": 0, "sources": ["slot", "fed"]}})"),
+            "/quickened/0: second: source 'slot' of parameter 0 of 'lite' (expected fed)");
+  // And the entries it takes: an int value, a pair.
+  std::vector<QuickenedOp> Good;
+  ASSERT_TRUE(readLayoutQuickened(
+      R"({"functions": [{"id": 0, "name": "lite", "params": [{"type": "float"}, {"type": "float"}]},
+                        {"id": 3, "name": "octv", "params": [{"type": "float"}, {"type": "int"}]}],
+          "superinstructions": [{"opcode": 1, "first": "lite", "second": "lite", "paramIndex": 0}],
+          "quickened": [{"opcode": 2, "function": "octv", "sources": ["slot", "int:-2"]},
+                        {"opcode": 4, "function": "lite", "sources": ["attr:AO", "const"],
+                         "second": {"function": "lite", "paramIndex": 0,
+                                    "sources": ["fed", "slot.x"]}}]})",
+      Good, Error))
+      << Error;
+  ASSERT_EQ(Good.size(), 2u);
+  EXPECT_EQ(Good[0].Sources.back(), "int:-2");
+  EXPECT_EQ(Good[1].Second, "lite");
+  EXPECT_EQ(Good[1].SecondSources, (std::vector<std::string>{"fed", "slot.x"}));
 }
 
 } // namespace

@@ -35,13 +35,21 @@ struct Superinstruction {
 /// A quickened opcode of the interp kernel (docs/modes.md): function Fn with every argument's
 /// source fixed (Sources[p], argumentSource()): its case reads each argument straight from where
 /// the pattern says (the record's parameter block, the value-stack slot in the source word, an
-/// attribute), with no decoding of the source word's kind.
+/// attribute, or, for an int constant, the literal the pattern names: "int:6" makes the case
+/// code for that value, which the compiler folds), with no decoding of the source word's kind.
+/// With Second set, the opcode is a quickened superinstruction: the pair (Fn -> Second.Param)
+/// of a superinstruction with both halves' sources fixed (SecondSources[Param] is "fed").
 struct QuickenedOp {
   unsigned Opcode = 0;               // kernel case, after the superinstructions' opcodes
   std::string Fn;
-  std::vector<std::string> Sources;  // per parameter: "const", "slot", "slot.x", "attr:Name", "attr:Name.x"
+  /// Per parameter: "const", "int:N", "slot", "slot.x", "attr:Name", "attr:Name.x".
+  std::vector<std::string> Sources;
+  std::string Second;                // a quickened superinstruction's second function, or ""
+  unsigned Param = 0;                // Second's parameter that Fn's result feeds
+  std::vector<std::string> SecondSources;
   bool operator==(const QuickenedOp &O) const {
-    return Opcode == O.Opcode && Fn == O.Fn && Sources == O.Sources;
+    return Opcode == O.Opcode && Fn == O.Fn && Sources == O.Sources && Second == O.Second &&
+           Param == O.Param && SecondSources == O.SecondSources;
   }
 };
 
@@ -72,8 +80,8 @@ struct CompileOptions {
   /// wherever its pairs occur after the edit, nothing else chosen.
   std::vector<Superinstruction> Superinstructions;
   /// Quickened opcodes: choose at most this many (function, argument sources) patterns, the
-  /// most frequent among the instructions that no superinstruction runs (0: none). Ignored
-  /// when Quickened is not empty.
+  /// most frequent among the instructions and superinstruction pairs (0: none). Ignored when
+  /// Quickened is not empty.
   unsigned MaxQuickened = 0;
   /// The kernel's quickened opcodes (live edits: layout.json "quickened"): used wherever an
   /// instruction's pattern matches one, nothing else chosen.
@@ -123,8 +131,9 @@ struct Instruction {
   /// Index into CompiledGraph::Superinstructions when this instruction and the next run as one
   /// (the fnId word is then its Opcode); -1 otherwise.
   int Super = -1;
-  /// Index into CompiledGraph::Quickened when this instruction (not a half of a
-  /// superinstruction) runs a quickened opcode; -1 otherwise.
+  /// Index into CompiledGraph::Quickened when this instruction runs a quickened opcode (a
+  /// superinstruction's first instruction: a quickened superinstruction, its opcode written
+  /// instead of the superinstruction's); -1 otherwise.
   int Quick = -1;
 };
 

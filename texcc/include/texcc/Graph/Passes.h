@@ -51,12 +51,14 @@ void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std:
 /// The name of the parameter of S.Second that S feeds ("" when the signature is unknown).
 std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S);
 /// Quickened opcodes (interp): Opts.Quickened when given (live edits), else at most
-/// Opts.MaxQuickened (function, argument sources) patterns of the instructions that do not run
-/// in a superinstruction, most frequent first, numbered after the superinstructions'
-/// opcodes; marks the instructions (Instruction::Quick). Sets CG.Quickened.
+/// Opts.MaxQuickened patterns (function and argument sources; for a superinstruction's first
+/// instruction, the pair's) of the programs' instructions, most frequent first, numbered after
+/// the superinstructions' opcodes; marks the instructions (Instruction::Quick). Sets
+/// CG.Quickened.
 void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
-/// Where argument A of a node comes from, as QuickenedOp::Sources spells it: "const" for
-/// constants and for every int, sampler or array parameter (always read from the block).
+/// Where argument A of a node comes from, as QuickenedOp::Sources spells it: "int:N" for an
+/// int constant, "const" for other constants and for every sampler or array parameter (always
+/// read from the block), "slot", "slot.x", "attr:Name" or "attr:Name.x" otherwise.
 std::string argumentSource(const CompiledArg &A);
 /// Writes ArgsBin from the layout (docs/abi.md).
 void encodeArgsBin(CompiledGraph &CG);
