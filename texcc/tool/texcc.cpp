@@ -68,8 +68,9 @@ static cl::opt<unsigned> MaxSuperinstructions(
 static cl::opt<unsigned> MaxQuickened(
     "max-quickened",
     cl::desc("interp: at most N quickened opcodes, cases for the most frequent (function, "
-             "argument sources) patterns that read their arguments without decoding (default "
-             "8; 0: none)"),
+             "argument sources, int values) patterns, fused pairs included, that read their "
+             "arguments without decoding and have int constants as literals (default 8; 0: "
+             "none)"),
     cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
 static cl::opt<unsigned> LightCost(
     "light-cost",
