@@ -294,6 +294,14 @@ bool LiveEditor::fallbackRuns(const Renderer &R) const {
          !Editor->needsAttributeCase();
 }
 
+bool LiveEditor::headroomRuns(const Renderer &R) const {
+  // interp mode's kernel has a case for every node's function too; built with headroom
+  // (RendererOptions::InterpStackHeadroom) it also holds a deeper value stack.
+  const auto &CG = Editor->compiled();
+  return Lay.Mode == "interp" && Editor->needsOnlyStackSlots() && !CG.Spill &&
+         CG.StackSlots <= R.interpStackSlots();
+}
+
 LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
   if (Lay.Mode == "inline")
     return Plan::Regenerate;
@@ -302,7 +310,7 @@ LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer
                                    : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
   if (!Ok)
     throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
-  if (Editor->needsRebuild() && !fallbackRuns(R))
+  if (Editor->needsRebuild() && !fallbackRuns(R) && !headroomRuns(R))
     return Plan::Regenerate;
   // A shape kernel runs the edited graph exactly when its shapes are unchanged: a value edit
   // that merges or splits identical nodes changes them, a rewiring onto an equal structure

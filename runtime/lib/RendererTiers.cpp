@@ -92,9 +92,11 @@ void Renderer::buildTextureKernel() {
     return;
   const char *Reason = FramesRendered ? "edit" : "initial";
   if (Lay.Mode != "shape") {
-    activate(buildForeground(Lay.KernelSource, readKernelSource(Lay.KernelSource), Lay.Mode,
-                             Reason),
-             Lay.Mode);
+    InterpModeSlots = Lay.StackSlots;
+    const std::string Source = Lay.Mode == "interp" && Opts.InterpStackHeadroom
+                                   ? stackHeadroomSource(Lay, Lay.KernelSource, InterpModeSlots)
+                                   : readKernelSource(Lay.KernelSource);
+    activate(buildForeground(Lay.KernelSource, Source, Lay.Mode, Reason), Lay.Mode);
     return;
   }
   buildShapeTiers(Reason);

@@ -83,7 +83,11 @@ cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::stri
 } // namespace
 
 std::string interpFallbackSource(const Layout &L, unsigned &Capacity) {
-  std::string Source = readKernelSource(L.InterpFallback);
+  return stackHeadroomSource(L, L.InterpFallback, Capacity);
+}
+
+std::string stackHeadroomSource(const Layout &L, const std::string &Path, unsigned &Capacity) {
+  std::string Source = readKernelSource(Path);
   Capacity = L.StackSlots;
   const std::string Define = "#define TEXCC_STACK_SLOTS ";
   size_t At = Source.find(Define);

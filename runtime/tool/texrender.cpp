@@ -346,6 +346,8 @@ int run(int Argc, char **Argv) {
   // Tiered pays off when edits follow; a single render waits for the shape build instead
   // (docs/runtime.md, Tiers: the interp frame is slower and the background build competes).
   RO.Tier = O.Tier.value_or(!Script.empty() || O.Interactive ? TierPolicy::Auto : TierPolicy::Shape);
+  // Likewise an interp kernel gets value-stack headroom only when edits may need it.
+  RO.InterpStackHeadroom = !Script.empty() || O.Interactive;
   Renderer R(S, L, RO);
   std::unique_ptr<LiveEditor> Editor;
   if (!Sets.empty() || !Script.empty() || O.Interactive)

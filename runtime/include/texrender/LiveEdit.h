@@ -66,6 +66,10 @@ private:
   /// Shape mode: whether the running interp fallback can run the edited graph even though
   /// the graph library says the kernel it was made for cannot (value-stack headroom).
   bool fallbackRuns(const Renderer &R) const;
+  /// interp mode: whether the kernel, built with value-stack headroom, can run the edited
+  /// graph although the graph library says the kernel it was made for cannot (only the
+  /// value stack is deeper).
+  bool headroomRuns(const Renderer &R) const;
   void regenerate(Renderer &R);
   void regenerateInBackground(Renderer &R);
   Regeneration writeEditedGraph();

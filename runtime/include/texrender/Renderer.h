@@ -32,6 +32,10 @@ struct RendererOptions {
   size_t MaxPathsPerPass = 1u << 18;
   TierPolicy Tier = TierPolicy::Shape; // shape-mode layouts only (TextureTiers.h); texrender
                                        // picks auto for edit sessions
+  /// interp-mode layouts: build the kernel with value-stack headroom (stackHeadroomSource, as
+  /// shape mode's fallback has), so that a rewiring that needs a few more slots is an upload,
+  /// not a build. texrender sets it for edit sessions.
+  bool InterpStackHeadroom = false;
   /// --ao-method=loop: one work-item per hit loops over its AO rays (ao_loop) instead of one
   /// work-item per AO ray (ao_trace + ao_reduce). Same rays, same image; kept to measure the
   /// paper's claim that the parallel launch is faster (bench/ao.py).
@@ -96,6 +100,9 @@ public:
   const std::string &activeTier() const { return ActiveTier; }
   /// The value-stack slots the built interp fallback holds (interpFallbackSource); 0: none.
   unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
+  /// interp mode: the value-stack slots the built kernel holds (with InterpStackHeadroom more
+  /// than the layout's stackSlots).
+  unsigned interpStackSlots() const { return InterpModeSlots; }
   /// Every texture-kernel build so far, foreground and background.
   const std::vector<BuildEvent> &buildEvents() const { return Events; }
   /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
@@ -165,6 +172,7 @@ private:
   bool UniformsDirty = true;
   cl::Program ShapeProgram, InterpProgram;
   unsigned FallbackSlots = 0;
+  unsigned InterpModeSlots = 0;
   std::unique_ptr<BackgroundBuild> Pending;
   std::function<void(Layout &)> PendingReencode;
   std::vector<std::unique_ptr<BackgroundBuild>> Retired;

@@ -50,11 +50,14 @@ struct TierBuildResult {
   std::string Error;
 };
 
-/// The interp fallback's source, with the value stack given headroom: TEXCC_STACK_SLOTS is
-/// the exact peak of the graph it was made from, and a rewiring that needs one or two slots
-/// more would otherwise need a new fallback (and a frame waiting for its build). The capacity,
-/// max(2 N, N + 4) capped at the stack limit, goes to Capacity; a spilling layout keeps its N
-/// (the spill buffer is sized by it). The shape kernel keeps its values in locals.
+/// An interpreter's source (the file at Path, of layout L) with the value stack given
+/// headroom: TEXCC_STACK_SLOTS is the exact peak of the graph it was made from, and a
+/// rewiring that needs one or two slots more would otherwise need a new kernel (and a frame
+/// waiting for its build). The capacity, max(2 N, N + 4) capped at the stack limit, goes to
+/// Capacity; a spilling layout keeps its N (the spill buffer is sized by it).
+std::string stackHeadroomSource(const Layout &L, const std::string &Path, unsigned &Capacity);
+/// The interp fallback's source with headroom (stackHeadroomSource of L.InterpFallback). The
+/// shape kernel keeps its values in locals.
 std::string interpFallbackSource(const Layout &L, unsigned &Capacity);
 
 /// What a background job builds.

@@ -57,7 +57,7 @@ bool GraphEditor::init(DiagnosticSink &Diags) {
     for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id)
       if (!CG.FunctionsById[Id].empty())
         Opts.FixedFunctionIds[CG.FunctionsById[Id]] = static_cast<unsigned>(Id);
-  NeedsRebuild = NeedsAttributeCase = false;
+  NeedsRebuild = NeedsCode = NeedsAttributeCase = false;
   return true;
 }
 
@@ -66,17 +66,18 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
   if (!C)
     return false;
   CG = std::move(*C);
-  NeedsRebuild = CG.StackSlots > KernelStackSlots || CG.MaxOutputs > KernelMaxOutputs;
+  NeedsCode = CG.MaxOutputs > KernelMaxOutputs;
   for (const CompiledNode &N : CG.Nodes) {
-    NeedsRebuild |= !Opts.FixedFunctionIds.count(N.Fn);
+    NeedsCode |= !Opts.FixedFunctionIds.count(N.Fn);
     if (Opts.InterpHoistedCalls)
       for (unsigned P : CG.Signatures.at(N.Fn).HoistedFrom)
-        NeedsRebuild |= P >= N.Args.size() || N.Args[P].Src != CompiledArg::Source::Constant;
+        NeedsCode |= P >= N.Args.size() || N.Args[P].Src != CompiledArg::Source::Constant;
   }
   NeedsAttributeCase = !std::includes(
       KernelArgumentAttributes.begin(), KernelArgumentAttributes.end(),
       CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());
-  NeedsRebuild |= NeedsAttributeCase;
+  NeedsCode |= NeedsAttributeCase;
+  NeedsRebuild = NeedsCode || CG.StackSlots > KernelStackSlots;
   return true;
 }
 
@@ -136,7 +137,7 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
         encodeArgsBin(CG);
       }
       G = std::move(Edited);
-      NeedsRebuild = NeedsAttributeCase = false;
+      NeedsRebuild = NeedsCode = NeedsAttributeCase = false;
       return true;
     }
   }

@@ -202,6 +202,7 @@ TEST(GraphEditor, NewFunctionNeedsARebuild) {
   ASSERT_TRUE(E.init(D)) << text(D);
   ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D);
   EXPECT_TRUE(E.needsRebuild());
+  EXPECT_FALSE(E.needsOnlyStackSlots()); // no headroom has a case for 'neg'
   EXPECT_GE(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
 }
 
@@ -213,6 +214,7 @@ TEST(GraphEditor, AnAttributeNoArgumentReadNeedsADecoderCase) {
   ASSERT_TRUE(E.setArgument("r", "t", R"({"attr": "AO"})", D)) << text(D);
   EXPECT_TRUE(E.needsAttributeCase());
   EXPECT_TRUE(E.needsRebuild());
+  EXPECT_FALSE(E.needsOnlyStackSlots());
   ASSERT_TRUE(E.setArgument("r", "t", "0.5", D)) << text(D);
   EXPECT_FALSE(E.needsAttributeCase());
   EXPECT_FALSE(E.needsRebuild());
@@ -238,8 +240,10 @@ TEST(GraphEditor, MoreStackSlotsNeedARebuild) {
   ASSERT_TRUE(E.rewire("r", "b", "q", D)) << text(D); // add(add(l1,l2), add(l3,l4))
   EXPECT_EQ(E.compiled().StackSlots, 3u);
   EXPECT_TRUE(E.needsRebuild());
+  EXPECT_TRUE(E.needsOnlyStackSlots()); // a kernel with headroom may still run it
   ASSERT_TRUE(E.rewire("r", "b", "l2", D)) << text(D);
   EXPECT_FALSE(E.needsRebuild());
+  EXPECT_FALSE(E.needsOnlyStackSlots());
 }
 
 TEST(GraphEditor, FunctionIdsStayPinned) {

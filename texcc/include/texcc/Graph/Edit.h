@@ -33,6 +33,9 @@ public:
   /// the kernel, more stack slots than TEXCC_STACK_SLOTS, more outputs than TEXCC_MAX_OUTPUTS,
   /// or needsAttributeCase()).
   bool needsRebuild() const { return NeedsRebuild; }
+  /// True when the only reason for needsRebuild() is a value stack deeper than the kernel's
+  /// (a kernel built with headroom may still run the edited graph).
+  bool needsOnlyStackSlots() const { return NeedsRebuild && !NeedsCode; }
   /// True when the last edit made a node argument read an attribute that no node argument of
   /// the initial graph read (`set n.p={"attr": "Normal"}`): the interpreter's attribute
   /// decoder has no case for it.
@@ -49,6 +52,7 @@ private:
   unsigned KernelMaxOutputs = 0;
   std::vector<int> KernelArgumentAttributes; // sorted: the interpreter's attribute decoder
   bool NeedsRebuild = false;
+  bool NeedsCode = false;    // a reason other than value-stack slots
   bool NeedsAttributeCase = false;
 };
 
