@@ -57,6 +57,12 @@ bool GraphEditor::init(DiagnosticSink &Diags) {
     for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id)
       if (!CG.FunctionsById[Id].empty())
         Opts.FixedFunctionIds[CG.FunctionsById[Id]] = static_cast<unsigned>(Id);
+  // Likewise its superinstructions and quickened opcodes (the tables given, or those chosen
+  // now): later compiles apply them and never choose others, whose cases the kernel lacks.
+  Opts.Superinstructions = CG.Superinstructions;
+  Opts.MaxSuperinstructions = 0;
+  Opts.Quickened = CG.Quickened;
+  Opts.MaxQuickened = 0;
   NeedsRebuild = NeedsCode = NeedsAttributeCase = false;
   return true;
 }
@@ -130,10 +136,9 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
         encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
       if (!CG.Quickened.empty() && argumentSource(Old).rfind("int:", 0) == 0) {
         // An int value is part of a quickened pattern: the instruction now runs the entry of
-        // the kernel's table for its new value, or its plain case (a new opcode word).
-        CompileOptions Kernel = Opts;
-        Kernel.Quickened = CG.Quickened;
-        selectQuickened(CG, Kernel, nullptr);
+        // the kernel's table (pinned by init) for its new value, or its plain case (a new
+        // opcode word).
+        selectQuickened(CG, Opts, nullptr);
         encodeArgsBin(CG);
       }
       G = std::move(Edited);

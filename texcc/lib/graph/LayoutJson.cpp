@@ -10,6 +10,7 @@
 #include <set>
 #include <tuple>
 #include <filesystem>
+#include <limits>
 
 namespace texcc::graph {
 
@@ -259,8 +260,9 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
         if (S.rfind("int:", 0) == 0 && It->second[P] == "int") {
           size_t End = 0;
           try {
-            (void)std::stoll(S.substr(4), &End);
-            Known = End == S.size() - 4;
+            const long long V = std::stoll(S.substr(4), &End);
+            Known = End == S.size() - 4 && V >= std::numeric_limits<int32_t>::min() &&
+                    V <= std::numeric_limits<int32_t>::max();
           } catch (const std::exception &) {
           }
         }

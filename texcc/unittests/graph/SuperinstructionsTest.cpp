@@ -385,6 +385,30 @@ TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
   EXPECT_FALSE(E.needsRebuild());
 }
 
+TEST(Quickened, AnEditorKeepsTheTablesItStartedWith) {
+  // An editor given no tables, only the limits, pins what its first compile chose: a rewiring
+  // that makes other patterns the most frequent must not choose cases the kernel lacks.
+  const std::string Json = graphJson(
+      {lite("a", ""), lite("b", "", 2), unaryNode("h", "heavy", "a"),
+       R"({"id": "p", "fn": "pair", "args": {"a": {"node": "h"}, "b": {"node": "b"}}})"},
+      strengthOf("p"));
+  DiagnosticSink D;
+  std::optional<Graph> G = parse(Json, D);
+  ASSERT_TRUE(G) << text(D);
+  CompileOptions O = fusing();
+  O.MaxQuickened = 1;
+  GraphEditor E(*G, costSigs(), O);
+  ASSERT_TRUE(E.init(D)) << text(D);
+  const std::vector<QuickenedOp> Quick = E.compiled().Quickened;
+  const std::vector<Superinstruction> Super = E.compiled().Superinstructions;
+  ASSERT_EQ(Quick.size(), 1u);
+  ASSERT_TRUE(E.rewire("p", "a", "b", D)) << text(D);
+  ASSERT_TRUE(E.rewire("h", "x", "b", D)) << text(D);
+  EXPECT_EQ(E.compiled().Quickened, Quick);
+  EXPECT_EQ(E.compiled().Superinstructions, Super);
+  EXPECT_FALSE(E.needsRebuild());
+}
+
 TEST(Quickened, LayoutRoundTrip) {
   CompiledGraph CG = compiled(graphJson({lite("a", ""), lite("b", "a", 2)}, strengthOf("b")),
                               quickening(), costSigs());
@@ -423,6 +447,9 @@ TEST(Quickened, LayoutRoundTrip) {
   EXPECT_EQ(Bad(R"({"opcode": 2, "function": "octv", "sources": ["const", "int:3x"]})"),
             "/quickened/0: source 'int:3x' of parameter 1 of 'octv' (expected const, slot, "
             "slot.x, attr:Name, attr:Name.x or int:N)");
+  EXPECT_EQ(Bad(R"({"opcode": 2, "function": "octv", "sources": ["const", "int:4294967296"]})"),
+            "/quickened/0: source 'int:4294967296' of parameter 1 of 'octv' (expected const, "
+            "slot, slot.x, attr:Name, attr:Name.x or int:N)");
   EXPECT_EQ(Bad(R"({"opcode": 1, "function": "lite", "sources": ["const", "slot.x"]})"),
             "/quickened/0: opcode 1 is already a function id, a superinstruction's or another "
             "entry's");
