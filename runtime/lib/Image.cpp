@@ -1,5 +1,6 @@
 #include "texrender/Image.h"
 #include "texcc/StaleTemporaries.h"
+#include "texcc/Support/File.h"
 #include "texrender/Error.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -30,7 +31,20 @@ float linearToSrgb(float V) {
   return V <= 0.0031308f ? 12.92f * V : 1.055f * std::pow(V, 1.0f / 2.4f) - 0.055f;
 }
 
+namespace {
+
+/// stb_image and tinyexr fopen() the file: a FIFO would block them, and a folder would be
+/// "not of any known type".
+void checkImageFile(const std::string &Path, const char *What) {
+  std::string Why;
+  if (!texcc::checkRegularFile(Path, Why))
+    throw Error(Path + ": cannot load " + What + ": " + Why);
+}
+
+} // namespace
+
 ImageRGBA loadTexture(const std::string &Path) {
+  checkImageFile(Path, "image");
   ImageRGBA Img;
   int N = 0;
   if (stbi_is_hdr(Path.c_str())) {
@@ -60,6 +74,7 @@ ImageRGBA loadTexture(const std::string &Path) {
 }
 
 ImageRGBA loadExr(const std::string &Path) {
+  checkImageFile(Path, "EXR");
   ImageRGBA Img;
   float *D = nullptr;
   const char *Err = nullptr;
@@ -97,12 +112,10 @@ void writeAtomically(const std::string &Path,
 }
 
 std::string readWholeFile(const std::string &Path, const std::string &What) {
-  std::ifstream In(Path, std::ios::binary);
-  if (!In)
-    throw Error(Path + ": cannot open" + What);
-  std::stringstream SS;
-  SS << In.rdbuf();
-  return SS.str();
+  std::string Text, Why;
+  if (!texcc::readRegularFile(Path, Text, Why))
+    throw Error(Path + ": cannot open" + What + ": " + Why);
+  return Text;
 }
 
 void writeTextFile(const std::string &Path, const std::string &Text) {

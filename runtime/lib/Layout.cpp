@@ -1,6 +1,7 @@
 #include "texrender/Layout.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
+#include "texcc/Support/File.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +41,10 @@ std::string Layout::materialNames() const {
 namespace {
 
 std::string readFile(const std::string &Path) {
-  return readWholeFile(Path, " (is --textures the texcc output folder?)");
+  std::string Text, Why;
+  if (!texcc::readRegularFile(Path, Text, Why))
+    throw Error(Path + ": cannot open: " + Why + " (is --textures the texcc output folder?)");
+  return Text;
 }
 
 unsigned componentsOf(const std::string &Type) {

@@ -1,14 +1,17 @@
 // OBJ loading through tinyobjloader, with gzip support (zlib) and generated normals.
 #include "texrender/Error.h"
 #include "texrender/Scene.h"
+#include "texcc/Support/File.h"
 
 #include <tiny_obj_loader.h>
 #include <zlib.h>
 
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -18,9 +21,12 @@ namespace texrender {
 namespace {
 
 std::string readMaybeGzipped(const std::string &Path) {
+  std::string NotRegular; // gzopen() of a FIFO would block, a folder would read as empty
+  if (!texcc::checkRegularFile(Path, NotRegular))
+    throw Error(Path + ": cannot open OBJ file: " + NotRegular);
   gzFile F = gzopen(Path.c_str(), "rb"); // reads plain files unchanged too
   if (!F)
-    throw Error(Path + ": cannot open OBJ file (missing or unreadable)");
+    throw Error(Path + ": cannot open OBJ file: " + std::strerror(errno));
   std::string Out;
   char Buf[1 << 16];
   int N;

@@ -1,5 +1,6 @@
 #include "texrender/Scene.h"
 #include "texrender/Error.h"
+#include "texrender/Image.h"
 
 #include <nlohmann/json.hpp>
 
@@ -208,14 +209,7 @@ std::string jsonReason(const json::exception &E) {
 } // namespace
 
 Scene loadScene(const std::string &Path) {
-  if (std::filesystem::is_directory(Path)) // an ifstream opens a folder and reads nothing
-    throw Error(Path + ": cannot open scene file: it is a folder");
-  std::ifstream In(Path);
-  if (!In)
-    throw Error(Path + ": cannot open scene file");
-  std::stringstream SS;
-  SS << In.rdbuf();
-  std::string Text = SS.str();
+  std::string Text = readWholeFile(Path, " scene file");
   json J;
   try {
     J = json::parse(Text);

@@ -5,6 +5,7 @@
 // OUTDIR/args.bin, each atomically (a temporary file, then a rename).
 
 #include "texcc/Graph/Compile.h"
+#include "texcc/Support/File.h"
 #include "texcc/Version.h"
 
 #include <cstdio>
@@ -28,16 +29,6 @@ struct Options {
   unsigned StackLimit = 32;
   bool Verbose = false;
 };
-
-bool readFile(const std::string &Path, std::string &Text) {
-  std::ifstream In(Path, std::ios::binary);
-  if (!In)
-    return false;
-  std::ostringstream SS;
-  SS << In.rdbuf();
-  Text = SS.str();
-  return true;
-}
 
 bool writeAtomically(const fs::path &Path, const void *Data, size_t Size, std::string &Error) {
   fs::path Tmp = Path;
@@ -141,13 +132,13 @@ int main(int Argc, char **Argv) {
   Options O;
   if (int RC = parseOptions(Argc, Argv, O))
     return RC < 0 ? 0 : RC;
-  std::string GraphText, SigText;
-  if (!readFile(O.Graph, GraphText)) {
-    std::cerr << "texcc-graph: error: cannot read '" << O.Graph << "'\n";
+  std::string GraphText, SigText, Why;
+  if (!texcc::readRegularFile(O.Graph, GraphText, Why)) {
+    std::cerr << "texcc-graph: error: cannot read '" << O.Graph << "': " << Why << "\n";
     return 1;
   }
-  if (!readFile(O.Signatures, SigText)) {
-    std::cerr << "texcc-graph: error: cannot read '" << O.Signatures << "'\n";
+  if (!texcc::readRegularFile(O.Signatures, SigText, Why)) {
+    std::cerr << "texcc-graph: error: cannot read '" << O.Signatures << "': " << Why << "\n";
     return 1;
   }
   DiagnosticSink Diags;

@@ -6,15 +6,14 @@
 #include "texcc/Graph/Compile.h"
 #include "texcc/Graph/Graph.h"
 #include "texcc/StackGuard.h"
+#include "texcc/Support/File.h"
 #include "texcc/Version.h"
 
 #include "llvm/Support/CommandLine.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 using namespace llvm;
 namespace fs = std::filesystem;
@@ -105,18 +104,6 @@ static int fail(const std::string &Message) {
   return 1;
 }
 
-static bool readFile(const std::string &Path, std::string &Text) {
-  if (fs::is_directory(Path)) // an ifstream opens a folder, and reads it as an empty file
-    return false;
-  std::ifstream IS(Path, std::ios::binary);
-  if (!IS)
-    return false;
-  std::ostringstream SS;
-  SS << IS.rdbuf();
-  Text = SS.str();
-  return true;
-}
-
 /// The sources to compile: the command line's, or graph.json's "sources" (relative to it).
 static std::vector<std::string> sourceList(const gr::Graph &G) {
   if (!Sources.empty())
@@ -184,10 +171,9 @@ static int run() {
   if (OutDir.empty() && !EmitUserCode)
     return fail("no output folder given (-o OUTDIR)");
 
-  std::string GraphText;
-  if (!readFile(GraphPath, GraphText))
-    return fail("cannot read graph '" + GraphPath + "'" +
-                (fs::is_directory(GraphPath.getValue()) ? ": it is a folder" : ""));
+  std::string GraphText, Why;
+  if (!texcc::readRegularFile(GraphPath, GraphText, Why))
+    return fail("cannot read graph '" + GraphPath + "': " + Why);
   gr::DiagnosticSink GraphDiags;
   std::optional<gr::Graph> G = gr::parseGraph(GraphPath, GraphText, GraphDiags);
   GraphDiags.print(std::cerr);

@@ -32,7 +32,8 @@ void writeAtomically(const std::string &Path, const std::function<void(const std
 /// writeAtomically for a text file (stats.json).
 void writeTextFile(const std::string &Path, const std::string &Text);
 /// The whole of a file, byte for byte. Throws Error "PATH: cannot open" + What (e.g.
-/// " kernel source").
+/// " kernel source") + ": " + the reason; a FIFO, a device or a folder is refused, never read
+/// (texcc/Support/File.h).
 std::string readWholeFile(const std::string &Path, const std::string &What = "");
 
 float srgbToLinear(float V);

@@ -5,6 +5,7 @@
 
 #include "texcc/Config.h"
 #include "texcc/Frontend/Frontend.h"
+#include "texcc/Support/File.h"
 
 #include "clang/Basic/DiagnosticSema.h"
 #include "clang/Frontend/CompilerInstance.h"
@@ -368,13 +369,13 @@ llvm::Expected<FrontendResult> runFrontend(const std::vector<std::string> &Sourc
                                            const std::set<std::string> &TextureNames,
                                            const FrontendOptions &Opts,
                                            llvm::raw_ostream &Diags) {
-  for (const std::string &S : Sources)
-    if (!Opts.VirtualFiles.count(S) && !llvm::sys::fs::exists(S))
-      return llvm::createStringError(std::errc::no_such_file_or_directory,
-                                     "cannot open '%s': no such file", S.c_str());
-    else if (!Opts.VirtualFiles.count(S) && llvm::sys::fs::is_directory(S))
-      return llvm::createStringError(std::errc::is_a_directory,
-                                     "cannot open '%s': it is a folder", S.c_str());
+  // A FIFO would block clang's open(): every source must be a regular file.
+  for (const std::string &S : Sources) {
+    std::string Why;
+    if (!Opts.VirtualFiles.count(S) && !texcc::checkRegularFile(S, Why))
+      return llvm::createStringError(std::errc::invalid_argument, "cannot open '%s': %s",
+                                     S.c_str(), Why.c_str());
+  }
   std::vector<std::string> Prefixes = uniquePrefixes(Sources);
   FrontendResult Result;
   std::map<std::string, std::string> TextureFiles;

@@ -10,6 +10,7 @@
 // texture kernels' device time per textured hit of each, over R rounds in one process
 // (timeOpenCL): the per-hit figure of bench/per_hit.py that the machine's load does not swamp.
 #include "texcc_abi.h"
+#include "texcc/Support/File.h"
 
 #include <CL/opencl.hpp>
 #include <nlohmann/json.hpp>
@@ -68,12 +69,10 @@ struct LayoutInfo {
 }
 
 std::string readFile(const std::string &Path) {
-  std::ifstream IS(Path, std::ios::binary);
-  if (!IS)
-    die("cannot read '" + Path + "'");
-  std::ostringstream SS;
-  SS << IS.rdbuf();
-  return SS.str();
+  std::string Text, Why;
+  if (!texcc::readRegularFile(Path, Text, Why))
+    die("cannot read '" + Path + "': " + Why);
+  return Text;
 }
 
 /// splitmix64: a small, portable, deterministic generator.
