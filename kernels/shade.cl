@@ -13,6 +13,18 @@ static inline float4 rt_input(RtBsdfInput in, __global const float4 *outputs, in
   return in.components == 1 ? (float4)(v.x) : v;
 }
 
+/* A NaN or infinite value (a texture's, a BSDF weight, a light sample's) makes the whole path
+ * sample non-finite here, before anything clamps it away (fmax(NaN, 0) is 0, clamp() of NaN
+ * is 0): accumulate then drops the sample and counts it (stats.json "nonFiniteSamples"). */
+static inline int rt_finite3(float3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
+
+static inline void rt_poison(__global RtPath *paths, int pid, RtPath p, uint rng) {
+  p.radiance.x = NAN;
+  p.flags &= ~RT_PATH_ALIVE;
+  p.rng = rng;
+  paths[pid] = p;
+}
+
 static inline int rt_pick_light(__global const float *cdf, int n, float u) {
   int lo = 0, hi = n - 1;
   while (lo < hi) {
@@ -123,12 +135,22 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   int base = i * maxOutputs;
   int node = materials[mesh.material].root;
   for (int guard = 0; guard < 32 && bsdfs[node].type == RT_BSDF_BLEND; ++guard) {
-    float m = clamp(rt_input(bsdfs[node].in[0], outputs, base).x, 0.0f, 1.0f);
+    float m = rt_input(bsdfs[node].in[0], outputs, base).x;
+    if (!isfinite(m)) {
+      rt_poison(paths, pid, p, rng);
+      return;
+    }
+    m = clamp(m, 0.0f, 1.0f);
     node = rt_rand(&rng) < m ? bsdfs[node].b : bsdfs[node].a;
   }
   RtBsdfNode leaf = bsdfs[node];
-  float3 color = fmax(rt_input(leaf.in[0], outputs, base).xyz, (float3)(0.0f));
+  float3 color = rt_input(leaf.in[0], outputs, base).xyz;
   float param = rt_input(leaf.in[1], outputs, base).x;
+  if (!rt_finite3(color) || !isfinite(param)) {
+    rt_poison(paths, pid, p, rng);
+    return;
+  }
+  color = fmax(color, (float3)(0.0f));
   if (leaf.type == RT_BSDF_EMISSION) {
     p.radiance.xyz += thr * color * param;
     p.rng = rng;
@@ -148,6 +170,10 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       float3 f = rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
       float cosI = dot(wi, s.ns);
       float3 c = thr * f * le * (cosI * rt_mis(lp, bp) / lp);
+      if (!rt_finite3(c)) {
+        rt_poison(paths, pid, p, rng);
+        return;
+      }
       if (rt_max3(c) > 0.0f) {
         RtShadowRay r;
         r.origin = (float4)(rt_offset(s, wi, prm.epsilon), 0.0f);
@@ -166,6 +192,10 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     int delta;
     float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
     float3 wgt = rt_bsdf_sample(leaf.type, color, param, s.ns, wo, u1, u2, &wi, &pdf, &delta);
+    if (!rt_finite3(wgt)) {
+      rt_poison(paths, pid, p, rng);
+      return;
+    }
     if (rt_max3(wgt) > 0.0f && dot(wi, s.ng) > 0.0f) {
       thr *= wgt;
       int alive = 1;

@@ -37,6 +37,7 @@
 #define RT_COUNT_SHADOW_RAYS 0
 #define RT_COUNT_AO_RAYS 1
 #define RT_COUNT_NONFINITE 2 /* samples dropped by accumulate because they were NaN or infinite */
+#define RT_COUNT_SATURATED 3 /* samples whose addition saturated a pixel sum at FLT_MAX */
 #define RT_COUNT_SLOTS 4
 
 /* A flattened BVH node: an inner node's children are at leftFirst and leftFirst+1; a leaf

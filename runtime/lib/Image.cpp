@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cerrno>
+#include <cfloat>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -148,13 +149,26 @@ static void writePng(const std::string &Path, const std::string &Temp, int Width
     throw Error(Path + ": cannot write PNG");
 }
 
+/// The last guard of "no Inf or NaN in an image": NaN becomes 0 and +-Inf +-FLT_MAX (the
+/// renderer's sums never hold either; see accumulate.cl).
+static std::vector<float> finiteValues(const std::vector<float> &RGB) {
+  std::vector<float> Out(RGB);
+  for (float &V : Out)
+    if (std::isnan(V))
+      V = 0.0f;
+    else if (std::isinf(V))
+      V = V > 0 ? FLT_MAX : -FLT_MAX;
+  return Out;
+}
+
 void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
   std::string Ext = std::filesystem::path(Path).extension().string();
   std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
   if (Ext != ".exr" && Ext != ".png")
     throw Error(Path + ": unknown image format '" + Ext + "' (expected .png or .exr)");
+  std::vector<float> Finite = finiteValues(RGB);
   writeAtomically(Path, [&](const std::string &Temp) {
-    (Ext == ".exr" ? writeExr : writePng)(Path, Temp, Width, Height, RGB);
+    (Ext == ".exr" ? writeExr : writePng)(Path, Temp, Width, Height, Finite);
   });
 }
 

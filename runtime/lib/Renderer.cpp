@@ -4,6 +4,7 @@
 #include "texrender/TextureTiers.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -387,6 +388,7 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     Stats.ShadowRays = Counters[RT_COUNT_SHADOW_RAYS];
     Stats.AoRays = Counters[RT_COUNT_AO_RAYS];
     Stats.NonFiniteSamples = Counters[RT_COUNT_NONFINITE];
+    Stats.SaturatedSamples = Counters[RT_COUNT_SATURATED];
     Stats.Kernels = Cl->timings();
     std::vector<float> RGB(NumPixels * 3);
     for (size_t P = 0; P < NumPixels; ++P)
@@ -401,7 +403,10 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
         for (int C = 0; C < 3; ++C) {
           double M = RGB[3 * P + C];
           double S2 = (double(Sq[P].s[C]) - Spp * M * M) / (Spp - 1);
-          (*Variance)[3 * P + C] = float(std::max(0.0, S2) / Spp);
+          // A saturated sum of squares (accumulate.cl) only bounds the variance from below.
+          if (Sq[P].s[C] >= FLT_MAX)
+            S2 = DBL_MAX;
+          (*Variance)[3 * P + C] = float(std::min(std::max(0.0, S2) / Spp, double(FLT_MAX)));
         }
     }
     Stats.Seconds = now() - T0;

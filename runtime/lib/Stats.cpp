@@ -29,6 +29,7 @@ json frameJson(const FrameStats &F) {
   J["kernelSeconds"] = Sum;
   J["passes"] = F.Passes;
   J["nonFiniteSamples"] = F.NonFiniteSamples;
+  J["saturatedSamples"] = F.SaturatedSamples;
   J["bounces"] = F.Bounces;
   J["kernels"] = Kernels;
   J["rays"] = {

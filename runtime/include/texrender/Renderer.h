@@ -51,6 +51,7 @@ struct FrameStats {
   uint64_t AoRays = 0;
   uint64_t AoWorkItemsPerLaunchMax = 0;
   uint64_t NonFiniteSamples = 0; // NaN or infinite path samples, dropped from the image
+  uint64_t SaturatedSamples = 0; // finite samples that made a pixel sum saturate at FLT_MAX
   unsigned Passes = 0;
   unsigned Bounces = 0;         // bounce iterations summed over passes
   std::string Tier;             // the texture kernel that ran: interp, shape, inline, wavefront
