@@ -41,6 +41,7 @@ struct Options {
   unsigned Grid = 16;
   uint64_t Seed = 1;
   bool Host = false;
+  std::vector<cl_float4> Points;     // --points FILE: hit I's ObjectPos and WorldPos
 };
 
 /// Every input of one evaluation: the hits (Grid x materials), settings, synthetic images.
@@ -143,6 +144,8 @@ Inputs makeInputs(const LayoutInfo &Info, const Options &Opts) {
   Rng R{Opts.Seed * 0x2545F4914F6CDD1Dull + 17};
   for (unsigned I = 0; I < Opts.Grid; ++I) {
     TexccHitAttrs H = randomHit(R);
+    if (!Opts.Points.empty())
+      H.objectPos = H.worldPos = Opts.Points[I];
     for (unsigned M = 0; M < Info.NumMaterials; ++M) {
       In.Hits.push_back(H);
       In.HitMaterial.push_back(Info.OutputsPerMaterial[M] ? static_cast<cl_int>(M) : -1);
@@ -400,10 +403,19 @@ Options parseArgs(int Argc, char **Argv) {
       Opts.Seed = std::stoull(value());
     else if (A == "--host")
       Opts.Host = true;
+    else if (A == "--points") {
+      // One "x y z" per line; the grid becomes one hit per point, other attributes random.
+      std::istringstream In(readFile(value()));
+      float X, Y, Z;
+      while (In >> X >> Y >> Z)
+        Opts.Points.push_back(f4(X, Y, Z, 1.0f));
+      if (!In.eof() || Opts.Points.empty())
+        die("--points: expected lines of three numbers");
+    }
     else if (A == "--time")
       Opts.TimeReps = static_cast<unsigned>(std::stoul(value()));
     else if (A == "--help" || A == "-h") {
-      std::cout << "usage: texcc-eval OUTDIR [--grid N] [--seed S] [--host]\n"
+      std::cout << "usage: texcc-eval OUTDIR [--grid N | --points FILE] [--seed S] [--host]\n"
                    "       texcc-eval OUTDIR [OUTDIR ...] --time R [--grid N] [--seed S]\n";
       std::exit(0);
     } else if (!A.empty() && A[0] == '-')
@@ -411,6 +423,8 @@ Options parseArgs(int Argc, char **Argv) {
     else
       Opts.OutDirs.push_back(A);
   }
+  if (!Opts.Points.empty())
+    Opts.Grid = static_cast<unsigned>(Opts.Points.size());
   if (!Opts.OutDirs.empty())
     Opts.OutDir = Opts.OutDirs.front();
   if (Opts.OutDirs.size() > 1 && !Opts.TimeReps)

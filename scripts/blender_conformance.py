@@ -1,0 +1,241 @@
+#!/usr/bin/env python3
+"""blender_conformance.py: golden values of Blender's shader nodes, computed by Cycles itself.
+
+For every variant of textures/blender/ (a node with fixed settings, one or more outputs), this
+script builds the node tree in Cycles (bpy, pinned below), feeds the node from the shading
+point's Position (directly, or one coordinate of it through Separate XYZ), bakes each output
+through an Emission shader into a float image over a tilted plane, and writes
+testsuite/Inputs/blender/<variant>.json: the node's settings, the texcc function and arguments
+of each output, and the baked values (little-endian float32, base64).
+
+The positions where Cycles evaluated the node are not assumed: they are baked too (the
+Geometry node's Position through the same Emission path) and written once to
+testsuite/Inputs/blender/points.txt. The tests evaluate texcc at exactly those points.
+
+    scripts/blender_conformance.py [--only NAME ...] [--size N]
+
+On first use it installs bpy==5.0.1 into .venv/ (about 370 MB; not needed by the tests) and
+re-runs itself with .venv's Python.
+"""
+
+import argparse
+import base64
+import json
+import os
+import subprocess
+import sys
+import time
+
+BPY_VERSION = "5.0.1"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "testsuite", "Inputs", "blender")
+
+# The plane the points lie on: P(u, v) = ORIGIN + u * AXIS_U + v * AXIS_V, (u, v) in [0, 1]^2.
+# Tilted, so that x, y and z all vary; it spans about four lattice cells per axis at scale 1.
+ORIGIN = (-1.3, -0.7, 0.2)
+AXIS_U = (4.0, 0.0, 1.0)
+AXIS_V = (0.0, 4.0, -1.5)
+
+
+def ensure_bpy():
+    try:
+        import bpy  # noqa: F401
+        if bpy.app.version_string != BPY_VERSION:
+            sys.exit("blender_conformance: bpy %s found, %s pinned" %
+                     (bpy.app.version_string, BPY_VERSION))
+        return
+    except ImportError:
+        pass
+    venv_python = os.path.join(ROOT, ".venv", "bin", "python")
+    if os.path.realpath(sys.executable) == os.path.realpath(venv_python) and \
+            os.environ.get("TEXCC_BPY_INSTALLED"):
+        sys.exit("blender_conformance: bpy==%s did not install into .venv" % BPY_VERSION)
+    if not os.path.exists(venv_python):
+        subprocess.check_call([sys.executable, "-m", "venv", os.path.join(ROOT, ".venv")])
+    subprocess.check_call([venv_python, "-m", "pip", "install", "bpy==" + BPY_VERSION])
+    os.environ["TEXCC_BPY_INSTALLED"] = "1"
+    os.execv(venv_python, [venv_python] + sys.argv)
+
+
+# --- Variants -------------------------------------------------------------------------------
+# A variant: name; the Blender node (bl_idname, properties, unlinked input values, and which
+# inputs are fed from the position: "P" the vector, "P.x"/"P.y"/"P.z" one coordinate); the
+# texcc library file; its outputs, each (Blender socket, texcc function, channels); and the
+# texcc arguments (the same values; "P" and "P.x" etc. become graph references).
+
+VARIANTS = []
+
+
+def variant(name, node, props, inputs, feeds, source, outputs, args):
+    VARIANTS.append(dict(name=name, node=node, props=props, inputs=inputs, feeds=feeds,
+                         source=source, outputs=outputs, args=args))
+
+
+NOISE_TYPES = {"MULTIFRACTAL": 0, "FBM": 1, "HYBRID_MULTIFRACTAL": 2, "RIDGED_MULTIFRACTAL": 3,
+               "HETERO_TERRAIN": 4}
+
+
+def noise_variant(name, dims, ntype, normalize=True, scale=1.5, detail=3.0, roughness=0.5,
+                  lacunarity=2.0, offset=0.0, gain=1.0, distortion=0.0, w=0.0):
+    inputs = {"Scale": scale, "Detail": detail, "Roughness": roughness,
+              "Lacunarity": lacunarity, "Offset": offset, "Gain": gain,
+              "Distortion": distortion}
+    args = {"vector": "P"}
+    if dims == 4:
+        inputs["W"] = w
+        args["w"] = w
+    args.update({"scale": scale, "detail": detail, "roughness": roughness,
+                 "lacunarity": lacunarity, "offset": offset, "gain": gain,
+                 "distortion": distortion, "type": NOISE_TYPES[ntype],
+                 "normalize": 1 if normalize else 0})
+    variant(name, "ShaderNodeTexNoise",
+            {"noise_dimensions": "%dD" % dims, "noise_type": ntype, "normalize": normalize},
+            inputs, {"Vector": "P"}, "noise.cl",
+            [("Factor", "blNoise%dDFac" % dims, 1), ("Color", "blNoise%dDColor" % dims, 3)], args)
+
+
+noise_variant("noise3d-fbm", 3, "FBM")
+noise_variant("noise3d-fbm-fractional", 3, "FBM", detail=2.6, roughness=0.6, lacunarity=2.3)
+noise_variant("noise3d-fbm-raw", 3, "FBM", normalize=False, detail=4.0)
+noise_variant("noise3d-fbm-distortion", 3, "FBM", distortion=0.7)
+noise_variant("noise3d-multifractal", 3, "MULTIFRACTAL", detail=2.5)
+noise_variant("noise3d-hybrid", 3, "HYBRID_MULTIFRACTAL", detail=3.5, offset=0.5, gain=1.3)
+noise_variant("noise3d-ridged", 3, "RIDGED_MULTIFRACTAL", detail=3.0, offset=1.0, gain=2.0)
+noise_variant("noise3d-hetero", 3, "HETERO_TERRAIN", detail=2.5, offset=0.4)
+noise_variant("noise3d-fbm-detail8", 3, "FBM", detail=8.0, scale=3.0)
+noise_variant("noise2d-fbm", 2, "FBM", detail=2.5, distortion=0.3)
+noise_variant("noise2d-ridged", 2, "RIDGED_MULTIFRACTAL", offset=1.0, gain=2.0)
+noise_variant("noise4d-fbm", 4, "FBM", detail=2.5, w=0.37, distortion=0.2)
+noise_variant("noise4d-hetero", 4, "HETERO_TERRAIN", detail=2.0, offset=0.3, w=-1.2)
+
+
+# --- Baking ---------------------------------------------------------------------------------
+
+def setup_scene(size):
+    import bpy
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    scene.cycles.device = "CPU"
+    scene.cycles.samples = 1
+    scene.render.bake.margin = 0
+    mesh = bpy.data.meshes.new("plane")
+    o, a, b = ORIGIN, AXIS_U, AXIS_V
+    corners = [o, tuple(o[i] + a[i] for i in range(3)),
+               tuple(o[i] + a[i] + b[i] for i in range(3)), tuple(o[i] + b[i] for i in range(3))]
+    mesh.from_pydata(corners, [], [(0, 1, 2, 3)])
+    uv = mesh.uv_layers.new(name="UV")
+    for loop, coord in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)]):
+        uv.data[loop].uv = coord
+    obj = bpy.data.objects.new("plane", mesh)
+    scene.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    obj.select_set(True)
+    material = bpy.data.materials.new("probe")
+    material.use_nodes = True
+    mesh.materials.append(material)
+    image = bpy.data.images.new("bake", size, size, float_buffer=True, alpha=True)
+    image.colorspace_settings.name = "Non-Color"
+    return material, image
+
+
+def bake(material, image, build):
+    """Bakes Emission(color = build(tree, position_socket)) and returns the RGB per texel."""
+    import bpy
+    import numpy as np
+    tree = material.node_tree
+    tree.nodes.clear()
+    geometry = tree.nodes.new("ShaderNodeNewGeometry")
+    emission = tree.nodes.new("ShaderNodeEmission")
+    output = tree.nodes.new("ShaderNodeOutputMaterial")
+    tree.links.new(build(tree, geometry.outputs["Position"]), emission.inputs["Color"])
+    tree.links.new(emission.outputs["Emission"], output.inputs["Surface"])
+    target = tree.nodes.new("ShaderNodeTexImage")
+    target.image = image
+    tree.nodes.active = target
+    bpy.ops.object.bake(type="EMIT")
+    pixels = np.empty(len(image.pixels), np.float32)
+    image.pixels.foreach_get(pixels)
+    return pixels.reshape(-1, 4)[:, :3].copy()
+
+
+def socket_named(sockets, key):
+    """A socket by identifier (unique: "Value_001"), else by its displayed name."""
+    for s in sockets:
+        if s.identifier == key:
+            return s
+    for s in sockets:
+        if s.name == key and s.enabled:
+            return s
+    raise KeyError(key)
+
+
+def build_variant(v, socket):
+    def build(tree, position):
+        node = tree.nodes.new(v["node"])
+        # Inputs first: a property may hide sockets (Noise's Offset under fBM).
+        for key, value in v["inputs"].items():
+            socket_named(node.inputs, key).default_value = value
+        for key, value in v["props"].items():
+            setattr(node, key, value)
+        separate = None
+        for key, feed in v["feeds"].items():
+            if feed == "P":
+                tree.links.new(position, socket_named(node.inputs, key))
+            else:
+                if separate is None:
+                    separate = tree.nodes.new("ShaderNodeSeparateXYZ")
+                    tree.links.new(position, separate.inputs[0])
+                tree.links.new(separate.outputs[feed[-1].upper()], socket_named(node.inputs, key))
+        return socket_named(node.outputs, socket)
+    return build
+
+
+def encode(values):
+    import numpy as np
+    return base64.b64encode(np.ascontiguousarray(values, dtype="<f4").tobytes()).decode("ascii")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--only", nargs="*", help="variant names (default: all)")
+    ap.add_argument("--size", type=int, default=48, help="texels per side (points: size^2)")
+    args = ap.parse_args()
+    ensure_bpy()
+    import bpy
+    import numpy as np
+    start = time.time()
+    os.makedirs(OUT, exist_ok=True)
+    material, image = setup_scene(args.size)
+    points = bake(material, image, lambda tree, position: position)
+    # The baked Position is where Cycles shaded; it must lie on the plane near each texel centre.
+    n = args.size
+    centres = np.array([[ORIGIN[k] + (i + 0.5) / n * AXIS_U[k] + (j + 0.5) / n * AXIS_V[k]
+                         for k in range(3)] for j in range(n) for i in range(n)])
+    drift = float(np.abs(points - centres).max())
+    if drift > 0.01:
+        sys.exit("blender_conformance: baked positions are %g from the texel centres" % drift)
+    with open(os.path.join(OUT, "points.txt"), "w") as f:
+        f.write("".join("%.9g %.9g %.9g\n" % tuple(float(c) for c in p) for p in points))
+    chosen = [v for v in VARIANTS if not args.only or v["name"] in args.only]
+    for v in chosen:
+        outputs = []
+        for socket, fn, channels in v["outputs"]:
+            values = bake(material, image, build_variant(v, socket))[:, :channels]
+            outputs.append({"socket": socket, "fn": fn, "channels": channels,
+                            "values": encode(values)})
+        fixture = {"variant": v["name"], "blender": BPY_VERSION,
+                   "node": {"type": v["node"], "properties": v["props"], "inputs": v["inputs"],
+                            "fed_from_position": v["feeds"]},
+                   "source": v["source"], "args": v["args"], "points": "points.txt",
+                   "outputs": outputs}
+        with open(os.path.join(OUT, v["name"] + ".json"), "w") as f:
+            json.dump(fixture, f, indent=1)
+            f.write("\n")
+    print("blender_conformance: %d variants, %d points each, bpy %s, %.1f s (position drift "
+          "from texel centres %.3g)" % (len(chosen), n * n, bpy.app.version_string,
+                                         time.time() - start, drift))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,222 @@
+#!/usr/bin/env python3
+"""compare.py: texcc's Blender nodes (textures/blender/) against the Cycles fixtures.
+
+Each fixture (written by scripts/blender_conformance.py) holds one node variant: the texcc
+function and arguments of each output and the values Cycles baked at the points of points.txt.
+This script puts every output of the given fixtures in one graph (one material per output),
+compiles it with texcc, evaluates it at exactly those points with texcc-eval (on the OpenCL
+device, or with --host through the host target's C++), and compares per output channel.
+
+Points near a discontinuity are found without looking at the error: texcc's own value at the
+point is compared with its values at the six points +-H along each axis (H = 1e-5); a jump above
+JUMP (0.01) means a discontinuity (a Voronoi cell border, a Constant ramp step, a floor) lies
+within H, where a float rounding in either renderer may pick the other side. Such points are
+counted and reported separately ("near a discontinuity"); they are never dropped silently, and
+their error is reported too. Every other point must be within --tol of Cycles.
+
+    compare.py --texcc T --eval E --src ROOT --work DIR [--host] [--tol 1e-4]
+               [--report FILE.md] FIXTURE.json ...
+
+Prints one line per (variant, output) and exits 1 if any misses the tolerance.
+"""
+
+import argparse
+import base64
+import json
+import math
+import os
+import struct
+import subprocess
+import sys
+
+H = 1e-5
+JUMP = 0.01
+NEAR_ZERO = 1e-6
+
+
+def run(cmd):
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        sys.exit("command failed (%d): %s\n%s%s" % (r.returncode, " ".join(cmd), r.stdout,
+                                                    r.stderr))
+    return r.stdout
+
+
+def decode(text, channels):
+    raw = base64.b64decode(text)
+    flat = struct.unpack("<%df" % (len(raw) // 4), raw)
+    return [flat[i:i + channels] for i in range(0, len(flat), channels)]
+
+
+def read_points(path):
+    with open(path) as f:
+        return [tuple(float(x) for x in line.split()) for line in f if line.strip()]
+
+
+def graph_arg(value):
+    """A fixture argument as a graph.json argument: "P" is the shading point."""
+    if value == "P":
+        return {"attr": "ObjectPos"}
+    if isinstance(value, str) and value.startswith("P."):
+        return {"node": "position_" + value[2]}
+    return value
+
+
+def build_graph(fixtures, src):
+    lib = os.path.join(src, "textures", "blender")
+    sources, nodes, materials, outputs = [], [], {}, []
+    uses_components = False
+    for fx in fixtures:
+        path = os.path.join(lib, fx["source"])
+        if path not in sources:
+            sources.append(path)
+        args = {k: graph_arg(v) for k, v in fx["args"].items()}
+        uses_components |= any(isinstance(v, str) and v.startswith("P.")
+                               for v in fx["args"].values())
+        for out in fx["outputs"]:
+            node_id = "%s_%s" % (fx["variant"].replace("-", "_"), out["socket"].lower())
+            nodes.append({"id": node_id, "fn": out["fn"], "args": args})
+            materials["m_" + node_id] = {"bsdf": "diffuse", "color": {"node": node_id}}
+            outputs.append((fx, out, "m_" + node_id))
+    if uses_components:
+        conv = os.path.join(lib, "converter.cl")
+        if conv not in sources:
+            sources.append(conv)
+        for axis in "xyz":
+            nodes.append({"id": "position_" + axis, "fn": "blSeparateXYZ" + axis.upper(),
+                          "args": {"vector": {"attr": "ObjectPos"}}})
+    return {"texcc": 1, "sources": sources, "nodes": nodes, "materials": materials}, outputs
+
+
+def evaluate(args, out_dir, points, work, tag):
+    path = os.path.join(work, "points-%s.txt" % tag)
+    with open(path, "w") as f:
+        f.write("".join("%.9g %.9g %.9g\n" % p for p in points))
+    cmd = [args.eval, out_dir, "--points", path] + (["--host"] if args.host else [])
+    values = {}
+    for line in run(cmd).splitlines():
+        hit, mat, k, x, y, z, w = line.split()
+        if k == "0":
+            values[(int(hit), int(mat))] = (float(x), float(y), float(z))
+    return values
+
+
+def neighbours(p):
+    for axis in range(3):
+        for sign in (-1.0, 1.0):
+            q = list(p)
+            q[axis] += sign * H
+            yield tuple(q)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--texcc", required=True)
+    ap.add_argument("--eval", required=True)
+    ap.add_argument("--src", required=True)
+    ap.add_argument("--work", required=True)
+    ap.add_argument("--host", action="store_true")
+    ap.add_argument("--tol", type=float, default=1e-4)
+    ap.add_argument("--report", help="write the conformance report (markdown) here")
+    ap.add_argument("fixtures", nargs="+")
+    args = ap.parse_args()
+
+    fixtures = []
+    for path in args.fixtures:
+        with open(path) as f:
+            fixtures.append(json.load(f))
+    points = read_points(os.path.join(os.path.dirname(os.path.abspath(args.fixtures[0])),
+                                      fixtures[0]["points"]))
+    os.makedirs(args.work, exist_ok=True)
+    graph, outputs = build_graph(fixtures, args.src)
+    graph_path = os.path.join(args.work, "graph.json")
+    with open(graph_path, "w") as f:
+        json.dump(graph, f, indent=1)
+    out_dir = os.path.join(args.work, "out")
+    target = ["--target=host"] if args.host else []
+    run([args.texcc, "--graph", graph_path, "-o", out_dir] + target)
+    with open(os.path.join(out_dir, "layout.json")) as f:
+        material_index = {m["name"]: m["index"] for m in json.load(f)["materials"]}
+
+    values = evaluate(args, out_dir, points, args.work, "exact")
+    near = [p for pt in points for p in neighbours(pt)]
+    near_values = evaluate(args, out_dir, near, args.work, "near")
+
+    failures, rows = 0, []
+    for fx, out, material in outputs:
+        m = material_index[material]
+        golden = decode(out["values"], out["channels"])
+        errors, jumps, worst = [], 0, None
+        max_smooth = max_near = 0.0
+        for i, p in enumerate(points):
+            got = values[(i, m)][:out["channels"]]
+            want = golden[i]
+            err = max(abs(a - b) if math.isfinite(a) and math.isfinite(b) else
+                      (0.0 if a == b else math.inf) for a, b in zip(got, want))
+            jump = max(abs(near_values[(6 * i + j, m)][c] - got[c])
+                       for j in range(6) for c in range(out["channels"]))
+            errors.append(err)
+            if not jump <= JUMP:
+                jumps += 1
+                max_near = max(max_near, err)
+            else:
+                if worst is None or err > worst[0]:
+                    worst = (err, i, got, want)
+                max_smooth = max(max_smooth, err)
+        smooth = len(points) - jumps
+        mean = sum(errors) / len(errors)
+        within = sum(1 for e in errors if e <= NEAR_ZERO) / len(errors)
+        ok = max_smooth <= args.tol
+        failures += not ok
+        name = "%s %s" % (fx["variant"], out["socket"])
+        print("%s: %s: %d points (%d near a discontinuity): max abs error %.3g (near a "
+              "discontinuity %.3g), mean %.3g, within 1e-6 %.1f%%" %
+              ("OK" if ok else "FAIL", name, len(points), jumps, max_smooth, max_near, mean,
+               100.0 * within))
+        if not ok and worst:
+            print("  worst at point %d %s: texcc %s, Cycles %s" %
+                  (worst[1], points[worst[1]], worst[2], worst[3]))
+        rows.append((fx, out, len(points), jumps, max_smooth, max_near, mean, within, worst, ok))
+    if args.report:
+        write_report(args.report, rows, points, args.host, args.tol)
+    print("blender conformance: %d of %d outputs within %g of Cycles" %
+          (len(outputs) - failures, len(outputs), args.tol))
+    sys.exit(1 if failures else 0)
+
+
+def fmt_vec(v):
+    return "(" + ", ".join("%.6g" % x for x in v) + ")"
+
+
+def write_report(path, rows, points, host, tol):
+    lines = [
+        "# Blender nodes: texcc against Cycles",
+        "",
+        "Generated by `testsuite/Inputs/blender/compare.py --report` (target: %s) from the fixtures"
+        % ("host C++" if host else "OpenCL device"),
+        "that `scripts/blender_conformance.py` baked with Cycles (bpy %s). Do not edit by hand."
+        % (rows[0][0]["blender"] if rows else "?"),
+        "",
+        "Per output: the points compared; those near a discontinuity (texcc's value jumps by more",
+        "than %g within %g of the point: cell borders, Constant steps), counted apart and never" %
+        (JUMP, H),
+        "dropped; the max absolute error over the other points (target <= %g per channel) and" % tol,
+        "over the points near a discontinuity; the mean absolute error and the share of points",
+        "within 1e-6 over all points; the worst point away from discontinuities.",
+        "",
+        "| variant | output | points | near discontinuity | max abs error | max near discontinuity "
+        "| mean abs error | within 1e-6 | worst point: position, texcc, Cycles | target |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for fx, out, n, jumps, max_smooth, max_near, mean, within, worst, ok in rows:
+        w = ("%s, %s, %s" % (fmt_vec(points[worst[1]]), fmt_vec(worst[2]), fmt_vec(worst[3]))
+             if worst else "-")
+        lines.append("| %s | %s | %d | %d | %.3g | %.3g | %.3g | %.1f%% | %s | %s |" % (
+            fx["variant"], out["socket"], n, jumps, max_smooth, max_near, mean, 100 * within, w,
+            "met" if ok else "**missed**"))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,380 @@
+/* blender/noise.cl: Blender's Noise Texture node (Cycles, Blender 5.0), value for value.
+ *
+ * Perlin gradient noise on the integer lattice, hashed with Bob Jenkins' lookup3 (the hash
+ * Cycles uses, so the lattice gradients are Blender's), scaled to about [-1, 1] per dimension,
+ * summed over octaves by one of five fractal types. Detail may be fractional: the last octave is
+ * blended in by the fractional part. Distortion displaces the lookup point by noise taken at
+ * fixed seed offsets; Color repeats the fractal at two more seed offsets (its red channel is
+ * Fac). As in the node, the lookup is at Vector * Scale (and W * Scale in 4D).
+ *
+ * One texture function per (dimensions, output), since a graph node has one output:
+ *
+ *   float  blNoise2DFac  (float3 vector, float scale, float detail, float roughness,
+ *                         float lacunarity, float offset, float gain, float distortion,
+ *                         int type, int normalize)                    2D: uses vector.xy
+ *   float3 blNoise2DColor(same parameters)
+ *   float  blNoise3DFac  (same parameters)
+ *   float3 blNoise3DColor(same parameters)
+ *   float  blNoise4DFac  (float3 vector, float w, then the same parameters as above)
+ *   float3 blNoise4DColor(float3 vector, float w, ...)
+ *
+ * Parameters (the node's sockets and properties; defaults are Blender's):
+ *
+ *   | name       | type   | default | meaning                                                |
+ *   |------------|--------|---------|--------------------------------------------------------|
+ *   | vector     | float3 | -       | lookup point; Blender's default is Generated coordinates |
+ *   | w          | float  | 0.0     | fourth coordinate (4D only)                            |
+ *   | scale      | float  | 5.0     | lattice cells per unit of vector                       |
+ *   | detail     | float  | 2.0     | octaves beyond the first, clamped to [0, 15]; fractional blends |
+ *   | roughness  | float  | 0.5     | amplitude factor per octave (negative is taken as 0)   |
+ *   | lacunarity | float  | 2.0     | frequency factor per octave                            |
+ *   | offset     | float  | 0.0     | Hybrid/Ridged Multifractal and Hetero Terrain only     |
+ *   | gain       | float  | 1.0     | Hybrid and Ridged Multifractal only                    |
+ *   | distortion | float  | 0.0     | amount of domain warping                               |
+ *   | type       | int    | 1       | 0 Multifractal, 1 fBM, 2 Hybrid Multifractal,          |
+ *   |            |        |         | 3 Ridged Multifractal, 4 Hetero Terrain (Blender's enum) |
+ *   | normalize  | int    | 1       | fBM only: 1 maps the sum to [0, 1], 0 leaves it about [-1, 1] |
+ */
+
+uint blRot(uint x, int k) { return (x << k) | (x >> (32 - k)); }
+
+/* lookup3's final mix of (a, b, c); returns c. */
+uint blHashFinal(uint a, uint b, uint c) {
+  c ^= b;
+  c -= blRot(b, 14);
+  a ^= c;
+  a -= blRot(c, 11);
+  b ^= a;
+  b -= blRot(a, 25);
+  c ^= b;
+  c -= blRot(b, 16);
+  a ^= c;
+  a -= blRot(c, 4);
+  b ^= a;
+  b -= blRot(a, 14);
+  c ^= b;
+  c -= blRot(b, 24);
+  return c;
+}
+
+/* lookup3 of 2..4 32-bit words: the seed is 0xdeadbeef plus the length in bytes plus 13. */
+uint blHash2(uint x, uint y) {
+  uint s = 0xdeadbeefU + 8U + 13U;
+  return blHashFinal(s + x, s + y, s);
+}
+
+uint blHash3(uint x, uint y, uint z) {
+  uint s = 0xdeadbeefU + 12U + 13U;
+  return blHashFinal(s + x, s + y, s + z);
+}
+
+uint blHash4(uint x, uint y, uint z, uint w) {
+  uint s = 0xdeadbeefU + 16U + 13U;
+  uint a = s + x, b = s + y, c = s + z;
+  a -= c; a ^= blRot(c, 4); c += b;
+  b -= a; b ^= blRot(a, 6); a += c;
+  c -= b; c ^= blRot(b, 8); b += a;
+  a -= c; a ^= blRot(c, 16); c += b;
+  b -= a; b ^= blRot(a, 19); a += c;
+  c -= b; c ^= blRot(b, 4); b += a;
+  return blHashFinal(a + w, b, c);
+}
+
+/* A hash mapped to [0, 1] as Cycles does (times 1 / 0xFFFFFFFF rounded to float, i.e. 2^-32). */
+float blHashToUnit(uint h) { return (float)h * (1.0f / 4294967296.0f); }
+
+float blHashFloat2(float x, float y) { return blHashToUnit(blHash2(as_uint(x), as_uint(y))); }
+
+/* Seed offsets in [100, 200] that decorrelate distortion and colour channels. */
+float blSeedOffset(float seed, float channel) { return 100.0f + blHashFloat2(seed, channel) * 100.0f; }
+
+float4 blSeedOffset4(float seed) {
+  return (float4)(blSeedOffset(seed, 0.0f), blSeedOffset(seed, 1.0f), blSeedOffset(seed, 2.0f),
+                  blSeedOffset(seed, 3.0f));
+}
+
+float blFade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+
+float blNegateIf(float v, int cond) { return cond ? -v : v; }
+
+/* floor(x) as an int, and the fraction x - floor(x) (Cycles' floorfrac). */
+float blFloorFrac(float x, int *i) {
+  float f = floor(x);
+  *i = (int)f;
+  return x - f;
+}
+
+float blGrad2(uint hash, float x, float y) {
+  int h = (int)(hash & 7U);
+  float u = h < 4 ? x : y;
+  float v = 2.0f * (h < 4 ? y : x);
+  return blNegateIf(u, h & 1) + blNegateIf(v, h & 2);
+}
+
+float blGrad3(uint hash, float x, float y, float z) {
+  int h = (int)(hash & 15U);
+  float u = h < 8 ? x : y;
+  float vt = (h == 12 || h == 14) ? x : z;
+  float v = h < 4 ? y : vt;
+  return blNegateIf(u, h & 1) + blNegateIf(v, h & 2);
+}
+
+float blGrad4(uint hash, float x, float y, float z, float w) {
+  int h = (int)(hash & 31U);
+  float u = h < 24 ? x : y;
+  float v = h < 16 ? y : z;
+  float s = h < 8 ? z : w;
+  return blNegateIf(u, h & 1) + blNegateIf(v, h & 2) + blNegateIf(s, h & 4);
+}
+
+float blMix(float a, float b, float t) { return a + t * (b - a); }
+
+float blPerlin2(float x, float y) {
+  int X, Y;
+  float fx = blFloorFrac(x, &X), fy = blFloorFrac(y, &Y);
+  float u = blFade(fx), v = blFade(fy);
+  uint X0 = (uint)X, X1 = (uint)(X + 1), Y0 = (uint)Y, Y1 = (uint)(Y + 1);
+  float v0 = blGrad2(blHash2(X0, Y0), fx, fy);
+  float v1 = blGrad2(blHash2(X1, Y0), fx - 1.0f, fy);
+  float v2 = blGrad2(blHash2(X0, Y1), fx, fy - 1.0f);
+  float v3 = blGrad2(blHash2(X1, Y1), fx - 1.0f, fy - 1.0f);
+  return blMix(blMix(v0, v1, u), blMix(v2, v3, u), v);
+}
+
+/* The 8 corner gradients of one 3D lattice cell (z = Z and Z + 1 given), blended. */
+float blPerlin3(float x, float y, float z) {
+  int X, Y, Z;
+  float fx = blFloorFrac(x, &X), fy = blFloorFrac(y, &Y), fz = blFloorFrac(z, &Z);
+  float u = blFade(fx), v = blFade(fy), w = blFade(fz);
+  uint X0 = (uint)X, X1 = (uint)(X + 1), Y0 = (uint)Y, Y1 = (uint)(Y + 1);
+  uint Z0 = (uint)Z, Z1 = (uint)(Z + 1);
+  float gx = fx - 1.0f, gy = fy - 1.0f, gz = fz - 1.0f;
+  float a = blMix(blMix(blGrad3(blHash3(X0, Y0, Z0), fx, fy, fz),
+                        blGrad3(blHash3(X1, Y0, Z0), gx, fy, fz), u),
+                  blMix(blGrad3(blHash3(X0, Y1, Z0), fx, gy, fz),
+                        blGrad3(blHash3(X1, Y1, Z0), gx, gy, fz), u), v);
+  float b = blMix(blMix(blGrad3(blHash3(X0, Y0, Z1), fx, fy, gz),
+                        blGrad3(blHash3(X1, Y0, Z1), gx, fy, gz), u),
+                  blMix(blGrad3(blHash3(X0, Y1, Z1), fx, gy, gz),
+                        blGrad3(blHash3(X1, Y1, Z1), gx, gy, gz), u), v);
+  return blMix(a, b, w);
+}
+
+/* One w-slice (W given) of the 4D lattice cell, blended over x, y, z. */
+float blPerlin4Slice(int X, int Y, int Z, uint W, float fx, float fy, float fz, float fw,
+                     float u, float v, float t) {
+  uint X0 = (uint)X, X1 = (uint)(X + 1), Y0 = (uint)Y, Y1 = (uint)(Y + 1);
+  uint Z0 = (uint)Z, Z1 = (uint)(Z + 1);
+  float gx = fx - 1.0f, gy = fy - 1.0f, gz = fz - 1.0f;
+  float a = blMix(blMix(blGrad4(blHash4(X0, Y0, Z0, W), fx, fy, fz, fw),
+                        blGrad4(blHash4(X1, Y0, Z0, W), gx, fy, fz, fw), u),
+                  blMix(blGrad4(blHash4(X0, Y1, Z0, W), fx, gy, fz, fw),
+                        blGrad4(blHash4(X1, Y1, Z0, W), gx, gy, fz, fw), u), v);
+  float b = blMix(blMix(blGrad4(blHash4(X0, Y0, Z1, W), fx, fy, gz, fw),
+                        blGrad4(blHash4(X1, Y0, Z1, W), gx, fy, gz, fw), u),
+                  blMix(blGrad4(blHash4(X0, Y1, Z1, W), fx, gy, gz, fw),
+                        blGrad4(blHash4(X1, Y1, Z1, W), gx, gy, gz, fw), u), v);
+  return blMix(a, b, t);
+}
+
+float blPerlin4(float x, float y, float z, float w) {
+  int X, Y, Z, W;
+  float fx = blFloorFrac(x, &X), fy = blFloorFrac(y, &Y), fz = blFloorFrac(z, &Z);
+  float fw = blFloorFrac(w, &W);
+  float u = blFade(fx), v = blFade(fy), t = blFade(fz), s = blFade(fw);
+  float a = blPerlin4Slice(X, Y, Z, (uint)W, fx, fy, fz, fw, u, v, t);
+  float b = blPerlin4Slice(X, Y, Z, (uint)(W + 1), fx, fy, fz, fw - 1.0f, u, v, t);
+  return blMix(a, b, s);
+}
+
+/* Signed noise of dimension dims (2..4) at p: wrapped every 100000 as Blender does, then
+ * scaled by the factors that make each dimension's range about [-1, 1]. */
+float blSnoise(float4 p, int dims) {
+  float x = fmod(p.x, 100000.0f), y = fmod(p.y, 100000.0f);
+  float z = fmod(p.z, 100000.0f), w = fmod(p.w, 100000.0f);
+  if (dims == 2)
+    return 0.6616f * blPerlin2(x, y);
+  if (dims == 3)
+    return 0.9820f * blPerlin3(x, y, z);
+  return 0.8344f * blPerlin4(x, y, z, w);
+}
+float blNoiseFbm(float4 p, int dims, float detail, float roughness, float lacunarity,
+                 int normalize) {
+  float fscale = 1.0f, amp = 1.0f, maxamp = 0.0f, sum = 0.0f;
+  for (int i = 0; i <= (int)detail; i++) {
+    float t = blSnoise(fscale * p, dims);
+    sum += t * amp;
+    maxamp += amp;
+    amp *= roughness;
+    fscale *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f) {
+    float t = blSnoise(fscale * p, dims);
+    float sum2 = sum + t * amp;
+    return normalize ? blMix(0.5f * sum / maxamp + 0.5f, 0.5f * sum2 / (maxamp + amp) + 0.5f, rmd)
+                     : blMix(sum, sum2, rmd);
+  }
+  return normalize ? 0.5f * sum / maxamp + 0.5f : sum;
+}
+
+float blNoiseMultiFractal(float4 p, int dims, float detail, float roughness, float lacunarity) {
+  float value = 1.0f, pwr = 1.0f;
+  for (int i = 0; i <= (int)detail; i++) {
+    value *= (pwr * blSnoise(p, dims) + 1.0f);
+    pwr *= roughness;
+    p *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f)
+    value *= (rmd * pwr * blSnoise(p, dims) + 1.0f);
+  return value;
+}
+
+float blNoiseHeteroTerrain(float4 p, int dims, float detail, float roughness, float lacunarity,
+                           float offset) {
+  float pwr = roughness;
+  float value = offset + blSnoise(p, dims);
+  p *= lacunarity;
+  for (int i = 1; i <= (int)detail; i++) {
+    float increment = (blSnoise(p, dims) + offset) * pwr * value;
+    value += increment;
+    pwr *= roughness;
+    p *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f) {
+    float increment = (blSnoise(p, dims) + offset) * pwr * value;
+    value += rmd * increment;
+  }
+  return value;
+}
+
+float blNoiseHybridMultiFractal(float4 p, int dims, float detail, float roughness,
+                                float lacunarity, float offset, float gain) {
+  float pwr = 1.0f, value = 0.0f, weight = 1.0f;
+  for (int i = 0; weight > 0.001f && i <= (int)detail; i++) {
+    if (weight > 1.0f)
+      weight = 1.0f;
+    float signal = (blSnoise(p, dims) + offset) * pwr;
+    pwr *= roughness;
+    value += weight * signal;
+    weight *= gain * signal;
+    p *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f && weight > 0.001f) {
+    if (weight > 1.0f)
+      weight = 1.0f;
+    float signal = (blSnoise(p, dims) + offset) * pwr;
+    value += rmd * weight * signal;
+  }
+  return value;
+}
+
+float blNoiseRidgedMultiFractal(float4 p, int dims, float detail, float roughness,
+                                float lacunarity, float offset, float gain) {
+  float pwr = roughness;
+  float signal = offset - fabs(blSnoise(p, dims));
+  signal *= signal;
+  float value = signal;
+  for (int i = 1; i <= (int)detail; i++) {
+    p *= lacunarity;
+    float weight = clamp(signal * gain, 0.0f, 1.0f);
+    signal = offset - fabs(blSnoise(p, dims));
+    signal *= signal;
+    signal *= weight;
+    value += signal * pwr;
+    pwr *= roughness;
+  }
+  return value;
+}
+
+float blNoiseSelect(float4 p, int dims, float detail, float roughness, float lacunarity,
+                    float offset, float gain, int type, int normalize) {
+  if (type == 0)
+    return blNoiseMultiFractal(p, dims, detail, roughness, lacunarity);
+  if (type == 2)
+    return blNoiseHybridMultiFractal(p, dims, detail, roughness, lacunarity, offset, gain);
+  if (type == 3)
+    return blNoiseRidgedMultiFractal(p, dims, detail, roughness, lacunarity, offset, gain);
+  if (type == 4)
+    return blNoiseHeteroTerrain(p, dims, detail, roughness, lacunarity, offset);
+  return blNoiseFbm(p, dims, detail, roughness, lacunarity, normalize);
+}
+
+/* Keeps the components a dimension uses (2D: x, y; 3D: x, y, z; 4D: all), zero elsewhere, so
+ * that seed offsets added to unused components change nothing. */
+float4 blNoiseMask(float4 p, int dims) {
+  if (dims == 2)
+    return (float4)(p.x, p.y, 0.0f, 0.0f);
+  if (dims == 3)
+    return (float4)(p.x, p.y, p.z, 0.0f);
+  return p;
+}
+
+/* The node's evaluation: channel 0 is Fac, 1 and 2 Color's green and blue. Blender numbers the
+ * seed offsets of distortion first (one per dimension: seeds 0..dims-1), then those of the two
+ * colour channels (seeds dims and dims + 1). */
+float blNoiseTexture(float4 co, int dims, float scale, float detail, float roughness,
+                     float lacunarity, float offset, float gain, float distortion, int type,
+                     int normalize, int channel) {
+  detail = clamp(detail, 0.0f, 15.0f);
+  roughness = fmax(roughness, 0.0f);
+  float4 p = blNoiseMask(co * scale, dims);
+  if (distortion != 0.0f) {
+    float4 d = (float4)(0.0f, 0.0f, 0.0f, 0.0f);
+    d.x = blSnoise(p + blNoiseMask(blSeedOffset4(0.0f), dims), dims);
+    d.y = blSnoise(p + blNoiseMask(blSeedOffset4(1.0f), dims), dims);
+    if (dims >= 3)
+      d.z = blSnoise(p + blNoiseMask(blSeedOffset4(2.0f), dims), dims);
+    if (dims == 4)
+      d.w = blSnoise(p + blNoiseMask(blSeedOffset4(3.0f), dims), dims);
+    p += d * distortion;
+  }
+  if (channel > 0)
+    p += blNoiseMask(blSeedOffset4((float)(dims + channel - 1)), dims);
+  return blNoiseSelect(p, dims, detail, roughness, lacunarity, offset, gain, type, normalize);
+}
+
+#define BL_NOISE_ARGS scale, detail, roughness, lacunarity, offset, gain, distortion, type, normalize
+
+float blNoise2DFac(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                   float offset, float gain, float distortion, int type, int normalize) {
+  return blNoiseTexture((float4)(vector, 0.0f), 2, BL_NOISE_ARGS, 0);
+}
+
+float3 blNoise2DColor(float3 vector, float scale, float detail, float roughness,
+                      float lacunarity, float offset, float gain, float distortion, int type,
+                      int normalize) {
+  float4 co = (float4)(vector, 0.0f);
+  return (float3)(blNoiseTexture(co, 2, BL_NOISE_ARGS, 0), blNoiseTexture(co, 2, BL_NOISE_ARGS, 1),
+                  blNoiseTexture(co, 2, BL_NOISE_ARGS, 2));
+}
+
+float blNoise3DFac(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                   float offset, float gain, float distortion, int type, int normalize) {
+  return blNoiseTexture((float4)(vector, 0.0f), 3, BL_NOISE_ARGS, 0);
+}
+
+float3 blNoise3DColor(float3 vector, float scale, float detail, float roughness,
+                      float lacunarity, float offset, float gain, float distortion, int type,
+                      int normalize) {
+  float4 co = (float4)(vector, 0.0f);
+  return (float3)(blNoiseTexture(co, 3, BL_NOISE_ARGS, 0), blNoiseTexture(co, 3, BL_NOISE_ARGS, 1),
+                  blNoiseTexture(co, 3, BL_NOISE_ARGS, 2));
+}
+
+float blNoise4DFac(float3 vector, float w, float scale, float detail, float roughness,
+                   float lacunarity, float offset, float gain, float distortion, int type,
+                   int normalize) {
+  return blNoiseTexture((float4)(vector, w), 4, BL_NOISE_ARGS, 0);
+}
+
+float3 blNoise4DColor(float3 vector, float w, float scale, float detail, float roughness,
+                      float lacunarity, float offset, float gain, float distortion, int type,
+                      int normalize) {
+  float4 co = (float4)(vector, w);
+  return (float3)(blNoiseTexture(co, 4, BL_NOISE_ARGS, 0), blNoiseTexture(co, 4, BL_NOISE_ARGS, 1),
+                  blNoiseTexture(co, 4, BL_NOISE_ARGS, 2));
+}
