@@ -19,7 +19,7 @@
 extern char **environ;
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 namespace texrender {
 

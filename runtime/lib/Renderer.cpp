@@ -125,8 +125,25 @@ void Renderer::uploadScene() {
   B["activeCount"] = Cl->allocate("activeCount", sizeof(cl_int), CL_MEM_READ_WRITE);
 }
 
+void Renderer::mapMeshMaterials() {
+  bool Changed = false;
+  for (size_t I = 0; I < SceneDesc.Meshes.size() && I < Data.Meshes.size(); ++I) {
+    const MeshInstance &Mi = SceneDesc.Meshes[I];
+    int Mat = Lay.findMaterial(Mi.Material);
+    if (Mat < 0)
+      throw Error(SceneDesc.Path + ": " + Mi.JsonPath + "/material: the texture layout in use (" +
+                  Lay.Dir + ") has no material '" + Mi.Material + "' (it has: " +
+                  Lay.materialNames() + ")");
+    Changed |= Data.Meshes[I].material != Mat;
+    Data.Meshes[I].material = Mat;
+  }
+  if (Changed && B.count("meshes"))
+    Cl->write(B["meshes"], Data.Meshes.data(), bytes(Data.Meshes));
+}
+
 void Renderer::uploadLayoutData() {
   buildMaterials(Lay, Data.Materials, Data.BsdfNodes);
+  mapMeshMaterials();
   const cl_mem_flags RO = CL_MEM_READ_ONLY;
   B["materials"] = Cl->allocateWith("materials", Data.Materials.data(), bytes(Data.Materials), RO);
   B["bsdfNodes"] = Cl->allocateWith("bsdfNodes", Data.BsdfNodes.data(), bytes(Data.BsdfNodes), RO);

@@ -74,7 +74,7 @@ private:
   void regenerateInBackground(Renderer &R);
   Regeneration writeEditedGraph();
   void adopt(const Layout &New, const Regeneration &Files);
-  nlohmann::json absoluteGraph() const;
+  nlohmann::ordered_json absoluteGraph() const;
   void initEditor(const std::string &GraphText);
   /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, a constant over a
   /// node or attribute input, or a set to {"attr": ...} or {"node": ...}).
@@ -82,7 +82,9 @@ private:
 
   Layout Lay;
   std::string TexccPath;
-  nlohmann::json GraphDoc; // graph.json with every edit so far (for regeneration)
+  // graph.json with every edit so far (for regeneration), its keys in the user's order: texcc
+  // numbers the materials in the order graph.json lists them.
+  nlohmann::ordered_json GraphDoc;
   std::unique_ptr<texcc::graph::GraphEditor> Editor;
   // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
   // edit that changes them needs a new shape kernel, one that keeps them is an upload.

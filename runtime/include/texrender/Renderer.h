@@ -125,6 +125,9 @@ private:
   void uploadScene();
   void allocateWorkBuffers(size_t MaxPaths);
   void uploadLayoutData();
+  /// Points each mesh at its material's index in Lay, by the material's name in scene.json:
+  /// a regenerated layout may number the materials differently. A name Lay lacks is an error.
+  void mapMeshMaterials();
   void buildTextureKernel();
   void buildShapeTiers(const char *Reason);
   cl::Program buildForeground(const std::string &Path, const std::string &Source,
