@@ -2,6 +2,7 @@
 #include "texrender/Error.h"
 #include "texrender/Scene.h"
 #include "texcc/Support/File.h"
+#include "texcc/Support/Numbers.h"
 
 #include <tiny_obj_loader.h>
 #include <zlib.h>
@@ -96,7 +97,7 @@ void checkVertexNumbers(const std::string &Path, const std::string &Text) {
       std::string Word(Token, P);
       char *NumEnd = nullptr;
       double D = std::strtod(Word.c_str(), &NumEnd);
-      if (NumEnd != Word.c_str() + Word.size() || !std::isfinite(D) || std::fabs(D) > FLT_MAX)
+      if (NumEnd != Word.c_str() + Word.size() || !texcc::fitsInFloat(D))
         throw Error(Path + ":" + std::to_string(LineNo) + ": invalid OBJ: '" + Word +
                     "' is not a finite number");
     }
@@ -108,6 +109,17 @@ std::string formatVec3(const Vec3 &V) {
   char Buf[96];
   std::snprintf(Buf, sizeof Buf, "%g, %g, %g", V[0], V[1], V[2]);
   return Buf;
+}
+
+/// Whether a face corner gives an optional index (tinyobjloader: -1 when it does not) into an
+/// array of Tuple floats each; an index to a missing element is an error (it used to be skipped
+/// silently, unlike a bad vertex index).
+bool hasIndex(int Index, size_t Tuple, size_t Size, const std::string &Path, const char *What) {
+  if (Index == -1)
+    return false;
+  if (Index < 0 || Tuple * size_t(Index) + Tuple > Size)
+    throw Error(Path + ": invalid OBJ: " + What + " index out of range");
+  return true;
 }
 
 /// One triangle's corners as the file gives them (FileNormals: every corner has a normal).
@@ -128,13 +140,13 @@ Face readFace(const tinyobj::attrib_t &A, const tinyobj::index_t *Idx, const std
     if (!std::isfinite(Fc.P[C][0]) || !std::isfinite(Fc.P[C][1]) || !std::isfinite(Fc.P[C][2]))
       throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.vertex_index + 1) +
                   " has a non-finite coordinate (" + formatVec3(Fc.P[C]) + ")");
-    if (I.normal_index >= 0 && 3 * size_t(I.normal_index) + 2 < A.normals.size())
+    if (hasIndex(I.normal_index, 3, A.normals.size(), Path, "normal"))
       Fc.N[C] = normalized({A.normals[3 * I.normal_index], A.normals[3 * I.normal_index + 1],
                             A.normals[3 * I.normal_index + 2]});
     else
       Fc.FileNormals = false;
     Fc.UV[C] = {0, 0};
-    if (I.texcoord_index >= 0 && 2 * size_t(I.texcoord_index) + 1 < A.texcoords.size())
+    if (hasIndex(I.texcoord_index, 2, A.texcoords.size(), Path, "texture coordinate"))
       Fc.UV[C] = {A.texcoords[2 * I.texcoord_index], A.texcoords[2 * I.texcoord_index + 1]};
   }
   return Fc;

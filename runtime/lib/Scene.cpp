@@ -1,6 +1,7 @@
 #include "texrender/Scene.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
+#include "texcc/Support/Numbers.h"
 
 #include <nlohmann/json.hpp>
 
@@ -45,9 +46,9 @@ public:
   float number(const json &J, const std::string &Path) const {
     if (!J.is_number())
       fail(Path, "expected a number, got " + std::string(J.type_name()));
-    // Converting a double beyond float's range to float is undefined behaviour.
+    // A number that would round to a float infinity is refused (FLT_MAX as printed is not).
     double D = J.get<double>();
-    if (!(std::fabs(D) <= std::numeric_limits<float>::max()))
+    if (!texcc::fitsInFloat(D))
       fail(Path, "number " + J.dump() + " is out of range for a float");
     return static_cast<float>(D);
   }
@@ -67,6 +68,17 @@ public:
     if (!J.is_array() || J.size() != 3)
       fail(Path, "expected an array of 3 numbers, got " + J.dump());
     return {number(J[0], Path + "/0"), number(J[1], Path + "/1"), number(J[2], Path + "/2")};
+  }
+
+  /// A radiance (sky, sun, mesh emission): no component is negative (light is never taken
+  /// away; a negative emission used to be accepted and rendered as a light sink).
+  Vec3 radiance(const json &J, const std::string &Path) const {
+    Vec3 V = vec3(J, Path);
+    for (int I = 0; I < 3; ++I)
+      if (V[I] < 0)
+        fail(Path + "/" + std::to_string(I),
+             "expected a non-negative radiance, got " + J[I].dump());
+    return V;
   }
 
   std::string string(const json &J, const std::string &Path) const {
@@ -185,6 +197,10 @@ Light parseLight(const Reader &R, const json &J, const std::string &Path) {
     if (!J.contains("direction"))
       R.fail(Path, "a sun needs a \"direction\"");
     L.Direction = R.vec3(J["direction"], Path + "/direction");
+    // A zero direction has no normal form: the sun's cone would be NaN (in double, so that
+    // no finite non-zero direction underflows to zero).
+    if (std::hypot(double(L.Direction[0]), double(L.Direction[1]), double(L.Direction[2])) == 0)
+      R.fail(Path + "/direction", "the sun direction is zero");
     if (J.contains("angularRadius"))
       L.AngularRadiusDegrees = R.number(J["angularRadius"], Path + "/angularRadius");
     if (L.AngularRadiusDegrees <= 0 || L.AngularRadiusDegrees >= 90)
@@ -195,7 +211,7 @@ Light parseLight(const Reader &R, const json &J, const std::string &Path) {
   }
   if (!J.contains("radiance"))
     R.fail(Path, "a " + L.Type + " needs a \"radiance\"");
-  L.Radiance = R.vec3(J["radiance"], Path + "/radiance");
+  L.Radiance = R.radiance(J["radiance"], Path + "/radiance");
   return L;
 }
 
@@ -265,7 +281,7 @@ Scene loadScene(const std::string &Path) {
     Mi.ObjPath = resolve(Dir, R.string(M["obj"], P + "/obj"));
     Mi.Material = R.string(M["material"], P + "/material");
     if (M.contains("emission")) {
-      Mi.Emission = R.vec3(M["emission"], P + "/emission");
+      Mi.Emission = R.radiance(M["emission"], P + "/emission");
       Mi.Emissive = Mi.Emission[0] > 0 || Mi.Emission[1] > 0 || Mi.Emission[2] > 0;
     }
     Mi.Transform = M.contains("transform") ? parseTransform(R, M["transform"], P + "/transform")

@@ -47,6 +47,12 @@ Vec3 normalize(Vec3 V) {
   float L = std::sqrt(V[0] * V[0] + V[1] * V[1] + V[2] * V[2]);
   return L > 0 ? Vec3{V[0] / L, V[1] / L, V[2] / L} : V;
 }
+/// normalize without float underflow or overflow of the squared length ([1e-30, 0, 0] and
+/// [3e38, 3e38, 0] are directions too); V is not zero (loadScene checks).
+Vec3 normalizeInDouble(const Vec3 &V) {
+  double L = std::hypot(double(V[0]), double(V[1]), double(V[2]));
+  return {float(V[0] / L), float(V[1] / L), float(V[2] / L)};
+}
 Vec3 cross(const Vec3 &A, const Vec3 &B) {
   return {A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
 }
@@ -179,7 +185,7 @@ void buildLights(const Scene &S, SceneData &D) {
     } else {
       L.type = RT_LIGHT_SUN;
       float CosMax = std::cos(Li.AngularRadiusDegrees * float(M_PI) / 180.0f);
-      L.dir = f4(normalize(Li.Direction), CosMax);
+      L.dir = f4(normalizeInDouble(Li.Direction), CosMax);
       D.SunLight = int(D.Lights.size());
       Weights.push_back(Lum * 2.0f * float(M_PI) * (1.0f - CosMax) * Cross);
     }

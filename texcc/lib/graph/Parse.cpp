@@ -2,10 +2,10 @@
 // needs function signatures is checked by compileGraph() (Validate.cpp).
 
 #include "texcc/Graph/Graph.h"
+#include "texcc/Support/Numbers.h"
 
 #include "Json.h"
 
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <unordered_map>
@@ -125,7 +125,7 @@ public:
   }
 
   bool checkFloat(const Value &V, const std::string &JsonPath) {
-    if (std::fabs(V.Number) <= FLT_MAX)
+    if (texcc::fitsInFloat(V.Number))
       return true;
     error(V.Loc, JsonPath, "number '" + V.Text + "' does not fit in a 32-bit float");
     return false;

@@ -2,6 +2,7 @@
 // node argument and BSDF input into a CompiledArg / CompiledBsdfInput, or reports why not.
 
 #include "texcc/Graph/Passes.h"
+#include "texcc/Support/Numbers.h"
 
 #include "Json.h"
 
@@ -221,7 +222,7 @@ private:
     }
     if (P.Type.Base == BaseType::Int)
       for (double V : CA.Values)
-        if (V != std::floor(V) || std::fabs(V) > 2147483647.0)
+        if (!texcc::fitsInInt32(V))
           return mismatch(N, P, A, "; element " + json::formatNumber(V) + " is not an int");
     return true;
   }
@@ -235,7 +236,7 @@ private:
       double V = A.Numbers.front();
       if (B == BaseType::Int && V != std::floor(V))
         return mismatch(N, P, A, " (" + json::formatNumber(V) + " is not an int)");
-      if (B == BaseType::Int && std::fabs(V) > 2147483647.0)
+      if (B == BaseType::Int && !texcc::fitsInInt32(V))
         return mismatch(N, P, A, " (" + json::formatNumber(V) + " is outside the 32-bit int range)");
       CA.Values.assign(componentCount(B), V);
       return true;
