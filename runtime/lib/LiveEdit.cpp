@@ -5,6 +5,7 @@
 #include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <cstdlib>
@@ -40,6 +41,14 @@ std::string diagnosticsText(const texcc::graph::DiagnosticSink &D) {
     if (C == '\n')
       C = ' ';
   return trim(S);
+}
+
+/// The message of D's first error (its location is the edit's, not the graph's).
+std::string firstError(const texcc::graph::DiagnosticSink &D) {
+  for (const texcc::graph::Diagnostic &E : D.diagnostics())
+    if (E.Level == texcc::graph::Diagnostic::Severity::Error)
+      return E.Message;
+  return diagnosticsText(D);
 }
 
 double now() {
@@ -108,27 +117,40 @@ std::string findTexcc() {
 }
 
 Edit parseEdit(const std::string &LineIn) {
+  // Positions are kept in LineIn, so that a diagnostic can point at a column.
+  auto skipBlanks = [&](size_t P) {
+    while (P < LineIn.size() && (LineIn[P] == ' ' || LineIn[P] == '\t'))
+      ++P;
+    return P;
+  };
   std::string Line = trim(LineIn);
   Edit E;
   E.Text = Line;
+  size_t Start = skipBlanks(0);
+  E.NodeCol = E.ArgCol = E.ValueCol = unsigned(Start + 1);
   if (Line == "wait") {
     E.K = Edit::Kind::Wait;
     return E;
   }
-  if (Line.rfind("set ", 0) == 0) {
-    Line = trim(Line.substr(4));
-  } else if (Line.rfind("rewire ", 0) == 0) {
+  size_t Pos = Start;
+  if (LineIn.compare(Start, 4, "set ") == 0) {
+    Pos = skipBlanks(Start + 4);
+  } else if (LineIn.compare(Start, 7, "rewire ") == 0) {
     E.K = Edit::Kind::Rewire;
-    Line = trim(Line.substr(7));
+    Pos = skipBlanks(Start + 7);
   }
-  size_t Eq = Line.find('=');
-  std::string Lhs = Eq == std::string::npos ? "" : trim(Line.substr(0, Eq));
+  size_t Eq = LineIn.find('=', Pos);
+  std::string Lhs = Eq == std::string::npos ? "" : trim(LineIn.substr(Pos, Eq - Pos));
   size_t Dot = Lhs.rfind('.');
+  E.NodeCol = unsigned(Pos + 1);
   if (Eq == std::string::npos || Dot == std::string::npos || Dot == 0 || Dot + 1 == Lhs.size())
     throw Error("bad edit '" + E.Text + "': expected NODE.ARG=VALUE (or rewire NODE.ARG=SOURCE)");
   E.Node = Lhs.substr(0, Dot);
   E.Arg = Lhs.substr(Dot + 1);
-  E.Value = trim(Line.substr(Eq + 1));
+  E.ArgCol = unsigned(Pos + Dot + 2);
+  size_t ValuePos = skipBlanks(Eq + 1);
+  E.ValueCol = unsigned(ValuePos + 1);
+  E.Value = trim(LineIn.substr(Eq + 1));
   if (E.Value.empty())
     throw Error("bad edit '" + E.Text + "': missing value after '='");
   return E;
@@ -150,8 +172,14 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
 
 void LiveEditor::initEditor(const std::string &GraphText) {
   Editor.reset();
+  KernelShapeHash = Lay.ShapeHash;
   if (Lay.Mode == "inline")
     return; // every edit regenerates
+  Editor = makeEditor(GraphText);
+}
+
+std::unique_ptr<texcc::graph::GraphEditor>
+LiveEditor::makeEditor(const std::string &GraphText) const {
   texcc::graph::DiagnosticSink Diags;
   std::optional<texcc::graph::Graph> G = texcc::graph::parseGraph(Lay.GraphPath, GraphText, Diags);
   if (!G)
@@ -172,10 +200,39 @@ void LiveEditor::initEditor(const std::string &GraphText) {
   // An interp kernel that hoists reads every hoisting node's values from its record: a
   // rewiring of a parameter they come from needs a new kernel (texcc then hoists less).
   Opts.InterpHoistedCalls = Lay.Mode == "interp" && !Lay.Uniforms.empty();
-  KernelShapeHash = Lay.ShapeHash;
-  Editor = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
-  if (!Editor->init(Diags))
+  auto E = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
+  if (!E->init(Diags))
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
+  return E;
+}
+
+std::optional<EditProblem> LiveEditor::check(const std::vector<Edit> &Edits) const {
+  std::unique_ptr<texcc::graph::GraphEditor> Scratch = makeEditor(GraphDoc.dump());
+  for (size_t I = 0; I < Edits.size(); ++I) {
+    const Edit &E = Edits[I];
+    if (E.K == Edit::Kind::Wait)
+      continue;
+    texcc::graph::DiagnosticSink Diags;
+    bool Ok = E.K == Edit::Kind::Set ? Scratch->setArgument(E.Node, E.Arg, E.Value, Diags)
+                                     : Scratch->rewire(E.Node, E.Arg, E.Value, Diags);
+    if (Ok)
+      continue;
+    // Point at the part at fault: the node, else the parameter, else the value.
+    const texcc::graph::Node *N = Scratch->graph().findNode(E.Node);
+    unsigned Col = E.ValueCol;
+    if (!N) {
+      Col = E.NodeCol;
+    } else {
+      const auto &Sigs = Scratch->compiled().Signatures;
+      auto Sig = Sigs.find(N->Fn);
+      if (Sig != Sigs.end() &&
+          std::none_of(Sig->second.Params.begin(), Sig->second.Params.end(),
+                       [&](const texcc::graph::Param &P) { return P.Name == E.Arg; }))
+        Col = E.ArgCol;
+    }
+    return EditProblem{I, Col, firstError(Diags)};
+  }
+  return std::nullopt;
 }
 
 LiveEditor::~LiveEditor() = default;

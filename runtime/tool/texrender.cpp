@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -207,23 +208,56 @@ Options parseArgs(int Argc, char **Argv) {
   return O;
 }
 
-std::vector<Edit> readEditScript(const std::string &Path) {
-  std::ifstream In(Path);
-  if (!In)
-    throw Error(Path + ": cannot open edit script");
+/// An edit script's error, printed as a compiler's: "edits.txt:LINE:COL: error: MESSAGE".
+struct ScriptError {
+  std::string Text;
+};
+
+/// An edit script: its edits and the line each came from.
+struct EditScript {
+  std::string Path;
   std::vector<Edit> Edits;
+  std::vector<unsigned> Lines;
+};
+
+ScriptError scriptError(const std::string &Path, unsigned Line, unsigned Col,
+                        const std::string &Message) {
+  return {Path + ":" + std::to_string(Line) + ":" + std::to_string(Col) + ": error: " + Message};
+}
+
+/// Reads and parses an edit script (a regular file: a FIFO, a device or a folder is refused).
+EditScript readEditScript(const std::string &Path) {
+  EditScript S{Path, {}, {}};
+  std::istringstream In(readWholeFile(Path, " edit script"));
   std::string Line;
-  for (int N = 1; std::getline(In, Line); ++N) {
+  for (unsigned N = 1; std::getline(In, Line); ++N) {
     size_t B = Line.find_first_not_of(" \t\r");
     if (B == std::string::npos || Line[B] == '#')
       continue;
+    if (Line.find('\0') != std::string::npos)
+      throw scriptError(Path, N, unsigned(Line.find('\0') + 1), "a NUL byte (not a text file)");
     try {
-      Edits.push_back(parseEdit(Line));
+      S.Edits.push_back(parseEdit(Line));
+      S.Lines.push_back(N);
     } catch (const Error &E) {
-      throw Error(Path + ":" + std::to_string(N) + ": " + E.what());
+      throw scriptError(Path, N, unsigned(B + 1), E.what());
     }
   }
-  return Edits;
+  return S;
+}
+
+/// Checks the --set edits and then the script's, in the order they will be applied, against
+/// the graph (LiveEditor::check), before anything is rendered.
+void checkEdits(const LiveEditor &Editor, const std::vector<Edit> &Sets, const EditScript &Script) {
+  std::vector<Edit> All = Sets;
+  All.insert(All.end(), Script.Edits.begin(), Script.Edits.end());
+  std::optional<EditProblem> P = Editor.check(All);
+  if (!P)
+    return;
+  if (P->Index < Sets.size())
+    throw Error("edit '" + Sets[P->Index].Text + "': " + P->Message);
+  size_t K = P->Index - Sets.size();
+  throw scriptError(Script.Path, Script.Lines[K], P->Col, P->Message);
 }
 
 std::string frameName(const std::string &Out, size_t K) {
@@ -309,7 +343,7 @@ void interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
   }
 }
 
-int run(int Argc, char **Argv) {
+int run(int Argc, char **Argv) try {
   double T0 = now();
   Options O = parseArgs(Argc, Argv);
   if (O.ListDevices) {
@@ -331,7 +365,8 @@ int run(int Argc, char **Argv) {
   if (TexDir.empty())
     throw Error(O.Scene + ": no texture folder: give --textures OUTDIR or \"textures\" in the scene");
   Layout L = loadLayout(TexDir);
-  std::vector<Edit> Script = O.EditScript.empty() ? std::vector<Edit>() : readEditScript(O.EditScript);
+  EditScript ScriptFile = O.EditScript.empty() ? EditScript() : readEditScript(O.EditScript);
+  const std::vector<Edit> &Script = ScriptFile.Edits;
   std::vector<Edit> Sets;
   for (auto &Text : O.Sets)
     Sets.push_back(parseEdit(Text));
@@ -348,10 +383,14 @@ int run(int Argc, char **Argv) {
   RO.Tier = O.Tier.value_or(!Script.empty() || O.Interactive ? TierPolicy::Auto : TierPolicy::Shape);
   // Likewise an interp kernel gets value-stack headroom only when edits may need it.
   RO.InterpStackHeadroom = !Script.empty() || O.Interactive;
-  Renderer R(S, L, RO);
+  // Every edit is checked against the graph before the kernel build and the first frame: a
+  // bad one is an error that leaves no frame written.
   std::unique_ptr<LiveEditor> Editor;
-  if (!Sets.empty() || !Script.empty() || O.Interactive)
+  if (!Sets.empty() || !Script.empty() || O.Interactive) {
     Editor = std::make_unique<LiveEditor>(L);
+    checkEdits(*Editor, Sets, ScriptFile);
+  }
+  Renderer R(S, L, RO);
 
   std::vector<FrameRecord> Frames;
   FrameRecord First;
@@ -379,6 +418,9 @@ int run(int Argc, char **Argv) {
   if (!O.Stats.empty())
     writeTextFile(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
   return 0;
+} catch (const ScriptError &E) {
+  std::fprintf(stderr, "%s\n", E.Text.c_str());
+  return 1;
 }
 
 } // namespace

@@ -15,6 +15,7 @@
 #include "texrender/Renderer.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -32,6 +33,17 @@ struct Edit {
   Kind K = Kind::Set;
   std::string Node, Arg, Value; // Value: a constant (Set) or a source node id (Rewire)
   std::string Text;             // as written
+  // 1-based columns, in the line as given to parseEdit, of NODE, ARG and VALUE (for an edit
+  // script's line:col diagnostics).
+  unsigned NodeCol = 1, ArgCol = 1, ValueCol = 1;
+};
+
+/// An edit that cannot be applied: which one (an index into the edits checked), the column of
+/// its part at fault (Edit::NodeCol, ArgCol or ValueCol) and the reason.
+struct EditProblem {
+  size_t Index = 0;
+  unsigned Col = 1;
+  std::string Message;
 };
 
 /// Parses "NODE.ARG=VALUE", "set NODE.ARG=VALUE", "rewire NODE.ARG=SOURCE" or "wait".
@@ -55,6 +67,12 @@ public:
   /// Applies E to the graph and to R. Throws Error (one line: the edit and the reason).
   EditResult apply(const Edit &E, Renderer &R);
 
+  /// Applies Edits, in order, to a scratch copy of the graph with the graph library's
+  /// validation (unknown node or parameter, a value of the wrong type or size, a rewiring onto
+  /// an unknown node or into a cycle): nothing is uploaded, built or rendered. Returns the first
+  /// edit that fails, if any.
+  std::optional<EditProblem> check(const std::vector<Edit> &Edits) const;
+
 private:
   /// A regeneration's files: the edited graph (paths absolute), texcc's output and log.
   struct Regeneration {
@@ -76,6 +94,8 @@ private:
   void adopt(const Layout &New, const Regeneration &Files);
   nlohmann::ordered_json absoluteGraph() const;
   void initEditor(const std::string &GraphText);
+  /// A graph editor over GraphText (a graph.json) with the kernel's signatures and tables.
+  std::unique_ptr<texcc::graph::GraphEditor> makeEditor(const std::string &GraphText) const;
   /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, a constant over a
   /// node or attribute input, or a set to {"attr": ...} or {"node": ...}).
   bool applyToJson(const Edit &E);
