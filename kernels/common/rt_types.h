@@ -6,7 +6,7 @@
 
 #include "texcc_abi.h"
 
-#ifdef __OPENCL_VERSION__
+#ifdef __OPENCL_C_VERSION__
 #define RT_F4 float4
 #define RT_UINT uint
 #else

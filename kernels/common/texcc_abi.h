@@ -4,7 +4,7 @@
 #ifndef TEXCC_ABI_H
 #define TEXCC_ABI_H
 
-#ifdef __OPENCL_VERSION__
+#ifdef __OPENCL_C_VERSION__ /* defined by every OpenCL C compiler, plain clang -x cl included */
 #define TEXCC_F4 float4
 #define TEXCC_I4 int4
 #else
