@@ -108,6 +108,50 @@ noise_variant("noise2d-ridged", 2, "RIDGED_MULTIFRACTAL", offset=1.0, gain=2.0)
 noise_variant("noise4d-fbm", 4, "FBM", detail=2.5, w=0.37, distortion=0.2)
 noise_variant("noise4d-hetero", 4, "HETERO_TERRAIN", detail=2.0, offset=0.3, w=-1.2)
 
+VORONOI_FEATURES = {"F1": 0, "F2": 1, "SMOOTH_F1": 2, "DISTANCE_TO_EDGE": 3, "N_SPHERE_RADIUS": 4}
+VORONOI_METRICS = {"EUCLIDEAN": 0, "MANHATTAN": 1, "CHEBYCHEV": 2, "MINKOWSKI": 3}
+
+
+def voronoi_variant(name, dims, feature, metric="EUCLIDEAN", normalize=False, scale=2.5,
+                    detail=0.0, roughness=0.5, lacunarity=2.0, smoothness=1.0, exponent=0.5,
+                    randomness=1.0):
+    inputs = {"Scale": scale, "Detail": detail, "Roughness": roughness,
+              "Lacunarity": lacunarity, "Smoothness": smoothness, "Exponent": exponent,
+              "Randomness": randomness}
+    args = {"vector": "P", "scale": scale, "detail": detail, "roughness": roughness,
+            "lacunarity": lacunarity, "smoothness": smoothness, "exponent": exponent,
+            "randomness": randomness, "feature": VORONOI_FEATURES[feature],
+            "metric": VORONOI_METRICS[metric], "normalize": 1 if normalize else 0}
+    fn = "blVoronoi%dD" % dims
+    if feature == "N_SPHERE_RADIUS":
+        outputs = [("Radius", fn + "Radius", 1)]
+    elif feature == "DISTANCE_TO_EDGE":
+        outputs = [("Distance", fn + "Distance", 1)]
+    else:
+        outputs = [("Distance", fn + "Distance", 1), ("Color", fn + "Color", 3),
+                   ("Position", fn + "Position", 3)]
+    variant(name, "ShaderNodeTexVoronoi",
+            {"voronoi_dimensions": "%dD" % dims, "feature": feature, "distance": metric,
+             "normalize": normalize}, inputs, {"Vector": "P"}, "voronoi.cl", outputs, args)
+
+
+voronoi_variant("voronoi3d-f1", 3, "F1")
+voronoi_variant("voronoi3d-f1-manhattan", 3, "F1", "MANHATTAN")
+voronoi_variant("voronoi3d-f1-chebychev", 3, "F1", "CHEBYCHEV")
+voronoi_variant("voronoi3d-f1-minkowski", 3, "F1", "MINKOWSKI", exponent=1.5)
+voronoi_variant("voronoi3d-f1-randomness", 3, "F1", randomness=0.6, normalize=True)
+voronoi_variant("voronoi3d-f1-detail", 3, "F1", detail=2.5, roughness=0.6, normalize=True)
+voronoi_variant("voronoi3d-f2", 3, "F2", normalize=True)
+voronoi_variant("voronoi3d-smooth-f1", 3, "SMOOTH_F1", smoothness=0.6)
+voronoi_variant("voronoi3d-edge", 3, "DISTANCE_TO_EDGE")
+voronoi_variant("voronoi3d-edge-detail", 3, "DISTANCE_TO_EDGE", detail=1.5, normalize=True)
+voronoi_variant("voronoi3d-nsphere", 3, "N_SPHERE_RADIUS")
+voronoi_variant("voronoi2d-f1", 2, "F1", scale=3.0)
+voronoi_variant("voronoi2d-f2-manhattan", 2, "F2", "MANHATTAN", scale=3.0)
+voronoi_variant("voronoi2d-smooth-f1", 2, "SMOOTH_F1", smoothness=0.8, scale=3.0)
+voronoi_variant("voronoi2d-edge", 2, "DISTANCE_TO_EDGE", scale=3.0)
+voronoi_variant("voronoi2d-nsphere", 2, "N_SPHERE_RADIUS", scale=3.0)
+
 
 # --- Baking ---------------------------------------------------------------------------------
 

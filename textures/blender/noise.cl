@@ -36,54 +36,7 @@
  *   | normalize  | int    | 1       | fBM only: 1 maps the sum to [0, 1], 0 leaves it about [-1, 1] |
  */
 
-uint blRot(uint x, int k) { return (x << k) | (x >> (32 - k)); }
-
-/* lookup3's final mix of (a, b, c); returns c. */
-uint blHashFinal(uint a, uint b, uint c) {
-  c ^= b;
-  c -= blRot(b, 14);
-  a ^= c;
-  a -= blRot(c, 11);
-  b ^= a;
-  b -= blRot(a, 25);
-  c ^= b;
-  c -= blRot(b, 16);
-  a ^= c;
-  a -= blRot(c, 4);
-  b ^= a;
-  b -= blRot(a, 14);
-  c ^= b;
-  c -= blRot(b, 24);
-  return c;
-}
-
-/* lookup3 of 2..4 32-bit words: the seed is 0xdeadbeef plus the length in bytes plus 13. */
-uint blHash2(uint x, uint y) {
-  uint s = 0xdeadbeefU + 8U + 13U;
-  return blHashFinal(s + x, s + y, s);
-}
-
-uint blHash3(uint x, uint y, uint z) {
-  uint s = 0xdeadbeefU + 12U + 13U;
-  return blHashFinal(s + x, s + y, s + z);
-}
-
-uint blHash4(uint x, uint y, uint z, uint w) {
-  uint s = 0xdeadbeefU + 16U + 13U;
-  uint a = s + x, b = s + y, c = s + z;
-  a -= c; a ^= blRot(c, 4); c += b;
-  b -= a; b ^= blRot(a, 6); a += c;
-  c -= b; c ^= blRot(b, 8); b += a;
-  a -= c; a ^= blRot(c, 16); c += b;
-  b -= a; b ^= blRot(a, 19); a += c;
-  c -= b; c ^= blRot(b, 4); b += a;
-  return blHashFinal(a + w, b, c);
-}
-
-/* A hash mapped to [0, 1] as Cycles does (times 1 / 0xFFFFFFFF rounded to float, i.e. 2^-32). */
-float blHashToUnit(uint h) { return (float)h * (1.0f / 4294967296.0f); }
-
-float blHashFloat2(float x, float y) { return blHashToUnit(blHash2(as_uint(x), as_uint(y))); }
+#include "hash.h"
 
 /* Seed offsets in [100, 200] that decorrelate distortion and colour channels. */
 float blSeedOffset(float seed, float channel) { return 100.0f + blHashFloat2(seed, channel) * 100.0f; }

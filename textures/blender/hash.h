@@ -1,0 +1,94 @@
+/* blender/hash.h: the hashes of Blender's procedural textures (Cycles' util/hash.h): Bob
+ * Jenkins' lookup3 of 2, 3 or 4 32-bit words, and floats hashed by their bit patterns into
+ * [0, 1]. Included by the textures of this folder (each gets its own renamed copy). */
+
+uint blRot(uint x, int k) { return (x << k) | (x >> (32 - k)); }
+
+/* lookup3's final mix of (a, b, c); returns c. */
+uint blHashFinal(uint a, uint b, uint c) {
+  c ^= b;
+  c -= blRot(b, 14);
+  a ^= c;
+  a -= blRot(c, 11);
+  b ^= a;
+  b -= blRot(a, 25);
+  c ^= b;
+  c -= blRot(b, 16);
+  a ^= c;
+  a -= blRot(c, 4);
+  b ^= a;
+  b -= blRot(a, 14);
+  c ^= b;
+  c -= blRot(b, 24);
+  return c;
+}
+
+/* lookup3 of 2..4 32-bit words: the seed is 0xdeadbeef plus the length in bytes plus 13. */
+uint blHash2(uint x, uint y) {
+  uint s = 0xdeadbeefU + 8U + 13U;
+  return blHashFinal(s + x, s + y, s);
+}
+
+uint blHash3(uint x, uint y, uint z) {
+  uint s = 0xdeadbeefU + 12U + 13U;
+  return blHashFinal(s + x, s + y, s + z);
+}
+
+uint blHash4(uint x, uint y, uint z, uint w) {
+  uint s = 0xdeadbeefU + 16U + 13U;
+  uint a = s + x, b = s + y, c = s + z;
+  a -= c; a ^= blRot(c, 4); c += b;
+  b -= a; b ^= blRot(a, 6); a += c;
+  c -= b; c ^= blRot(b, 8); b += a;
+  a -= c; a ^= blRot(c, 16); c += b;
+  b -= a; b ^= blRot(a, 19); a += c;
+  c -= b; c ^= blRot(b, 4); b += a;
+  return blHashFinal(a + w, b, c);
+}
+
+/* A hash mapped to [0, 1] as Cycles does (times 1 / 0xFFFFFFFF rounded to float, i.e. 2^-32). */
+float blHashToUnit(uint h) { return (float)h * (1.0f / 4294967296.0f); }
+
+float blHashFloat2(float x, float y) { return blHashToUnit(blHash2(as_uint(x), as_uint(y))); }
+
+float blHashFloat3(float x, float y, float z) {
+  return blHashToUnit(blHash3(as_uint(x), as_uint(y), as_uint(z)));
+}
+
+float blHashFloat4(float x, float y, float z, float w) {
+  return blHashToUnit(blHash4(as_uint(x), as_uint(y), as_uint(z), as_uint(w)));
+}
+
+/* PCG 2D and 3D (Jarzynski and Olano, "Hash Functions for GPU Rendering", JCGT 2020) in the
+ * signed-integer form Cycles uses for Voronoi cells (so the >> 16 is arithmetic), each
+ * component masked to 31 bits and mapped to [0, 1] (times 2^-31). Unsigned arithmetic here:
+ * the same bits as Cycles' wrapping signed arithmetic, without signed overflow. */
+uint blXorShift16(uint v) { return v ^ (uint)((int)v >> 16); }
+
+float blPcgToUnit(uint v) { return (float)(int)(v & 0x7FFFFFFFU) * (1.0f / 2147483648.0f); }
+
+float4 blHashInt2(int x, int y) {
+  uint a = (uint)x * 1664525U + 1013904223U, b = (uint)y * 1664525U + 1013904223U;
+  a += b * 1664525U;
+  b += a * 1664525U;
+  a = blXorShift16(a);
+  b = blXorShift16(b);
+  a += b * 1664525U;
+  b += a * 1664525U;
+  return (float4)(blPcgToUnit(a), blPcgToUnit(b), 0.0f, 0.0f);
+}
+
+float4 blHashInt3(int x, int y, int z) {
+  uint a = (uint)x * 1664525U + 1013904223U, b = (uint)y * 1664525U + 1013904223U;
+  uint c = (uint)z * 1664525U + 1013904223U;
+  a += b * c;
+  b += c * a;
+  c += a * b;
+  a = blXorShift16(a);
+  b = blXorShift16(b);
+  c = blXorShift16(c);
+  a += b * c;
+  b += c * a;
+  c += a * b;
+  return (float4)(blPcgToUnit(a), blPcgToUnit(b), blPcgToUnit(c), 0.0f);
+}

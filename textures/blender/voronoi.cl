@@ -1,0 +1,334 @@
+/* blender/voronoi.cl: Blender's Voronoi Texture node (Cycles, Blender 5.0), value for value.
+ *
+ * Worley noise: one feature point per integer cell of Vector * Scale, jittered by the cell's
+ * PCG hash times Randomness. F1 is the distance to the closest point, F2 to the second
+ * closest, Smooth F1 a smooth minimum over the 5^n neighbourhood, Distance to Edge the distance
+ * to the closest cell border, N-Sphere Radius half the distance from the closest point to its
+ * closest neighbour. Detail > 0 sums octaves as the Noise node's fBM does (fractional Detail
+ * blends the last one in). Color is the hash of the chosen cell; Position its feature point in
+ * the units of Vector.
+ *
+ * One texture function per (dimensions, output); features and metrics are parameters:
+ *
+ *   float  blVoronoi2DDistance(float3 vector, float scale, float detail, float roughness,
+ *                              float lacunarity, float smoothness, float exponent,
+ *                              float randomness, int feature, int metric, int normalize)
+ *   float3 blVoronoi2DColor   (same parameters)             F1, F2, Smooth F1
+ *   float3 blVoronoi2DPosition(same parameters)             F1, F2, Smooth F1 (z = 0)
+ *   float  blVoronoi2DRadius  (same parameters)             N-Sphere Radius
+ *   blVoronoi3DDistance, blVoronoi3DColor, blVoronoi3DPosition, blVoronoi3DRadius: the same in 3D
+ *
+ * An output the feature does not produce is 0, as in Blender (Distance of N-Sphere Radius, ...).
+ *
+ * Parameters (the node's sockets and properties; defaults are Blender's):
+ *
+ *   | name       | type   | default | meaning                                                 |
+ *   |------------|--------|---------|---------------------------------------------------------|
+ *   | vector     | float3 | -       | lookup point (2D uses x, y)                             |
+ *   | scale      | float  | 5.0     | cells per unit of vector                                |
+ *   | detail     | float  | 0.0     | octaves beyond the first, clamped to [0, 15]            |
+ *   | roughness  | float  | 0.5     | amplitude factor per octave, clamped to [0, 1]          |
+ *   | lacunarity | float  | 2.0     | frequency factor per octave                             |
+ *   | smoothness | float  | 1.0     | Smooth F1 only, clamped to [0, 1]                       |
+ *   | exponent   | float  | 0.5     | Minkowski metric only                                   |
+ *   | randomness | float  | 1.0     | jitter of the feature points, clamped to [0, 1]         |
+ *   | feature    | int    | 0       | 0 F1, 1 F2, 2 Smooth F1, 3 Distance to Edge, 4 N-Sphere Radius |
+ *   | metric     | int    | 0       | 0 Euclidean, 1 Manhattan, 2 Chebychev, 3 Minkowski      |
+ *   | normalize  | int    | 0       | 1 divides Distance (and Color) by their largest value   |
+ */
+
+#include "hash.h"
+
+#define BL_FLT_MAX 3.402823466e+38f
+
+/* The cell's feature-point offset in [0, 1]^dims and its colour: PCG hashes of the integer cell
+ * (Cycles' hash_int2_to_float2 / hash_int3_to_float3, colour hash_int2_to_float3 /
+ * hash_int3_to_float3). c holds the cell's integer coordinates as floats. */
+float4 blVoronoiCellOffset(float4 c, int dims) {
+  if (dims == 2)
+    return blHashInt2((int)c.x, (int)c.y);
+  return blHashInt3((int)c.x, (int)c.y, (int)c.z);
+}
+
+float3 blVoronoiCellColor(float4 c, int dims) {
+  return blHashInt3((int)c.x, (int)c.y, dims == 2 ? 0 : (int)c.z).xyz;
+}
+
+float blVoronoiMetric(float4 a, float4 b, int dims, int metric, float exponent) {
+  float dx = fabs(a.x - b.x), dy = fabs(a.y - b.y), dz = fabs(a.z - b.z);
+  if (metric == 1)
+    return dims == 2 ? dx + dy : dx + dy + dz;
+  if (metric == 2)
+    return dims == 2 ? fmax(dx, dy) : fmax(fmax(dx, dy), dz);
+  if (metric == 3) {
+    float s = pow(dx, exponent) + pow(dy, exponent);
+    if (dims == 3)
+      s += pow(dz, exponent);
+    return pow(s, 1.0f / exponent);
+  }
+  return dims == 2 ? sqrt(dx * dx + dy * dy) : sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+float blEuclid(float4 d, int dims) {
+  return dims == 2 ? sqrt(d.x * d.x + d.y * d.y) : sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+}
+
+float blDot(float4 a, float4 b, int dims) {
+  return dims == 2 ? a.x * b.x + a.y * b.y : a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+float blSmoothstep01(float x) {
+  if (x < 0.0f)
+    return 0.0f;
+  if (x >= 1.0f)
+    return 1.0f;
+  return (3.0f - 2.0f * x) * (x * x);
+}
+
+/* One octave of F1 (feature 0), F2 (1) or Smooth F1 (2, smoothness already halved and > 0):
+ * distance in .w of the result, colour in *color, position (in cells) in *pos. */
+float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exponent,
+                      float randomness, float smoothness, float3 *color, float4 *pos) {
+  float4 cell = floor(coord);
+  float4 rel = coord - cell;
+  int reach = feature == 2 ? 2 : 1;
+  int kreach = dims == 2 ? 0 : reach;
+  float d1 = BL_FLT_MAX, d2 = BL_FLT_MAX;
+  float4 o1 = (float4)(0.0f), o2 = (float4)(0.0f), p1 = (float4)(0.0f), p2 = (float4)(0.0f);
+  float sd = 0.0f, h = -1.0f;
+  float3 sc = (float3)(0.0f);
+  float4 sp = (float4)(0.0f);
+  for (int k = -kreach; k <= kreach; k++)
+    for (int j = -reach; j <= reach; j++)
+      for (int i = -reach; i <= reach; i++) {
+        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
+        float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
+        float d = blVoronoiMetric(point, rel, dims, metric, exponent);
+        if (feature == 2) {
+          h = h == -1.0f ? 1.0f : blSmoothstep01(0.5f + 0.5f * (sd - d) / smoothness);
+          float correction = smoothness * h * (1.0f - h);
+          sd = sd + h * (d - sd) - correction;
+          correction /= 1.0f + 3.0f * smoothness;
+          float3 cc = blVoronoiCellColor(cell + off, dims);
+          sc = sc + h * (cc - sc) - correction;
+          sp = sp + h * (point - sp) - correction;
+        } else if (d < d1) {
+          d2 = d1;
+          o2 = o1;
+          p2 = p1;
+          d1 = d;
+          o1 = off;
+          p1 = point;
+        } else if (d < d2) {
+          d2 = d;
+          o2 = off;
+          p2 = point;
+        }
+      }
+  if (feature == 2) {
+    /* The correction above is subtracted from every component; 2D has no z. */
+    if (dims == 2)
+      sp.z = 0.0f;
+    *color = sc;
+    *pos = cell + sp;
+    return sd;
+  }
+  if (feature == 1) {
+    *color = blVoronoiCellColor(cell + o2, dims);
+    *pos = p2 + cell;
+    return d2;
+  }
+  *color = blVoronoiCellColor(cell + o1, dims);
+  *pos = p1 + cell;
+  return d1;
+}
+
+/* Distance to Edge of one octave: distance to the closest bisector of the closest point and
+ * another point. */
+float blVoronoiEdgeOctave(float4 coord, int dims, float randomness) {
+  float4 cell = floor(coord);
+  float4 rel = coord - cell;
+  int kreach = dims == 2 ? 0 : 1;
+  float4 closest = (float4)(0.0f);
+  float best = BL_FLT_MAX;
+  for (int k = -kreach; k <= kreach; k++)
+    for (int j = -1; j <= 1; j++)
+      for (int i = -1; i <= 1; i++) {
+        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
+        float4 v = off + blVoronoiCellOffset(cell + off, dims) * randomness - rel;
+        float d = blDot(v, v, dims);
+        if (d < best) {
+          best = d;
+          closest = v;
+        }
+      }
+  best = BL_FLT_MAX;
+  for (int k = -kreach; k <= kreach; k++)
+    for (int j = -1; j <= 1; j++)
+      for (int i = -1; i <= 1; i++) {
+        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
+        float4 v = off + blVoronoiCellOffset(cell + off, dims) * randomness - rel;
+        float4 perp = v - closest;
+        if (blDot(perp, perp, dims) > 0.0001f) {
+          float4 n = perp / blEuclid(perp, dims);
+          best = fmin(best, blDot((closest + v) / 2.0f, n, dims));
+        }
+      }
+  return best;
+}
+
+/* N-Sphere Radius: half the distance from the closest point to the point closest to it. */
+float blVoronoiRadius(float4 coord, int dims, float randomness) {
+  float4 cell = floor(coord);
+  float4 rel = coord - cell;
+  int kreach = dims == 2 ? 0 : 1;
+  float4 closest = (float4)(0.0f), closestOff = (float4)(0.0f);
+  float best = BL_FLT_MAX;
+  for (int k = -kreach; k <= kreach; k++)
+    for (int j = -1; j <= 1; j++)
+      for (int i = -1; i <= 1; i++) {
+        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
+        float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
+        float d = blEuclid(point - rel, dims);
+        if (d < best) {
+          best = d;
+          closest = point;
+          closestOff = off;
+        }
+      }
+  best = BL_FLT_MAX;
+  float4 neighbour = (float4)(0.0f);
+  for (int k = -kreach; k <= kreach; k++)
+    for (int j = -1; j <= 1; j++)
+      for (int i = -1; i <= 1; i++) {
+        if (i == 0 && j == 0 && k == 0)
+          continue;
+        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f) + closestOff;
+        float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
+        float d = blEuclid(closest - point, dims);
+        if (d < best) {
+          best = d;
+          neighbour = point;
+        }
+      }
+  return blEuclid(neighbour - closest, dims) / 2.0f;
+}
+
+/* The node: output 0 Distance, 1 Color, 2 Position, 3 Radius, as a float4 (scalar in .x). */
+float4 blVoronoiTexture(float3 vector, int dims, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize, int output) {
+  detail = clamp(detail, 0.0f, 15.0f);
+  roughness = clamp(roughness, 0.0f, 1.0f);
+  randomness = clamp(randomness, 0.0f, 1.0f);
+  smoothness = clamp(smoothness / 2.0f, 0.0f, 0.5f);
+  float4 coord = (float4)(vector * scale, 0.0f);
+  if (dims == 2)
+    coord.z = 0.0f;
+  if (feature == 4)
+    return output == 3 ? (float4)(blVoronoiRadius(coord, dims, randomness), 0.0f, 0.0f, 0.0f)
+                       : (float4)(0.0f);
+  int zeroInput = detail == 0.0f || roughness == 0.0f;
+  float amplitude = 1.0f, octaveScale = 1.0f;
+  if (feature == 3) {
+    if (output != 0)
+      return (float4)(0.0f);
+    float maxDistance = 0.5f + 0.5f * randomness;
+    float maxAmplitude = maxDistance, distance = 8.0f;
+    for (int i = 0; i <= ceil(detail); ++i) {
+      float d = blVoronoiEdgeOctave(coord * octaveScale, dims, randomness);
+      if (zeroInput) {
+        distance = d;
+        break;
+      }
+      if (i <= detail) {
+        maxAmplitude = maxAmplitude + amplitude * (maxDistance / octaveScale - maxAmplitude);
+        distance = distance + amplitude * (fmin(distance, d / octaveScale) - distance);
+        octaveScale *= lacunarity;
+        amplitude *= roughness;
+      } else {
+        float rmd = detail - floor(detail);
+        if (rmd != 0.0f) {
+          float lerpAmplitude = maxAmplitude + amplitude * (maxDistance / octaveScale - maxAmplitude);
+          maxAmplitude = maxAmplitude + rmd * (lerpAmplitude - maxAmplitude);
+          float lerpDistance = distance + amplitude * (fmin(distance, d / octaveScale) - distance);
+          distance = distance + rmd * (fmin(distance, lerpDistance) - distance);
+        }
+      }
+    }
+    if (normalize)
+      distance /= maxAmplitude;
+    return (float4)(distance, 0.0f, 0.0f, 0.0f);
+  }
+  if (feature == 2 && smoothness == 0.0f)
+    feature = 0;
+  float m = 0.5f + 0.5f * randomness;
+  float maxDistance = blVoronoiMetric((float4)(0.0f), (float4)(m, m, m, 0.0f), dims, metric,
+                                      exponent) * (feature == 1 ? 2.0f : 1.0f);
+  float maxAmplitude = 0.0f, distance = 0.0f;
+  float3 color = (float3)(0.0f);
+  float4 position = (float4)(0.0f);
+  for (int i = 0; i <= ceil(detail); ++i) {
+    float3 c;
+    float4 p;
+    float d = blVoronoiOctave(coord * octaveScale, dims, feature, metric, exponent, randomness,
+                              smoothness, &c, &p);
+    if (zeroInput) {
+      maxAmplitude = 1.0f;
+      distance = d;
+      color = c;
+      position = p;
+      break;
+    }
+    if (i <= detail) {
+      maxAmplitude += amplitude;
+      distance += d * amplitude;
+      color += c * amplitude;
+      position = position + amplitude * (p / octaveScale - position);
+      octaveScale *= lacunarity;
+      amplitude *= roughness;
+    } else {
+      float rmd = detail - floor(detail);
+      if (rmd != 0.0f) {
+        maxAmplitude = maxAmplitude + rmd * (maxAmplitude + amplitude - maxAmplitude);
+        distance = distance + rmd * (distance + d * amplitude - distance);
+        color = color + rmd * (color + c * amplitude - color);
+        float4 lerpPosition = position + amplitude * (p / octaveScale - position);
+        position = position + rmd * (lerpPosition - position);
+      }
+    }
+  }
+  if (normalize) {
+    distance /= maxAmplitude * maxDistance;
+    color /= maxAmplitude;
+  }
+  position = scale != 0.0f ? position / scale : (float4)(0.0f);
+  if (output == 0)
+    return (float4)(distance, 0.0f, 0.0f, 0.0f);
+  if (output == 1)
+    return (float4)(color, 0.0f);
+  if (output == 2)
+    return position;
+  return (float4)(0.0f);
+}
+
+#define BL_VORONOI_PARAMS                                                                      \
+  float3 vector, float scale, float detail, float roughness, float lacunarity, float smoothness, \
+      float exponent, float randomness, int feature, int metric, int normalize
+#define BL_VORONOI_ARGS                                                                        \
+  vector, DIMS, scale, detail, roughness, lacunarity, smoothness, exponent, randomness, feature, \
+      metric, normalize
+
+#define DIMS 2
+float blVoronoi2DDistance(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 0).x; }
+float3 blVoronoi2DColor(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 1).xyz; }
+float3 blVoronoi2DPosition(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 2).xyz; }
+float blVoronoi2DRadius(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 3).x; }
+#undef DIMS
+
+#define DIMS 3
+float blVoronoi3DDistance(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 0).x; }
+float3 blVoronoi3DColor(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 1).xyz; }
+float3 blVoronoi3DPosition(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 2).xyz; }
+float blVoronoi3DRadius(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 3).x; }
+#undef DIMS
