@@ -152,6 +152,60 @@ voronoi_variant("voronoi2d-smooth-f1", 2, "SMOOTH_F1", smoothness=0.8, scale=3.0
 voronoi_variant("voronoi2d-edge", 2, "DISTANCE_TO_EDGE", scale=3.0)
 voronoi_variant("voronoi2d-nsphere", 2, "N_SPHERE_RADIUS", scale=3.0)
 
+# Cycles' NodeMathType order: textures/blender/math.cl's operation numbers.
+MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "SINE", "COSINE", "TANGENT", "ARCSINE",
+            "ARCCOSINE", "ARCTANGENT", "POWER", "LOGARITHM", "MINIMUM", "MAXIMUM", "ROUND",
+            "LESS_THAN", "GREATER_THAN", "MODULO", "ABSOLUTE", "ARCTAN2", "FLOOR", "CEIL",
+            "FRACT", "SQRT", "INVERSE_SQRT", "SIGN", "EXPONENT", "RADIANS", "DEGREES", "SINH",
+            "COSH", "TANH", "TRUNC", "SNAP", "WRAP", "COMPARE", "MULTIPLY_ADD", "PINGPONG",
+            "SMOOTH_MIN", "SMOOTH_MAX", "FLOORED_MODULO"]
+
+for number, op in enumerate(MATH_OPS):
+    variant("math-" + op.lower().replace("_", "-"), "ShaderNodeMath",
+            {"operation": op, "use_clamp": False}, {},
+            {"Value": "P.x", "Value_001": "P.y", "Value_002": "P.z"}, "math.cl",
+            [("Value", "blMath", 1)],
+            {"a": "P.x", "b": "P.y", "c": "P.z", "operation": number, "useClamp": 0})
+for op in ("MULTIPLY", "SINE"):
+    variant("math-%s-clamp" % op.lower(), "ShaderNodeMath", {"operation": op, "use_clamp": True},
+            {}, {"Value": "P.x", "Value_001": "P.y", "Value_002": "P.z"}, "math.cl",
+            [("Value", "blMath", 1)],
+            {"a": "P.x", "b": "P.y", "c": "P.z", "operation": MATH_OPS.index(op), "useClamp": 1})
+
+MAP_RANGE_TYPES = ["LINEAR", "STEPPED", "SMOOTHSTEP", "SMOOTHERSTEP"]
+
+
+def map_range_variant(name, interpolation, clamp, from_min=0.2, from_max=1.9, to_min=-0.5,
+                      to_max=2.0, steps=3.0):
+    variant(name, "ShaderNodeMapRange",
+            {"data_type": "FLOAT", "interpolation_type": interpolation, "clamp": clamp},
+            {"From Min": from_min, "From Max": from_max, "To Min": to_min, "To Max": to_max,
+             "Steps": steps}, {"Value": "P.x"}, "math.cl", [("Result", "blMapRange", 1)],
+            {"value": "P.x", "fromMin": from_min, "fromMax": from_max, "toMin": to_min,
+             "toMax": to_max, "steps": steps,
+             "interpolation": MAP_RANGE_TYPES.index(interpolation), "useClamp": int(clamp)})
+
+
+map_range_variant("maprange-linear", "LINEAR", False)
+map_range_variant("maprange-linear-clamp", "LINEAR", True)
+map_range_variant("maprange-stepped-clamp", "STEPPED", True)
+map_range_variant("maprange-smoothstep", "SMOOTHSTEP", False)
+map_range_variant("maprange-smootherstep", "SMOOTHERSTEP", False)
+map_range_variant("maprange-smoothstep-inverted", "SMOOTHSTEP", False, from_min=1.9,
+                  from_max=0.2)
+
+for name, ctype, lo, hi in (("clamp-minmax", "MINMAX", 0.1, 1.2),
+                            ("clamp-range-inverted", "RANGE", 1.2, 0.1)):
+    variant(name, "ShaderNodeClamp", {"clamp_type": ctype}, {"Min": lo, "Max": hi},
+            {"Value": "P.x"}, "math.cl", [("Result", "blClamp", 1)],
+            {"value": "P.x", "minimum": lo, "maximum": hi,
+             "clampType": 0 if ctype == "MINMAX" else 1})
+
+variant("combine-xyz", "ShaderNodeCombineXYZ", {}, {}, {"X": "P.y", "Y": "P.z", "Z": "P.x"},
+        "converter.cl", [("Vector", "blCombineXYZ", 3)], {"x": "P.y", "y": "P.z", "z": "P.x"})
+variant("geometry-position", "ShaderNodeNewGeometry", {}, {}, {}, "converter.cl",
+        [("Position", "blGeometryPosition", 3)], {})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 
@@ -242,7 +296,7 @@ def encode(values):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--only", nargs="*", help="variant names (default: all)")
+    ap.add_argument("--only", nargs="*", help="variant names or prefixes (default: all)")
     ap.add_argument("--size", type=int, default=48, help="texels per side (points: size^2)")
     args = ap.parse_args()
     ensure_bpy()
@@ -261,7 +315,8 @@ def main():
         sys.exit("blender_conformance: baked positions are %g from the texel centres" % drift)
     with open(os.path.join(OUT, "points.txt"), "w") as f:
         f.write("".join("%.9g %.9g %.9g\n" % tuple(float(c) for c in p) for p in points))
-    chosen = [v for v in VARIANTS if not args.only or v["name"] in args.only]
+    chosen = [v for v in VARIANTS
+              if not args.only or any(v["name"].startswith(o) for o in args.only)]
     for v in chosen:
         outputs = []
         for socket, fn, channels in v["outputs"]:
