@@ -372,7 +372,10 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     Cl->write(B["sums"], Zeros.data(), bytes(Zeros));
     Cl->write(B["sumsSquared"], Zeros.data(), bytes(Zeros));
     bool Drew = false;
-    for (int Done = 0; Done < Spp;) {
+    int Done = 0;
+    while (Done < Spp) {
+      if (Opts.OnPass)
+        Opts.OnPass(true);
       int Now = std::min(SppPerPass, Spp - Done);
       int N = int(NumPixels) * Now;
       cl::Kernel &RG = K["raygen"];
@@ -395,7 +398,20 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
         std::fflush(stderr);
         Drew = true;
       }
+      // --time-limit: stop at a pass boundary, with every pass done complete.
+      if (Opts.Deadline > 0) {
+        Cl->finish();
+        if (steadySeconds() > Opts.Deadline && Done < Spp) {
+          Stats.TimeLimited = true;
+          break;
+        }
+      }
+      if (Opts.OnPass)
+        Opts.OnPass(false);
     }
+    if (Opts.OnPass)
+      Opts.OnPass(false);
+    Stats.SamplesDone = Done;
     Cl->finish();
     if (Drew)
       std::fprintf(stderr, "\n");
@@ -410,20 +426,20 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     std::vector<float> RGB(NumPixels * 3);
     for (size_t P = 0; P < NumPixels; ++P)
       for (int C = 0; C < 3; ++C)
-        RGB[3 * P + C] = Sums[P].s[C] / float(Spp);
+        RGB[3 * P + C] = Sums[P].s[C] / float(Done);
     if (Variance) {
       // The variance of each pixel's mean: the sample variance over its samples / spp.
       std::vector<cl_float4> Sq(NumPixels);
       Cl->read(B["sumsSquared"], Sq.data(), bytes(Sq));
       Variance->assign(NumPixels * 3, 0.0f);
-      for (size_t P = 0; P < NumPixels && Spp > 1; ++P)
+      for (size_t P = 0; P < NumPixels && Done > 1; ++P)
         for (int C = 0; C < 3; ++C) {
           double M = RGB[3 * P + C];
-          double S2 = (double(Sq[P].s[C]) - Spp * M * M) / (Spp - 1);
+          double S2 = (double(Sq[P].s[C]) - Done * M * M) / (Done - 1);
           // A saturated sum of squares (accumulate.cl) only bounds the variance from below.
           if (Sq[P].s[C] >= FLT_MAX)
             S2 = DBL_MAX;
-          (*Variance)[3 * P + C] = float(std::min(std::max(0.0, S2) / Spp, double(FLT_MAX)));
+          (*Variance)[3 * P + C] = float(std::min(std::max(0.0, S2) / Done, double(FLT_MAX)));
         }
     }
     Stats.Seconds = now() - T0;

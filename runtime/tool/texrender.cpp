@@ -10,14 +10,19 @@
 #include "texrender/Renderer.h"
 #include "texrender/Stats.h"
 
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <optional>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -53,12 +58,16 @@ const char *Usage =
     "  --variance FILE.exr  write the per-pixel variance of the image (for statistical tests)\n"
     "  --kernels DIR        fixed kernels folder (default: next to the executable)\n"
     "  --cache-dir DIR      program-binary cache (default $XDG_CACHE_HOME/texcc); --no-cache\n"
+    "  --time-limit S       stop rendering after S seconds (from the start) and write the\n"
+    "                       image of the passes done; a kernel build or a single device pass\n"
+    "                       that runs past it is an error (exit 1, no output written)\n"
     "  --quiet              no progress bar\n";
 
 struct Options {
   std::string Scene, Textures, Output, Stats, Variance, EditScript, KernelDir, CacheDir = defaultCacheDir();
   std::optional<int> Spp, Width, Height, MaxDepth, AoSamples, Seed;
   std::optional<float> AoDistance;
+  double TimeLimit = 0; // --time-limit seconds; 0: none
   std::vector<std::string> Sets;
   int Device = 0;
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
@@ -184,6 +193,11 @@ Options parseArgs(int Argc, char **Argv) {
       O.CacheDir = Next();
     } else if (A == "--no-cache") {
       O.CacheDir.clear();
+    } else if (A == "--time-limit") {
+      std::string S = Next();
+      O.TimeLimit = toFloat(A, S);
+      if (!(O.TimeLimit > 0) || !std::isfinite(O.TimeLimit))
+        throw Error("--time-limit: expected a positive number of seconds, got '" + S + "'");
     } else if (A == "--quiet" || A == "-q") {
       O.Quiet = true;
     } else if (A.size() > 1 && A[0] == '-') {
@@ -203,6 +217,9 @@ Options parseArgs(int Argc, char **Argv) {
   std::string Ext = fs::path(O.Output).extension().string();
   if (Ext != ".png" && Ext != ".exr" && Ext != ".PNG" && Ext != ".EXR")
     throw Error("-o " + O.Output + ": unknown image format (expected .png or .exr)");
+  if (O.TimeLimit > 0 && (!O.EditScript.empty() || O.Interactive))
+    throw Error("--time-limit limits one render: it cannot be combined with --edit-script or "
+                "--interactive");
   for (const std::string *Out : {&O.Output, &O.Stats, &O.Variance})
     checkOutputPath(*Out);
   return O;
@@ -260,15 +277,68 @@ void checkEdits(const LiveEditor &Editor, const std::vector<Edit> &Sets, const E
   throw scriptError(Script.Path, Script.Lines[K], P->Col, P->Message);
 }
 
+/// --time-limit: a thread that ends the process when a step that cannot be interrupted runs past
+/// the limit: loading and building before the deadline, a single device pass for longer than the
+/// limit. Rendering itself stops at a pass boundary (RendererOptions::Deadline). The watchdog is
+/// idle while outputs are written (phase ""), so that it never leaves a temporary file behind.
+class Watchdog {
+public:
+  Watchdog(double Limit, double Deadline) : Limit(Limit), Deadline(Deadline) {
+    Thread = std::thread([this] { watch(); });
+  }
+  ~Watchdog() {
+    {
+      std::lock_guard<std::mutex> Lock(M);
+      Done = true;
+    }
+    Wake.notify_all();
+    Thread.join();
+  }
+  /// What the run does now, for the error ("building the kernels"); "" pauses the watchdog.
+  void phase(const char *What) { Phase.store(What); }
+  /// Renderer::OnPass: times the pass in flight.
+  void pass(bool InPass) { PassStart.store(InPass ? steadySeconds() : 0.0); }
+
+private:
+  void watch() {
+    std::unique_lock<std::mutex> Lock(M);
+    while (!Wake.wait_for(Lock, std::chrono::milliseconds(20), [this] { return Done; })) {
+      const char *What = Phase.load();
+      double Now = steadySeconds(), Start = PassStart.load();
+      if (Start > 0 && Now > Start + Limit)
+        fire("rendering (a single device pass ran longer than the limit)");
+      else if (Start == 0 && *What && Now > Deadline)
+        fire(What);
+    }
+  }
+  [[noreturn]] void fire(const char *What) {
+    std::fprintf(stderr, "texrender: error: --time-limit %g s: exceeded while %s\n", Limit, What);
+    std::fflush(stderr);
+    _exit(1); // the device call cannot be interrupted; nothing is half-written (outputs are renamed into place)
+  }
+
+  double Limit, Deadline;
+  std::atomic<const char *> Phase{""};
+  std::atomic<double> PassStart{0.0};
+  std::mutex M;
+  std::condition_variable Wake;
+  bool Done = false;
+  std::thread Thread;
+};
+
+/// Sets the watchdog's phase, if there is a watchdog.
+void phase(Watchdog *W, const char *What) {
+  if (W)
+    W->phase(What);
+}
+
 std::string frameName(const std::string &Out, size_t K) {
   fs::path P(Out);
   return (P.parent_path() / (P.stem().string() + ".frame" + std::to_string(K) + P.extension().string()))
       .string();
 }
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return steadySeconds(); }
 
 /// The builds between one frame and the next: those the frame waited for (foreground) and
 /// those the background thread finished meanwhile.
@@ -315,18 +385,48 @@ void printLatency(size_t K, const FrameRecord &F) {
   std::fflush(stdout);
 }
 
+/// The longest line --interactive reads; a longer one ends the session.
+constexpr size_t MaxInteractiveLine = 64 * 1024;
+
+enum class LineRead { Line, End, TooLong };
+
+/// Reads one line (without its newline) of at most Max bytes, so that an endless line
+/// (/dev/zero) neither hangs the session nor fills memory.
+LineRead readBoundedLine(std::istream &In, std::string &Line, size_t Max) {
+  Line.clear();
+  std::streambuf *Buf = In.rdbuf();
+  for (bool Any = false;; Any = true) {
+    int C = Buf->sbumpc();
+    if (C == std::char_traits<char>::eof())
+      return Any ? LineRead::Line : LineRead::End;
+    if (C == '\n')
+      return LineRead::Line;
+    if (Line.size() == Max)
+      return LineRead::TooLong;
+    Line.push_back(char(C));
+  }
+}
+
 /// --interactive: edits from standard input until 'quit' or its end. A bad edit is reported
-/// and skipped (the session goes on); the image OUT is rewritten after every frame.
-void interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Renderer &R,
+/// and skipped (the session goes on); the image OUT is rewritten after every frame. A line
+/// longer than MaxInteractiveLine ends the session like the end of input, with an error: the
+/// return value (false).
+bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Renderer &R,
                         BuildCounter &Builds, std::vector<float> &Image,
                         std::vector<FrameRecord> &Frames) {
   const bool Tty = isatty(0);
   std::string Line;
-  for (;;) {
+  for (unsigned N = 1;; ++N) {
     if (Tty)
       std::fprintf(stderr, "edit> ");
-    if (!std::getline(std::cin, Line))
+    LineRead Got = readBoundedLine(std::cin, Line, MaxInteractiveLine);
+    if (Got == LineRead::End)
       break;
+    if (Got == LineRead::TooLong) {
+      std::fprintf(stderr, "texrender: error: standard input:%u: line longer than %zu bytes; the "
+                           "interactive session ends\n", N, MaxInteractiveLine);
+      return false;
+    }
     size_t B = Line.find_first_not_of(" \t\r");
     if (B == std::string::npos || Line[B] == '#')
       continue;
@@ -341,6 +441,7 @@ void interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
     printLatency(Frames.size() - 1, Frames.back());
     writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
   }
+  return true;
 }
 
 int run(int Argc, char **Argv) try {
@@ -354,6 +455,10 @@ int run(int Argc, char **Argv) try {
       std::cout << D << "\n";
     return 0;
   }
+  std::unique_ptr<Watchdog> Dog;
+  if (O.TimeLimit > 0)
+    Dog = std::make_unique<Watchdog>(O.TimeLimit, T0 + O.TimeLimit);
+  phase(Dog.get(), "loading the scene");
   Scene S = loadScene(O.Scene);
   if (O.Spp) S.Render.Spp = *O.Spp;
   if (O.Width) S.Render.Width = *O.Width, S.Render.Height = *O.Height;
@@ -378,6 +483,10 @@ int run(int Argc, char **Argv) try {
   RO.Progress = !O.Quiet && isatty(2);
   RO.CheckNan = O.CheckNan;
   RO.AoPerHitLoop = O.AoLoop;
+  if (Dog) {
+    RO.Deadline = T0 + O.TimeLimit;
+    RO.OnPass = [W = Dog.get()](bool InPass) { W->pass(InPass); };
+  }
   // Tiered pays off when edits follow; a single render waits for the shape build instead
   // (docs/runtime.md, Tiers: the interp frame is slower and the background build competes).
   RO.Tier = O.Tier.value_or(!Script.empty() || O.Interactive ? TierPolicy::Auto : TierPolicy::Shape);
@@ -390,7 +499,9 @@ int run(int Argc, char **Argv) try {
     Editor = std::make_unique<LiveEditor>(L);
     checkEdits(*Editor, Sets, ScriptFile);
   }
+  phase(Dog.get(), "building the kernels");
   Renderer R(S, L, RO);
+  phase(Dog.get(), "applying the --set edits");
 
   std::vector<FrameRecord> Frames;
   FrameRecord First;
@@ -401,7 +512,13 @@ int run(int Argc, char **Argv) try {
   }
   std::vector<float> Variance;
   BuildCounter Builds(R);
+  // Between passes the render stops by itself at the deadline; only a pass is timed.
+  phase(Dog.get(), "");
   std::vector<float> Image = R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance);
+  if (First.Frame.TimeLimited)
+    std::fprintf(stderr, "texrender: note: --time-limit %g s: stopped after %d of %d samples per "
+                         "pixel (%u passes); the image averages those\n",
+                 O.TimeLimit, First.Frame.SamplesDone, S.Render.Spp, First.Frame.Passes);
   if (!O.Variance.empty())
     writeImage(O.Variance, S.Render.Width, S.Render.Height, Variance);
   Builds.record(First);
@@ -413,11 +530,10 @@ int run(int Argc, char **Argv) try {
     writeImage(frameName(O.Output, K + 1), S.Render.Width, S.Render.Height, Image);
   }
   writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
-  if (O.Interactive)
-    interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
+  bool SessionOk = !O.Interactive || interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty())
     writeTextFile(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
-  return 0;
+  return SessionOk ? 0 : 1;
 } catch (const ScriptError &E) {
   std::fprintf(stderr, "%s\n", E.Text.c_str());
   return 1;

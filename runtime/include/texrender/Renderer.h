@@ -40,6 +40,12 @@ struct RendererOptions {
   /// work-item per AO ray (ao_trace + ao_reduce). Same rays, same image; kept to measure the
   /// paper's claim that the parallel launch is faster (bench/ao.py).
   bool AoPerHitLoop = false;
+  /// --time-limit: render() stops at the first pass boundary after this time (steadySeconds();
+  /// 0: none) and averages the passes done (FrameStats::SamplesDone, TimeLimited).
+  double Deadline = 0;
+  /// Called with true before each pass of render() and with false once it is done (texrender's
+  /// watchdog times single passes).
+  std::function<void(bool InPass)> OnPass;
 };
 
 /// Counts of one frame.
@@ -53,6 +59,8 @@ struct FrameStats {
   uint64_t NonFiniteSamples = 0; // NaN or infinite path samples, dropped from the image
   uint64_t SaturatedSamples = 0; // finite samples that made a pixel sum saturate at FLT_MAX
   unsigned Passes = 0;
+  int SamplesDone = 0;          // samples per pixel rendered (fewer than asked when TimeLimited)
+  bool TimeLimited = false;     // RendererOptions::Deadline stopped the frame early
   unsigned Bounces = 0;         // bounce iterations summed over passes
   std::string Tier;             // the texture kernel that ran: interp, shape, inline, wavefront
   std::map<std::string, KernelTiming> Kernels;
