@@ -66,9 +66,13 @@ def ensure_bpy():
 VARIANTS = []
 
 
-def variant(name, node, props, inputs, feeds, source, outputs, args):
+def variant(name, node, props, inputs, feeds, source, outputs, args, setup=None, describe=None):
+    """setup(node) configures what properties cannot (a ramp's stops); describe records it."""
     VARIANTS.append(dict(name=name, node=node, props=props, inputs=inputs, feeds=feeds,
                          source=source, outputs=outputs, args=args))
+    if setup:
+        VARIANTS[-1]["setup"] = setup
+        VARIANTS[-1]["describe"] = describe
 
 
 NOISE_TYPES = {"MULTIFRACTAL": 0, "FBM": 1, "HYBRID_MULTIFRACTAL": 2, "RIDGED_MULTIFRACTAL": 3,
@@ -206,6 +210,34 @@ variant("combine-xyz", "ShaderNodeCombineXYZ", {}, {}, {"X": "P.y", "Y": "P.z", 
 variant("geometry-position", "ShaderNodeNewGeometry", {}, {}, {}, "converter.cl",
         [("Position", "blGeometryPosition", 3)], {})
 
+RAMP_STOPS = [(0.15, (0.9, 0.2, 0.1, 1.0)), (0.4, (0.1, 0.8, 0.3, 0.5)),
+              (0.65, (0.2, 0.3, 0.9, 0.8)), (0.9, (1.0, 1.0, 0.2, 0.2))]
+RAMP_MODES = ["LINEAR", "EASE", "B_SPLINE", "CARDINAL", "CONSTANT"]
+
+
+def ramp_setup(mode):
+    def setup(node):
+        ramp = node.color_ramp
+        ramp.color_mode = "RGB"
+        ramp.interpolation = mode
+        while len(ramp.elements) < len(RAMP_STOPS):
+            ramp.elements.new(0.5)
+        for element, (pos, color) in zip(ramp.elements, RAMP_STOPS):
+            element.position = pos
+            element.color = color
+    return setup
+
+
+for mode in RAMP_MODES:
+    variant("colorramp-" + mode.lower().replace("_", "-"), "ShaderNodeValToRGB", {}, {},
+            {"Fac": "P.x*0.3+0.35"}, "ramp.cl",
+            [("Color", "blColorRampColor", 3), ("Alpha", "blColorRampAlpha", 1)],
+            {"fac": "P.x*0.3+0.35", "colors": [list(c) for _, c in RAMP_STOPS],
+             "positions": [p for p, _ in RAMP_STOPS], "count": len(RAMP_STOPS),
+             "interpolation": RAMP_MODES.index(mode)},
+            setup=ramp_setup(mode),
+            describe={"interpolation": mode, "stops": [[p] + list(c) for p, c in RAMP_STOPS]})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 
@@ -276,15 +308,27 @@ def build_variant(v, socket):
             socket_named(node.inputs, key).default_value = value
         for key, value in v["props"].items():
             setattr(node, key, value)
+        if "setup" in v:
+            v["setup"](node)
         separate = None
         for key, feed in v["feeds"].items():
             if feed == "P":
                 tree.links.new(position, socket_named(node.inputs, key))
-            else:
-                if separate is None:
-                    separate = tree.nodes.new("ShaderNodeSeparateXYZ")
-                    tree.links.new(position, separate.inputs[0])
-                tree.links.new(separate.outputs[feed[-1].upper()], socket_named(node.inputs, key))
+                continue
+            if separate is None:
+                separate = tree.nodes.new("ShaderNodeSeparateXYZ")
+                tree.links.new(position, separate.inputs[0])
+            source = separate.outputs[feed[2].upper()]
+            if "*" in feed:
+                # "P.x*S+O": one coordinate through Math Multiply Add (texcc: blMath, op 36).
+                scale, offset = (float(t) for t in feed[4:].split("+"))
+                affine = tree.nodes.new("ShaderNodeMath")
+                affine.operation = "MULTIPLY_ADD"
+                tree.links.new(source, affine.inputs[0])
+                affine.inputs[1].default_value = scale
+                affine.inputs[2].default_value = offset
+                source = affine.outputs[0]
+            tree.links.new(source, socket_named(node.inputs, key))
         return socket_named(node.outputs, socket)
     return build
 
@@ -325,7 +369,7 @@ def main():
                             "values": encode(values)})
         fixture = {"variant": v["name"], "blender": BPY_VERSION,
                    "node": {"type": v["node"], "properties": v["props"], "inputs": v["inputs"],
-                            "fed_from_position": v["feeds"]},
+                            "fed_from_position": v["feeds"], "setup": v.get("describe")},
                    "source": v["source"], "args": v["args"], "points": "points.txt",
                    "outputs": outputs}
         with open(os.path.join(OUT, v["name"] + ".json"), "w") as f:

@@ -53,24 +53,34 @@ def read_points(path):
         return [tuple(float(x) for x in line.split()) for line in f if line.strip()]
 
 
-def graph_arg(value):
-    """A fixture argument as a graph.json argument: "P" is the shading point."""
+def graph_arg(value, extra):
+    """A fixture argument as a graph.json argument: "P" is the shading point, "P.x" one of its
+    coordinates (Separate XYZ), "P.x*S+O" that coordinate through Math Multiply Add; the nodes
+    these need are added to extra."""
     if value == "P":
         return {"attr": "ObjectPos"}
-    if isinstance(value, str) and value.startswith("P."):
-        return {"node": "position_" + value[2]}
-    return value
+    if not (isinstance(value, str) and value.startswith("P.")):
+        return value
+    component = "position_" + value[2]
+    if "*" not in value:
+        return {"node": component}
+    scale, offset = (float(t) for t in value[4:].split("+"))
+    node_id = "affine_%s_%d" % (value[2], len(extra))
+    extra.append({"id": node_id, "fn": "blMath",
+                  "args": {"a": {"node": component}, "b": scale, "c": offset, "operation": 36,
+                           "useClamp": 0}})
+    return {"node": node_id}
 
 
 def build_graph(fixtures, src):
     lib = os.path.join(src, "textures", "blender")
     sources, nodes, materials, outputs = [], [], {}, []
-    uses_components = False
+    uses_components, extra = False, []
     for fx in fixtures:
         path = os.path.join(lib, fx["source"])
         if path not in sources:
             sources.append(path)
-        args = {k: graph_arg(v) for k, v in fx["args"].items()}
+        args = {k: graph_arg(v, extra) for k, v in fx["args"].items()}
         uses_components |= any(isinstance(v, str) and v.startswith("P.")
                                for v in fx["args"].values())
         for out in fx["outputs"]:
@@ -79,9 +89,10 @@ def build_graph(fixtures, src):
             materials["m_" + node_id] = {"bsdf": "diffuse", "color": {"node": node_id}}
             outputs.append((fx, out, "m_" + node_id))
     if uses_components:
-        conv = os.path.join(lib, "converter.cl")
-        if conv not in sources:
-            sources.append(conv)
+        for helper in ("converter.cl", "math.cl") if extra else ("converter.cl",):
+            if os.path.join(lib, helper) not in sources:
+                sources.append(os.path.join(lib, helper))
+        nodes += extra
         for axis in "xyz":
             nodes.append({"id": "position_" + axis, "fn": "blSeparateXYZ" + axis.upper(),
                           "args": {"vector": {"attr": "ObjectPos"}}})
