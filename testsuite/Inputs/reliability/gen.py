@@ -11,6 +11,9 @@ so that no huge file is committed. Graphs use the textures of tex.cl.
   gen.py macro-huge N OUT.cl  a macro whose expansion doubles N times (2^N tokens)
   gen.py nested N OUT.json    a graph whose "nodes" value is N nested arrays
   gen.py node FN OUT.json     one node calling FN(x = 1), the color of material m
+  gen.py functions N DIR      DIR/funcs.cl (N helpers, each calling the one before, about 50 bytes
+                              each) and DIR/graph.json (one node calling the texture 'top')
+  gen.py materials N OUT.json N materials, each a diffuse BSDF whose color is its own add node
 """
 import json
 import os
@@ -97,6 +100,27 @@ def node(fn):
                        "materials": {"m": {"bsdf": "diffuse", "color": {"node": "a"}}}}) + "\n"
 
 
+def functions(n, folder):
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "funcs.cl"), "w") as f:
+        f.write(f"/* funcs.cl: {n} helper functions, each calling the one before. */\n")
+        f.write("float h0(float x) { return x; }\n")
+        for i in range(1, n):
+            f.write(f"float h{i}(float x) {{ return h{i - 1}(x) * 0.5f; }}\n")
+        f.write(f"float top(float x) {{ return h{n - 1}(x); }}\n")
+    nodes = [{"id": "t", "fn": "top", "args": {"x": 1.0}}]
+    with open(os.path.join(folder, "graph.json"), "w") as f:
+        json.dump({"texcc": 1, "sources": ["funcs.cl"], "nodes": nodes,
+                   "materials": material("t")}, f, indent=1)
+
+
+def materials(n):
+    nodes = [{"id": f"n{i}", "fn": "add", "args": {"a": float(i % 7), "b": 0.5}}
+             for i in range(n)]
+    mats = {f"m{i}": {"bsdf": "diffuse", "color": {"node": f"n{i}"}} for i in range(n)}
+    return {"texcc": 1, "nodes": nodes, "materials": mats}
+
+
 def main():
     kind, size, out = sys.argv[1], sys.argv[2], sys.argv[3]
     if kind == "node":
@@ -104,6 +128,13 @@ def main():
             f.write(node(size))
         return
     size = int(size)
+    if kind == "functions":
+        functions(size, out)
+        return
+    if kind == "materials":
+        with open(out, "w", encoding="utf-8") as f:
+            json.dump(materials(size), f, indent=0)
+        return
     graphs = {"chain": chain, "tree": tree, "lattice": lattice, "cycle": cycle}
     if kind in graphs:
         write_graph(out, *graphs[kind](size))

@@ -68,6 +68,23 @@ std::string FileContext::renamed(const FunctionDecl *FD) const {
   return Prefix + FD->getName().str();
 }
 
+const std::vector<const CallSite *> &FileContext::callsFrom(const std::string &Caller) const {
+  if (IndexedCalls != Calls.size() || CallsByCaller.empty()) {
+    CallsByCaller.clear();
+    for (const CallSite &C : Calls)
+      CallsByCaller[C.Caller].push_back(&C);
+    IndexedCalls = Calls.size();
+  }
+  static const std::vector<const CallSite *> None;
+  auto It = CallsByCaller.find(Caller);
+  return It == CallsByCaller.end() ? None : It->second;
+}
+
+bool FileContext::definesRenamed(const std::string &Renamed) const {
+  return llvm::StringRef(Renamed).startswith(Prefix) &&
+         Definitions.count(Renamed.substr(Prefix.size()));
+}
+
 SourceLocation FileContext::spelled(SourceLocation Loc) const {
   return SM.getSpellingLoc(Loc);
 }

@@ -82,8 +82,16 @@ public:
   /// User functions called somewhere (renamed name -> a call site), to check they are defined.
   std::map<std::string, clang::SourceLocation> Called;
 
+  /// The calls made by Caller (a renamed name), in source order: an index over Calls, built on
+  /// first use after matching, so that walks of the call graph are linear in its size.
+  const std::vector<const CallSite *> &callsFrom(const std::string &Caller) const;
+  /// Whether Renamed names a function this file defines.
+  bool definesRenamed(const std::string &Renamed) const;
+
 private:
   std::map<Diag, unsigned> DiagIds;
+  mutable std::map<std::string, std::vector<const CallSite *>> CallsByCaller;
+  mutable size_t IndexedCalls = 0; // Calls.size() when CallsByCaller was built
 };
 
 } // namespace texcc::frontend

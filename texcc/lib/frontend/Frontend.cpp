@@ -65,7 +65,7 @@ public:
     if (!isUserFile(SM, Name.getLocation()))
       return;
     std::string N = Name.getIdentifierInfo()->getName().str();
-    if (std::find(Macros.begin(), Macros.end(), N) == Macros.end())
+    if (Seen.insert(N).second)
       Macros.push_back(N);
   }
 
@@ -102,6 +102,7 @@ private:
   const SourceManager &SM;
   std::vector<std::string> &Macros;
   std::vector<IncludeSite> &Includes;
+  std::set<std::string> Seen; // Macros, for a lookup in O(log n)
   bool Pending = false;
 };
 
@@ -124,12 +125,14 @@ void TexccConsumer::HandleTranslationUnit(ASTContext &Ctx) {
   ContextThreading Thread(FC);
   SignatureCollector Signatures(FC);
   Restrictions Restrict(FC);
+  LoopBudget Loops(FC);
   MatchFinder Finder;
   Rename.registerMatchers(Finder);
   Lower.registerMatchers(Finder);
   Thread.registerMatchers(Finder);
   Signatures.registerMatchers(Finder);
   Restrict.registerMatchers(Finder);
+  Loops.registerMatchers(Finder);
   Finder.matchAST(Ctx);
   Restrict.finish();
   Signatures.finish(*Job.TextureNames, Job.EarlierTextures, Job.Textures, Job.Reachable);
@@ -168,6 +171,57 @@ TexccConsumer::replacementsWithIncludes(FileContext &FC, FileID File) {
   return Repl;
 }
 
+/// Replacements::getShiftedCodePosition and "the text inserted at an offset" in O(log n) each
+/// (Replacements walks every replacement per query: quadratic over a file's definitions).
+class ShiftIndex {
+public:
+  explicit ShiftIndex(const tooling::Replacements &Repl) {
+    long Delta = 0;
+    for (const tooling::Replacement &R : Repl) {
+      Entries.push_back({R.getOffset(), R.getLength(),
+                         static_cast<unsigned>(R.getReplacementText().size()), Delta});
+      Delta += static_cast<long>(R.getReplacementText().size()) - R.getLength();
+    }
+  }
+
+  /// Exactly tooling::Replacements::getShiftedCodePosition: the replacements are sorted and do
+  /// not overlap, so those ending at or before Position are a prefix.
+  unsigned shifted(unsigned Position) const {
+    auto It = std::partition_point(Entries.begin(), Entries.end(), [&](const Entry &E) {
+      return E.Offset + E.Length <= Position;
+    });
+    long Delta = It == Entries.begin() ? 0 : std::prev(It)->DeltaBefore + prevShift(It);
+    if (It != Entries.end() && It->Offset < Position && It->Offset + It->TextSize <= Position) {
+      Position = It->Offset + It->TextSize;
+      if (It->TextSize)
+        --Position;
+    }
+    return static_cast<unsigned>(static_cast<long>(Position) + Delta);
+  }
+
+  /// The length of the text inserted (replacing nothing) at Offset.
+  unsigned insertedAt(unsigned Offset) const {
+    unsigned Size = 0;
+    auto It = std::partition_point(Entries.begin(), Entries.end(),
+                                   [&](const Entry &E) { return E.Offset < Offset; });
+    for (; It != Entries.end() && It->Offset == Offset; ++It)
+      if (It->Length == 0)
+        Size += It->TextSize;
+    return Size;
+  }
+
+private:
+  struct Entry {
+    unsigned Offset, Length, TextSize;
+    long DeltaBefore; // the shift of all replacements before this one
+  };
+  static long prevShift(std::vector<Entry>::const_iterator It) {
+    const Entry &P = *std::prev(It);
+    return static_cast<long>(P.TextSize) - P.Length;
+  }
+  std::vector<Entry> Entries;
+};
+
 void TexccConsumer::buildOutput(FileContext &FC) {
   const SourceManager &SM = FC.SM;
   FileID Main = SM.getMainFileID();
@@ -186,6 +240,7 @@ void TexccConsumer::buildOutput(FileContext &FC) {
   }
   TranslatedSource &Out = Job.Out;
   Out.Text = std::move(*Text);
+  const ShiftIndex Shift(*Repl);
   for (const auto &[Name, FD] : FC.Definitions) {
     std::string Renamed = FC.renamed(FD);
     Out.Functions[Name] = Renamed;
@@ -197,13 +252,11 @@ void TexccConsumer::buildOutput(FileContext &FC) {
       continue;
     TranslatedSource::Range R;
     const unsigned BeginOffset = SM.getFileOffset(B);
-    R.Begin = Repl->getShiftedCodePosition(BeginOffset);
+    R.Begin = Shift.shifted(BeginOffset);
     // Text inserted at the definition's first character (the inline marker) is part of it:
     // the shifted position counts it, the range starts before it.
-    for (const tooling::Replacement &Rep : *Repl)
-      if (Rep.getOffset() == BeginOffset && Rep.getLength() == 0)
-        R.Begin -= Rep.getReplacementText().size();
-    R.End = Repl->getShiftedCodePosition(SM.getFileOffset(E));
+    R.Begin -= Shift.insertedAt(BeginOffset);
+    R.End = Shift.shifted(SM.getFileOffset(E));
     R.FirstLine = SM.getExpansionLineNumber(B);
     R.LineAfter = SM.getExpansionLineNumber(E);
     Out.Definitions[Renamed] = R;

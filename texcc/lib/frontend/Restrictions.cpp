@@ -57,9 +57,7 @@ void Restrictions::finish() {
   for (const auto &Call : FC.Called) {
     const std::string &Renamed = Call.first;
     clang::SourceLocation Loc = Call.second;
-    bool Defined = std::any_of(FC.Definitions.begin(), FC.Definitions.end(),
-                               [&](const auto &D) { return FC.renamed(D.second) == Renamed; });
-    if (!Defined)
+    if (!FC.definesRenamed(Renamed))
       FC.report(Loc, Diag::UndefinedCallee) << Renamed.substr(FC.Prefix.size()) << FC.Path;
   }
   reportCycles();
@@ -76,8 +74,9 @@ void Restrictions::reportCycles() {
     Marks[Fn] = Mark::Grey;
     Stack.push_back(Fn);
     std::set<std::string> Done;
-    for (const CallSite &C : FC.Calls) {
-      if (C.Caller != Fn || !Done.insert(C.Callee).second)
+    for (const CallSite *Site : FC.callsFrom(Fn)) {
+      const CallSite &C = *Site;
+      if (!Done.insert(C.Callee).second)
         continue;
       Mark M = Marks[C.Callee];
       if (M == Mark::Grey) {

@@ -69,9 +69,9 @@ std::set<std::string> SignatureCollector::reachableFrom(const std::string &Renam
   while (!Work.empty()) {
     std::string Fn = Work.back();
     Work.pop_back();
-    for (const CallSite &C : FC.Calls)
-      if (C.Caller == Fn && Seen.insert(C.Callee).second)
-        Work.push_back(C.Callee);
+    for (const CallSite *C : FC.callsFrom(Fn))
+      if (Seen.insert(C->Callee).second)
+        Work.push_back(C->Callee);
   }
   return Seen;
 }
