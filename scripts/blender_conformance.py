@@ -238,6 +238,44 @@ for mode in RAMP_MODES:
             setup=ramp_setup(mode),
             describe={"interpolation": mode, "stops": [[p] + list(c) for p, c in RAMP_STOPS]})
 
+# textures/blender/mix.cl's blend numbers: Blender's menu order.
+BLEND_TYPES = ["MIX", "DARKEN", "MULTIPLY", "BURN", "LIGHTEN", "SCREEN", "DODGE", "ADD",
+               "OVERLAY", "SOFT_LIGHT", "LINEAR_LIGHT", "DIFFERENCE", "EXCLUSION", "SUBTRACT",
+               "DIVIDE", "HUE", "SATURATION", "COLOR", "VALUE"]
+MIX_FACTOR = "P.z*0.4+0.45"
+MIX_B_COLOR = (0.8, 0.3, 0.55, 1.0)
+
+for number, blend in enumerate(BLEND_TYPES):
+    variant("mix-color-" + blend.lower().replace("_", "-"), "ShaderNodeMix",
+            {"data_type": "RGBA", "blend_type": blend, "clamp_factor": True,
+             "clamp_result": False}, {"B_Color": MIX_B_COLOR},
+            {"Factor_Float": MIX_FACTOR, "A_Color": "P"}, "mix.cl",
+            [("Result_Color", "blMixColor", 3)],
+            {"factor": MIX_FACTOR, "a": "P", "b": list(MIX_B_COLOR[:3]), "blendType": number,
+             "clampFactor": 1, "clampResult": 0})
+variant("mix-color-multiply-unclamped-clamp-result", "ShaderNodeMix",
+        {"data_type": "RGBA", "blend_type": "MULTIPLY", "clamp_factor": False,
+         "clamp_result": True}, {"B_Color": MIX_B_COLOR},
+        {"Factor_Float": MIX_FACTOR, "A_Color": "P"}, "mix.cl", [("Result_Color", "blMixColor", 3)],
+        {"factor": MIX_FACTOR, "a": "P", "b": list(MIX_B_COLOR[:3]), "blendType": 2,
+         "clampFactor": 0, "clampResult": 1})
+for clamp in (True, False):
+    suffix = "" if clamp else "-unclamped"
+    variant("mix-float" + suffix, "ShaderNodeMix", {"data_type": "FLOAT", "clamp_factor": clamp},
+            {}, {"Factor_Float": MIX_FACTOR, "A_Float": "P.x", "B_Float": "P.y"}, "mix.cl",
+            [("Result_Float", "blMixFloat", 1)],
+            {"factor": MIX_FACTOR, "a": "P.x", "b": "P.y", "clampFactor": int(clamp)})
+variant("mix-vector", "ShaderNodeMix",
+        {"data_type": "VECTOR", "factor_mode": "UNIFORM", "clamp_factor": True},
+        {"B_Vector": (0.5, -1.0, 2.0)}, {"Factor_Float": MIX_FACTOR, "A_Vector": "P"}, "mix.cl",
+        [("Result_Vector", "blMixVector", 3)],
+        {"factor": MIX_FACTOR, "a": "P", "b": [0.5, -1.0, 2.0], "clampFactor": 1})
+variant("mix-vector-non-uniform", "ShaderNodeMix",
+        {"data_type": "VECTOR", "factor_mode": "NON_UNIFORM", "clamp_factor": True},
+        {"B_Vector": (0.5, -1.0, 2.0), "A_Vector": (0.25, 0.75, -0.5)},
+        {"Factor_Vector": "P"}, "mix.cl", [("Result_Vector", "blMixVectorNonUniform", 3)],
+        {"factor": "P", "a": [0.25, 0.75, -0.5], "b": [0.5, -1.0, 2.0], "clampFactor": 1})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 
