@@ -70,3 +70,15 @@ TEST(Edit, Parses) {
   EXPECT_THROW(parseEdit("scale=1"), Error);
   EXPECT_THROW(parseEdit("n.scale="), Error);
 }
+
+// Edit-script diagnostics point at the part at fault: 1-based columns in the line as written.
+TEST(Edit, KeepsColumns) {
+  Edit A = parseEdit("  rewire a.b = c");
+  EXPECT_EQ(A.NodeCol, 10u);
+  EXPECT_EQ(A.ArgCol, 12u);
+  EXPECT_EQ(A.ValueCol, 16u);
+  Edit B = parseEdit("node.arg=[1,2]");
+  EXPECT_EQ(B.NodeCol, 1u);
+  EXPECT_EQ(B.ArgCol, 6u);
+  EXPECT_EQ(B.ValueCol, 10u);
+}
