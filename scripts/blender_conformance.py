@@ -276,6 +276,23 @@ variant("mix-vector-non-uniform", "ShaderNodeMix",
         {"Factor_Vector": "P"}, "mix.cl", [("Result_Vector", "blMixVectorNonUniform", 3)],
         {"factor": "P", "a": [0.25, 0.75, -0.5], "b": [0.5, -1.0, 2.0], "clampFactor": 1})
 
+# Cycles' NodeVectorMathType order: textures/blender/vector_math.cl's operation numbers.
+VECTOR_MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "CROSS_PRODUCT", "PROJECT", "REFLECT",
+                   "DOT_PRODUCT", "DISTANCE", "LENGTH", "SCALE", "NORMALIZE", "SNAP", "FLOOR",
+                   "CEIL", "MODULO", "FRACTION", "ABSOLUTE", "MINIMUM", "MAXIMUM", "WRAP", "SINE",
+                   "COSINE", "TANGENT", "REFRACT", "FACEFORWARD", "MULTIPLY_ADD", "POWER", "SIGN"]
+VM_B = (0.7, -1.3, 0.45)
+VM_C = (-0.6, 0.9, 1.4)
+VM_SCALE = 0.8
+
+for number, op in enumerate(VECTOR_MATH_OPS):
+    value = op in ("DOT_PRODUCT", "DISTANCE", "LENGTH")
+    variant("vectormath-" + op.lower().replace("_", "-"), "ShaderNodeVectorMath",
+            {"operation": op}, {"Vector_001": VM_B, "Vector_002": VM_C, "Scale": VM_SCALE},
+            {"Vector": "P"}, "vector_math.cl",
+            [("Value", "blVectorMathValue", 1)] if value else [("Vector", "blVectorMath", 3)],
+            {"a": "P", "b": list(VM_B), "c": list(VM_C), "scale": VM_SCALE, "operation": number})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 
