@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -177,4 +178,31 @@ TEST(Device, AmbientOcclusionOneLaunchMatchesBruteForce) {
   EXPECT_NEAR(SumDev / Hits, SumHost / Hits, 0.01);
   EXPECT_LT(SumHost / Hits, 0.97) << "the scene should have visible occlusion";
   EXPECT_EQ(Stats.AoRays, uint64_t(Hits) * N);
+}
+
+// A layout adopted after a live edit may number the materials differently: every mesh follows
+// its material by name, and a name the new layout lacks is an error naming it.
+TEST(Device, NewLayoutMapsMeshMaterialsByName) {
+  if (!haveDevice())
+    GTEST_SKIP() << "no OpenCL device";
+  fs::path Dir = tempDir("remap");
+  TestScene T = makeScene(Dir, {FloorAndCube}, 4);
+  Renderer R(T.S, T.L, testOptions());
+  ASSERT_EQ(R.sceneData().Meshes[0].material, T.L.findMaterial("white"));
+  Layout Reversed = T.L;
+  std::reverse(Reversed.Materials.begin(), Reversed.Materials.end());
+  for (size_t I = 0; I < Reversed.Materials.size(); ++I)
+    Reversed.Materials[I].Index = int(I);
+  ASSERT_NE(Reversed.findMaterial("white"), T.L.findMaterial("white"));
+  R.setLayout(Reversed);
+  EXPECT_EQ(R.sceneData().Meshes[0].material, Reversed.findMaterial("white"));
+  Layout Renamed = T.L;
+  Renamed.Materials[size_t(T.L.findMaterial("white"))].Name = "chalk";
+  try {
+    R.setLayout(Renamed);
+    ADD_FAILURE() << "a layout without the mesh's material was adopted";
+  } catch (const Error &E) {
+    EXPECT_NE(std::string(E.what()).find("has no material 'white'"), std::string::npos) << E.what();
+  }
+  fs::remove_all(Dir);
 }
