@@ -31,9 +31,6 @@
  *   | clampType     | int   | 0       | Clamp: 0 Min Max, 1 Range (an inverted interval is swapped) |
  */
 
-#define BL_PI_F 3.14159265358979323846f
-#define BL_FLT_EPSILON 1.192092896e-07f
-
 float blSafeDivide(float a, float b) { return b != 0.0f ? a / b : 0.0f; }
 
 float blSafeModulo(float a, float b) { return b != 0.0f ? fmod(a, b) : 0.0f; }
@@ -102,15 +99,15 @@ float blMathOp(float a, float b, float c, int op) {
   case 24: return a > 0.0f ? 1.0f / sqrt(a) : 0.0f;
   case 25: return a == 0.0f ? 0.0f : (a < 0.0f ? -1.0f : 1.0f);
   case 26: return exp(a);
-  case 27: return a * (BL_PI_F / 180.0f);
-  case 28: return a * (180.0f / BL_PI_F);
+  case 27: return a * (3.14159265358979323846f / 180.0f);
+  case 28: return a * (180.0f / 3.14159265358979323846f);
   case 29: return sinh(a);
   case 30: return cosh(a);
   case 31: return tanh(a);
   case 32: return a >= 0.0f ? floor(a) : ceil(a);
   case 33: return floor(blSafeDivide(a, b)) * b;
   case 34: return blWrap(a, b, c);
-  case 35: return (a == b || fabs(a - b) <= fmax(c, BL_FLT_EPSILON)) ? 1.0f : 0.0f;
+  case 35: return (a == b || fabs(a - b) <= fmax(c, 1.192092896e-07f /* FLT_EPSILON */)) ? 1.0f : 0.0f;
   case 36: return a * b + c;
   case 37: return blPingPong(a, b);
   case 38: return blSmoothMin(a, b, c);

@@ -290,44 +290,57 @@ float blNoiseTexture(float4 co, int dims, float scale, float detail, float rough
   return blNoiseSelect(p, dims, detail, roughness, lacunarity, offset, gain, type, normalize);
 }
 
-#define BL_NOISE_ARGS scale, detail, roughness, lacunarity, offset, gain, distortion, type, normalize
+float3 blNoiseColor(float4 co, int dims, float scale, float detail, float roughness,
+                    float lacunarity, float offset, float gain, float distortion, int type,
+                    int normalize) {
+  float3 c;
+  c.x = blNoiseTexture(co, dims, scale, detail, roughness, lacunarity, offset, gain, distortion,
+                       type, normalize, 0);
+  c.y = blNoiseTexture(co, dims, scale, detail, roughness, lacunarity, offset, gain, distortion,
+                       type, normalize, 1);
+  c.z = blNoiseTexture(co, dims, scale, detail, roughness, lacunarity, offset, gain, distortion,
+                       type, normalize, 2);
+  return c;
+}
 
-float blNoise2DFac(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                   float offset, float gain, float distortion, int type, int normalize) {
-  return blNoiseTexture((float4)(vector, 0.0f), 2, BL_NOISE_ARGS, 0);
+float blNoise2DFac(float3 vector, float scale, float detail, float roughness,
+                   float lacunarity, float offset, float gain, float distortion, int type,
+                   int normalize) {
+  return blNoiseTexture((float4)(vector, 0.0f), 2, scale, detail, roughness, lacunarity, offset, gain,
+                        distortion, type, normalize, 0);
 }
 
 float3 blNoise2DColor(float3 vector, float scale, float detail, float roughness,
                       float lacunarity, float offset, float gain, float distortion, int type,
                       int normalize) {
-  float4 co = (float4)(vector, 0.0f);
-  return (float3)(blNoiseTexture(co, 2, BL_NOISE_ARGS, 0), blNoiseTexture(co, 2, BL_NOISE_ARGS, 1),
-                  blNoiseTexture(co, 2, BL_NOISE_ARGS, 2));
+  return blNoiseColor((float4)(vector, 0.0f), 2, scale, detail, roughness, lacunarity, offset, gain,
+                      distortion, type, normalize);
 }
 
-float blNoise3DFac(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                   float offset, float gain, float distortion, int type, int normalize) {
-  return blNoiseTexture((float4)(vector, 0.0f), 3, BL_NOISE_ARGS, 0);
+float blNoise3DFac(float3 vector, float scale, float detail, float roughness,
+                   float lacunarity, float offset, float gain, float distortion, int type,
+                   int normalize) {
+  return blNoiseTexture((float4)(vector, 0.0f), 3, scale, detail, roughness, lacunarity, offset, gain,
+                        distortion, type, normalize, 0);
 }
 
 float3 blNoise3DColor(float3 vector, float scale, float detail, float roughness,
                       float lacunarity, float offset, float gain, float distortion, int type,
                       int normalize) {
-  float4 co = (float4)(vector, 0.0f);
-  return (float3)(blNoiseTexture(co, 3, BL_NOISE_ARGS, 0), blNoiseTexture(co, 3, BL_NOISE_ARGS, 1),
-                  blNoiseTexture(co, 3, BL_NOISE_ARGS, 2));
+  return blNoiseColor((float4)(vector, 0.0f), 3, scale, detail, roughness, lacunarity, offset, gain,
+                      distortion, type, normalize);
 }
 
 float blNoise4DFac(float3 vector, float w, float scale, float detail, float roughness,
                    float lacunarity, float offset, float gain, float distortion, int type,
                    int normalize) {
-  return blNoiseTexture((float4)(vector, w), 4, BL_NOISE_ARGS, 0);
+  return blNoiseTexture((float4)(vector, w), 4, scale, detail, roughness, lacunarity, offset, gain,
+                        distortion, type, normalize, 0);
 }
 
 float3 blNoise4DColor(float3 vector, float w, float scale, float detail, float roughness,
                       float lacunarity, float offset, float gain, float distortion, int type,
                       int normalize) {
-  float4 co = (float4)(vector, w);
-  return (float3)(blNoiseTexture(co, 4, BL_NOISE_ARGS, 0), blNoiseTexture(co, 4, BL_NOISE_ARGS, 1),
-                  blNoiseTexture(co, 4, BL_NOISE_ARGS, 2));
+  return blNoiseColor((float4)(vector, w), 4, scale, detail, roughness, lacunarity, offset, gain,
+                      distortion, type, normalize);
 }

@@ -21,8 +21,6 @@
  *   | interpolation | int                  | 0                | 0 Linear, 1 Ease, 2 B-Spline, 3 Cardinal, 4 Constant |
  */
 
-#define BL_RAMP_TABLE_SIZE 257
-
 /* Blender's key_curve_position_weights for Cardinal (tension 0.71) and B-Spline. */
 float4 blRampWeights(float t, int interpolation) {
   float t2 = t * t, t3 = t2 * t;
@@ -76,13 +74,13 @@ float4 blColorBand(float in, __global const float4 *colors, __global const float
 /* Cycles' rgb_ramp_lookup over the 257-entry table, computing only the entries it reads. */
 float4 blColorRamp(float fac, __global const float4 *colors, __global const float *positions,
                    int count, int interpolation) {
-  float f = clamp(fac, 0.0f, 1.0f) * (float)(BL_RAMP_TABLE_SIZE - 1);
-  int i = clamp((int)f, 0, BL_RAMP_TABLE_SIZE - 1);
+  float f = clamp(fac, 0.0f, 1.0f) * 256.0f;
+  int i = clamp((int)f, 0, 256);
   float t = f - (float)i;
-  float4 a = blColorBand((float)i / (float)(BL_RAMP_TABLE_SIZE - 1), colors, positions, count,
+  float4 a = blColorBand((float)i / 256.0f, colors, positions, count,
                          interpolation);
   if (interpolation != 4 && t > 0.0f) {
-    float4 b = blColorBand((float)(i + 1) / (float)(BL_RAMP_TABLE_SIZE - 1), colors, positions,
+    float4 b = blColorBand((float)(i + 1) / 256.0f, colors, positions,
                            count, interpolation);
     a = (1.0f - t) * a + t * b;
   }

@@ -39,8 +39,6 @@
 
 #include "hash.h"
 
-#define BL_FLT_MAX 3.402823466e+38f
-
 /* The cell's feature-point offset in [0, 1]^dims and its colour: PCG hashes of the integer cell
  * (Cycles' hash_int2_to_float2 / hash_int3_to_float3, colour hash_int2_to_float3 /
  * hash_int3_to_float3). c holds the cell's integer coordinates as floats. */
@@ -93,7 +91,7 @@ float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exp
   float4 rel = coord - cell;
   int reach = feature == 2 ? 2 : 1;
   int kreach = dims == 2 ? 0 : reach;
-  float d1 = BL_FLT_MAX, d2 = BL_FLT_MAX;
+  float d1 = 3.402823466e+38f, d2 = 3.402823466e+38f;
   float4 o1 = (float4)(0.0f), o2 = (float4)(0.0f), p1 = (float4)(0.0f), p2 = (float4)(0.0f);
   float sd = 0.0f, h = -1.0f;
   float3 sc = (float3)(0.0f);
@@ -150,7 +148,7 @@ float blVoronoiEdgeOctave(float4 coord, int dims, float randomness) {
   float4 rel = coord - cell;
   int kreach = dims == 2 ? 0 : 1;
   float4 closest = (float4)(0.0f);
-  float best = BL_FLT_MAX;
+  float best = 3.402823466e+38f;
   for (int k = -kreach; k <= kreach; k++)
     for (int j = -1; j <= 1; j++)
       for (int i = -1; i <= 1; i++) {
@@ -162,7 +160,7 @@ float blVoronoiEdgeOctave(float4 coord, int dims, float randomness) {
           closest = v;
         }
       }
-  best = BL_FLT_MAX;
+  best = 3.402823466e+38f;
   for (int k = -kreach; k <= kreach; k++)
     for (int j = -1; j <= 1; j++)
       for (int i = -1; i <= 1; i++) {
@@ -183,7 +181,7 @@ float blVoronoiRadius(float4 coord, int dims, float randomness) {
   float4 rel = coord - cell;
   int kreach = dims == 2 ? 0 : 1;
   float4 closest = (float4)(0.0f), closestOff = (float4)(0.0f);
-  float best = BL_FLT_MAX;
+  float best = 3.402823466e+38f;
   for (int k = -kreach; k <= kreach; k++)
     for (int j = -1; j <= 1; j++)
       for (int i = -1; i <= 1; i++) {
@@ -196,7 +194,7 @@ float blVoronoiRadius(float4 coord, int dims, float randomness) {
           closestOff = off;
         }
       }
-  best = BL_FLT_MAX;
+  best = 3.402823466e+38f;
   float4 neighbour = (float4)(0.0f);
   for (int k = -kreach; k <= kreach; k++)
     for (int j = -1; j <= 1; j++)
@@ -312,23 +310,58 @@ float4 blVoronoiTexture(float3 vector, int dims, float scale, float detail, floa
   return (float4)(0.0f);
 }
 
-#define BL_VORONOI_PARAMS                                                                      \
-  float3 vector, float scale, float detail, float roughness, float lacunarity, float smoothness, \
-      float exponent, float randomness, int feature, int metric, int normalize
-#define BL_VORONOI_ARGS                                                                        \
-  vector, DIMS, scale, detail, roughness, lacunarity, smoothness, exponent, randomness, feature, \
-      metric, normalize
+float blVoronoi2DDistance(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                          float smoothness, float exponent, float randomness, int feature, int metric,
+                          int normalize) {
+  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 0).x;
+}
 
-#define DIMS 2
-float blVoronoi2DDistance(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 0).x; }
-float3 blVoronoi2DColor(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 1).xyz; }
-float3 blVoronoi2DPosition(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 2).xyz; }
-float blVoronoi2DRadius(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 3).x; }
-#undef DIMS
+float3 blVoronoi2DColor(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                        float smoothness, float exponent, float randomness, int feature, int metric,
+                        int normalize) {
+  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 1).xyz;
+}
 
-#define DIMS 3
-float blVoronoi3DDistance(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 0).x; }
-float3 blVoronoi3DColor(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 1).xyz; }
-float3 blVoronoi3DPosition(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 2).xyz; }
-float blVoronoi3DRadius(BL_VORONOI_PARAMS) { return blVoronoiTexture(BL_VORONOI_ARGS, 3).x; }
-#undef DIMS
+float3 blVoronoi2DPosition(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                           float smoothness, float exponent, float randomness, int feature, int metric,
+                           int normalize) {
+  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 2).xyz;
+}
+
+float blVoronoi2DRadius(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                        float smoothness, float exponent, float randomness, int feature, int metric,
+                        int normalize) {
+  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 3).x;
+}
+
+float blVoronoi3DDistance(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                          float smoothness, float exponent, float randomness, int feature, int metric,
+                          int normalize) {
+  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 0).x;
+}
+
+float3 blVoronoi3DColor(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                        float smoothness, float exponent, float randomness, int feature, int metric,
+                        int normalize) {
+  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 1).xyz;
+}
+
+float3 blVoronoi3DPosition(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                           float smoothness, float exponent, float randomness, int feature, int metric,
+                           int normalize) {
+  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 2).xyz;
+}
+
+float blVoronoi3DRadius(float3 vector, float scale, float detail, float roughness, float lacunarity,
+                        float smoothness, float exponent, float randomness, int feature, int metric,
+                        int normalize) {
+  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
+                          randomness, feature, metric, normalize, 3).x;
+}
