@@ -366,7 +366,7 @@ LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer
   bool Ok = E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
                                    : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
   if (!Ok)
-    throw Error("edit '" + E.Text + "': " + diagnosticsText(Diags));
+    throw Error("edit '" + E.Text + "': " + firstError(Diags));
   if (Editor->needsRebuild() && !fallbackRuns(R) && !headroomRuns(R))
     return Plan::Regenerate;
   // A shape kernel runs the edited graph exactly when its shapes are unchanged: a value edit
@@ -393,8 +393,29 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
     return Res;
   }
   double T0 = now();
-  bool Structural = applyToJson(E);
-  switch (plan(E, Structural, R)) {
+  // inline mode has no editor to validate the edit against: check it on a scratch copy.
+  if (Lay.Mode == "inline")
+    if (std::optional<EditProblem> Bad = check({E}))
+      throw Error("edit '" + E.Text + "': " + Bad->Message);
+  // A refused edit must not stay in the graph that later regenerations hand to texcc.
+  std::optional<json> Before;
+  for (const json &N : GraphDoc.value("nodes", json::array()))
+    if (N.value("id", "") == E.Node && N.contains("args") && N["args"].contains(E.Arg))
+      Before = N["args"][E.Arg];
+  Plan P;
+  try {
+    P = plan(E, applyToJson(E), R);
+  } catch (const Error &) {
+    for (json &N : GraphDoc["nodes"])
+      if (N.value("id", "") == E.Node && N.contains("args")) {
+        if (Before)
+          N["args"][E.Arg] = *Before;
+        else
+          N["args"].erase(E.Arg);
+      }
+    throw;
+  }
+  switch (P) {
   case Plan::Upload:
     R.applyArguments(Editor->compiled().ArgsBin, Editor->compiled().Attributes);
     break;
