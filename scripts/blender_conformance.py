@@ -293,6 +293,57 @@ for number, op in enumerate(VECTOR_MATH_OPS):
             [("Value", "blVectorMathValue", 1)] if value else [("Vector", "blVectorMath", 3)],
             {"a": "P", "b": list(VM_B), "c": list(VM_C), "scale": VM_SCALE, "operation": number})
 
+GRADIENT_TYPES = ["LINEAR", "QUADRATIC", "EASING", "DIAGONAL", "RADIAL", "QUADRATIC_SPHERE",
+                  "SPHERICAL"]
+for number, gtype in enumerate(GRADIENT_TYPES):
+    variant("gradient-" + gtype.lower().replace("_", "-"), "ShaderNodeTexGradient",
+            {"gradient_type": gtype}, {}, {"Vector": "P"}, "textures.cl",
+            [("Fac", "blGradientFac", 1)] + ([("Color", "blGradientColor", 3)] if number == 0
+                                             else []),
+            {"vector": "P", "gradientType": number})
+
+CHECKER_1, CHECKER_2 = (0.9, 0.1, 0.2, 1.0), (0.1, 0.7, 0.4, 1.0)
+variant("checker", "ShaderNodeTexChecker", {}, {"Color1": CHECKER_1, "Color2": CHECKER_2,
+                                                "Scale": 2.0},
+        {"Vector": "P"}, "textures.cl",
+        [("Fac", "blCheckerFac", 1, ["color1", "color2"]), ("Color", "blCheckerColor", 3)],
+        {"vector": "P", "color1": list(CHECKER_1[:3]), "color2": list(CHECKER_2[:3]),
+         "scale": 2.0})
+for depth, distortion, scale in ((2, 1.3, 1.5), (7, 0.8, 0.9)):
+    variant("magic-depth%d" % depth, "ShaderNodeTexMagic", {"turbulence_depth": depth},
+            {"Scale": scale, "Distortion": distortion}, {"Vector": "P"}, "textures.cl",
+            [("Fac", "blMagicFac", 1), ("Color", "blMagicColor", 3)],
+            {"vector": "P", "scale": scale, "distortion": distortion, "depth": depth})
+variant("whitenoise3d", "ShaderNodeTexWhiteNoise", {"noise_dimensions": "3D"}, {},
+        {"Vector": "P"}, "textures.cl",
+        [("Value", "blWhiteNoise3DValue", 1), ("Color", "blWhiteNoise3DColor", 3)],
+        {"vector": "P"})
+
+WAVE_PROFILES = ["SIN", "SAW", "TRI"]
+
+
+def wave_variant(name, wtype, direction, profile, scale=1.5, distortion=0.0, detail=2.0,
+                 detail_scale=1.0, roughness=0.5, phase=0.0, color=False):
+    dirs = ["X", "Y", "Z", "DIAGONAL" if wtype == "BANDS" else "SPHERICAL"]
+    props = {"wave_type": wtype, "wave_profile": profile}
+    props["bands_direction" if wtype == "BANDS" else "rings_direction"] = direction
+    variant(name, "ShaderNodeTexWave", props,
+            {"Scale": scale, "Distortion": distortion, "Detail": detail,
+             "Detail Scale": detail_scale, "Detail Roughness": roughness, "Phase Offset": phase},
+            {"Vector": "P"}, "noise.cl",
+            [("Fac", "blWaveFac", 1)] + ([("Color", "blWaveColor", 3)] if color else []),
+            {"vector": "P", "scale": scale, "distortion": distortion, "detail": detail,
+             "detailScale": detail_scale, "detailRoughness": roughness, "phaseOffset": phase,
+             "waveType": 0 if wtype == "BANDS" else 1, "direction": dirs.index(direction),
+             "profile": WAVE_PROFILES.index(profile)})
+
+
+wave_variant("wave-bands-x-sin", "BANDS", "X", "SIN", color=True)
+wave_variant("wave-bands-diagonal-saw-distorted", "BANDS", "DIAGONAL", "SAW", distortion=3.0,
+             detail=2.5, detail_scale=1.7, phase=0.4)
+wave_variant("wave-rings-spherical-tri", "RINGS", "SPHERICAL", "TRI", scale=0.6)
+wave_variant("wave-rings-z-sin-distorted", "RINGS", "Z", "SIN", scale=0.8, distortion=2.0)
+
 
 # --- Baking ---------------------------------------------------------------------------------
 
@@ -418,10 +469,12 @@ def main():
               if not args.only or any(v["name"].startswith(o) for o in args.only)]
     for v in chosen:
         outputs = []
-        for socket, fn, channels in v["outputs"]:
+        for socket, fn, channels, *drop in v["outputs"]:
             values = bake(material, image, build_variant(v, socket))[:, :channels]
             outputs.append({"socket": socket, "fn": fn, "channels": channels,
                             "values": encode(values)})
+            if drop:  # arguments of the node this output's function does not take
+                outputs[-1]["drop"] = drop[0]
         fixture = {"variant": v["name"], "blender": BPY_VERSION,
                    "node": {"type": v["node"], "properties": v["props"], "inputs": v["inputs"],
                             "fed_from_position": v["feeds"], "setup": v.get("describe")},

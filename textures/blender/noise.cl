@@ -344,3 +344,66 @@ float3 blNoise4DColor(float3 vector, float w, float scale, float detail, float r
   return blNoiseColor((float4)(vector, w), 4, scale, detail, roughness, lacunarity, offset, gain,
                       distortion, type, normalize);
 }
+
+/* Wave Texture (Blender's node, built on the 3D fBM above): bands or rings of a sine, saw or
+ * triangle profile, distorted by fBM noise.
+ *
+ *   float  blWaveFac(float3 vector, float scale, float distortion, float detail,
+ *                    float detailScale, float detailRoughness, float phaseOffset, int waveType,
+ *                    int direction, int profile)
+ *   float3 blWaveColor(same parameters)                      (Fac, Fac, Fac)
+ *
+ *   | name            | type   | default | meaning                                        |
+ *   |-----------------|--------|---------|------------------------------------------------|
+ *   | scale           | float  | 5.0     | waves per unit of vector (x 20 / 2 pi)         |
+ *   | distortion      | float  | 0.0     | amount of fBM added to the phase               |
+ *   | detail          | float  | 2.0     | fBM octaves beyond the first                   |
+ *   | detailScale     | float  | 1.0     | fBM frequency                                  |
+ *   | detailRoughness | float  | 0.5     | fBM roughness                                  |
+ *   | phaseOffset     | float  | 0.0     | added to the phase                             |
+ *   | waveType        | int    | 0       | 0 Bands, 1 Rings                               |
+ *   | direction       | int    | 0       | Bands: 0 X, 1 Y, 2 Z, 3 Diagonal; Rings: 0 X, 1 Y, 2 Z, 3 Spherical |
+ *   | profile         | int    | 0       | 0 Sine, 1 Saw, 2 Triangle                      |
+ */
+float blWaveFac(float3 vector, float scale, float distortion, float detail, float detailScale,
+                float detailRoughness, float phaseOffset, int waveType, int direction,
+                int profile) {
+  float3 p = (vector * scale + 0.000001f) * 0.999999f;
+  float n;
+  if (waveType == 0) {
+    if (direction == 0)
+      n = p.x * 20.0f;
+    else if (direction == 1)
+      n = p.y * 20.0f;
+    else if (direction == 2)
+      n = p.z * 20.0f;
+    else
+      n = (p.x + p.y + p.z) * 10.0f;
+  } else {
+    float3 rp = p;
+    if (direction == 0)
+      rp.x = 0.0f;
+    else if (direction == 1)
+      rp.y = 0.0f;
+    else if (direction == 2)
+      rp.z = 0.0f;
+    n = sqrt(rp.x * rp.x + rp.y * rp.y + rp.z * rp.z) * 20.0f;
+  }
+  n += phaseOffset;
+  if (distortion != 0.0f)
+    n += distortion * (blNoiseFbm((float4)(p * detailScale, 0.0f), 3, detail, detailRoughness,
+                                  2.0f, 1) * 2.0f - 1.0f);
+  if (profile == 0)
+    return 0.5f + 0.5f * sin(n - 1.57079632679489661923f);
+  n /= 6.28318530717958647692f;
+  if (profile == 1)
+    return n - floor(n);
+  return fabs(n - floor(n + 0.5f)) * 2.0f;
+}
+
+float3 blWaveColor(float3 vector, float scale, float distortion, float detail, float detailScale,
+                   float detailRoughness, float phaseOffset, int waveType, int direction,
+                   int profile) {
+  return (float3)(blWaveFac(vector, scale, distortion, detail, detailScale, detailRoughness,
+                            phaseOffset, waveType, direction, profile));
+}

@@ -86,7 +86,8 @@ def build_graph(fixtures, src):
                                for v in fx["args"].values())
         for out in fx["outputs"]:
             node_id = "%s_%s" % (fx["variant"].replace("-", "_"), out["socket"].lower())
-            nodes.append({"id": node_id, "fn": out["fn"], "args": args})
+            nodes.append({"id": node_id, "fn": out["fn"],
+                          "args": {k: v for k, v in args.items() if k not in out.get("drop", [])}})
             materials["m_" + node_id] = {"bsdf": "diffuse", "color": {"node": node_id}}
             outputs.append((fx, out, "m_" + node_id))
     if uses_components:
