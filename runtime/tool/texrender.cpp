@@ -314,7 +314,9 @@ private:
   [[noreturn]] void fire(const char *What) {
     std::fprintf(stderr, "texrender: error: --time-limit %g s: exceeded while %s\n", Limit, What);
     std::fflush(stderr);
-    _exit(1); // the device call cannot be interrupted; nothing is half-written (outputs are renamed into place)
+    // The device call cannot be interrupted. Nothing is half-written: outputs are renamed into
+    // place, and the watchdog is idle while they are written.
+    _exit(1);
   }
 
   double Limit, Deadline;
