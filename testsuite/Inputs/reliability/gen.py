@@ -115,7 +115,7 @@ def functions(n, folder):
 
 
 def materials(n):
-    nodes = [{"id": f"n{i}", "fn": "add", "args": {"a": float(i % 7), "b": 0.5}}
+    nodes = [{"id": f"n{i}", "fn": "add", "args": {"a": float(i), "b": 0.5}}
              for i in range(n)]
     mats = {f"m{i}": {"bsdf": "diffuse", "color": {"node": f"n{i}"}} for i in range(n)}
     return {"texcc": 1, "nodes": nodes, "materials": mats}

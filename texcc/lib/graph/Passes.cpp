@@ -281,12 +281,14 @@ void orderPrograms(CompiledGraph &CG, std::ostream *Log) {
   std::vector<std::vector<unsigned>> Children(CG.Nodes.size());
   for (size_t I = 0; I < CG.Nodes.size(); ++I)
     Children[I] = byNeed(childrenOf(CG.Nodes[I]), Need);
+  // Per-node state is allocated once and reset after each material through its program (every
+  // node seen is in it): per material it would cost time in nodes x materials.
+  std::vector<bool> Seen(CG.Nodes.size(), false);
   for (CompiledMaterial &M : CG.Materials) {
     M.Program.clear();
     std::vector<unsigned> Roots;
     for (const MaterialOutput &O : M.Outputs)
       Roots.push_back(O.Node);
-    std::vector<bool> Seen(CG.Nodes.size(), false);
     for (unsigned Root : byNeed(Roots, Need)) {
       if (Seen[Root])
         continue;
@@ -312,6 +314,8 @@ void orderPrograms(CompiledGraph &CG, std::ostream *Log) {
         }
       }
     }
+    for (const Instruction &In : M.Program)
+      Seen[In.Node] = false;
   }
 }
 
@@ -322,14 +326,15 @@ void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Lo
   // source words name the slots of a node's children) can be shared between materials.
   std::vector<int> EarlierSlot(CG.Nodes.size(), -1);
   CG.StackSlots = 0;
+  // Allocated once, reset after each material (see orderPrograms).
+  std::vector<size_t> LastReader(CG.Nodes.size(), 0);
+  std::vector<int> SlotOf(CG.Nodes.size(), -1);
   for (CompiledMaterial &M : CG.Materials) {
-    std::vector<size_t> LastReader(CG.Nodes.size(), 0);
     for (size_t I = 0; I < M.Program.size(); ++I)
       for (unsigned C : childrenOf(CG.Nodes[M.Program[I].Node]))
         LastReader[C] = I;
     for (const MaterialOutput &O : M.Outputs)
       LastReader[O.Node] = Forever;
-    std::vector<int> SlotOf(CG.Nodes.size(), -1);
     std::set<unsigned> Free;
     unsigned Count = 0;
     for (size_t I = 0; I < M.Program.size(); ++I) {
@@ -355,8 +360,15 @@ void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Lo
         *Log << "stack-slots: material '" << M.Name << "': '" << CG.Nodes[In.Node].Id
              << "' -> slot " << Slot << "\n";
     }
-    for (MaterialOutput &O : M.Outputs)
+    for (MaterialOutput &O : M.Outputs) {
       O.Slot = static_cast<unsigned>(SlotOf[O.Node]);
+      LastReader[O.Node] = 0;
+    }
+    for (const Instruction &In : M.Program) {
+      SlotOf[In.Node] = -1;
+      for (unsigned C : childrenOf(CG.Nodes[In.Node]))
+        LastReader[C] = 0;
+    }
     M.StackSlots = Count;
     CG.StackSlots = std::max(CG.StackSlots, Count);
   }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <map>
 #include <tuple>
+#include <unordered_map>
 
 namespace texcc::graph {
 
@@ -14,9 +15,13 @@ namespace {
 
 using Pattern = std::tuple<std::string, std::string, unsigned>; // First, Second, Param
 
+/// How many times a node is read in one material (only the nodes it reads: a vector over every
+/// node per material was quadratic memory, 1.65 GB for 20,000 materials).
+using ReaderCounts = std::unordered_map<unsigned, unsigned>;
+
 /// How many times each node is read in M: by arguments of M's instructions and as an output.
-std::vector<unsigned> readers(const CompiledGraph &CG, const CompiledMaterial &M) {
-  std::vector<unsigned> Count(CG.Nodes.size(), 0);
+ReaderCounts readers(const CompiledGraph &CG, const CompiledMaterial &M) {
+  ReaderCounts Count;
   for (const Instruction &In : M.Program)
     for (const CompiledArg &A : CG.Nodes[In.Node].Args)
       if (A.Src == CompiledArg::Source::Node)
@@ -34,11 +39,12 @@ bool isLight(const CompiledGraph &CG, const std::string &Fn, unsigned LightCost)
 /// The parameter of instruction J+1 that reads instruction J's result, when that is its only
 /// reader in M (Readers: readers()); the pair can then run as one superinstruction.
 std::optional<unsigned> fusedParam(const CompiledGraph &CG, const CompiledMaterial &M,
-                                   size_t J, const std::vector<unsigned> &Readers) {
+                                   size_t J, const ReaderCounts &Readers) {
   if (J + 1 >= M.Program.size())
     return std::nullopt;
   unsigned First = M.Program[J].Node;
-  if (Readers[First] != 1)
+  auto Read = Readers.find(First);
+  if (Read == Readers.end() || Read->second != 1)
     return std::nullopt;
   const CompiledNode &Second = CG.Nodes[M.Program[J + 1].Node];
   for (size_t P = 0; P < Second.Args.size(); ++P) {
@@ -59,7 +65,7 @@ std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S) {
 }
 
 void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log) {
-  std::vector<std::vector<unsigned>> Readers;
+  std::vector<ReaderCounts> Readers;
   for (const CompiledMaterial &M : CG.Materials)
     Readers.push_back(readers(CG, M));
   auto PatternAt = [&](size_t MI, size_t J) -> std::optional<Pattern> {
