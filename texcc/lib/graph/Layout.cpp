@@ -25,13 +25,26 @@ std::vector<uint32_t> sourceWords(const CompiledGraph &CG, const CompiledNode &N
   return Words;
 }
 
-/// Slot of every node in a material's program (-1: not in it).
-std::vector<int> slotsOf(const CompiledGraph &CG, const CompiledMaterial &M) {
-  std::vector<int> SlotOf(CG.Nodes.size(), -1);
-  for (const Instruction &In : M.Program)
-    SlotOf[In.Node] = static_cast<int>(In.ResultSlot);
-  return SlotOf;
-}
+/// Slot of every node in a material's program (-1: not in it). One table for all materials,
+/// refilled in the length of each program: a fresh one per material cost nodes x materials.
+class ProgramSlots {
+public:
+  explicit ProgramSlots(const CompiledGraph &CG) : SlotOf(CG.Nodes.size(), -1) {}
+  const std::vector<int> &of(const CompiledMaterial &M) {
+    for (unsigned N : Filled)
+      SlotOf[N] = -1;
+    Filled.clear();
+    for (const Instruction &In : M.Program) {
+      SlotOf[In.Node] = static_cast<int>(In.ResultSlot);
+      Filled.push_back(In.Node);
+    }
+    return SlotOf;
+  }
+
+private:
+  std::vector<int> SlotOf;
+  std::vector<unsigned> Filled;
+};
 
 uint32_t elementStride(BaseType B) { return sizeOf(ValueType{B, false}); }
 
@@ -129,8 +142,9 @@ void layoutArguments(CompiledGraph &CG, std::ostream *Log) {
   std::vector<std::vector<uint32_t>> PrimaryWords(CG.Nodes.size());
   std::vector<bool> HasPrimary(CG.Nodes.size(), false);
   std::vector<std::vector<std::pair<std::vector<uint32_t>, uint32_t>>> Copies(CG.Nodes.size());
+  ProgramSlots Slots(CG);
   for (CompiledMaterial &M : CG.Materials) {
-    std::vector<int> SlotOf = slotsOf(CG, M);
+    const std::vector<int> &SlotOf = Slots.of(M);
     for (Instruction &In : M.Program) {
       CompiledNode &N = CG.Nodes[In.Node];
       std::vector<uint32_t> W = sourceWords(CG, N, SlotOf);
@@ -248,8 +262,9 @@ void encodeArgsBin(CompiledGraph &CG) {
   }
   // Every record: the primary one with the words of the node's first material, each copy with
   // the words of a material that uses it.
+  ProgramSlots Slots(CG);
   for (const CompiledMaterial &M : CG.Materials) {
-    std::vector<int> SlotOf = slotsOf(CG, M);
+    const std::vector<int> &SlotOf = Slots.of(M);
     for (const Instruction &In : M.Program) {
       const CompiledNode &N = CG.Nodes[In.Node];
       encodeRecord(Bin, N, In.RecordOffset, sourceWords(CG, N, SlotOf));
