@@ -344,6 +344,30 @@ wave_variant("wave-bands-diagonal-saw-distorted", "BANDS", "DIAGONAL", "SAW", di
 wave_variant("wave-rings-spherical-tri", "RINGS", "SPHERICAL", "TRI", scale=0.6)
 wave_variant("wave-rings-z-sin-distorted", "RINGS", "Z", "SIN", scale=0.8, distortion=2.0)
 
+COLOR_IN = "P*0.25+0.35"  # colours in about [0, 1.2]
+variant("invert", "ShaderNodeInvert", {}, {}, {"Fac": MIX_FACTOR, "Color": COLOR_IN},
+        "color.cl", [("Color", "blInvertColor", 3)], {"fac": MIX_FACTOR, "color": COLOR_IN})
+variant("gamma", "ShaderNodeGamma", {}, {"Gamma": 2.2}, {"Color": COLOR_IN}, "color.cl",
+        [("Color", "blGamma", 3)], {"color": COLOR_IN, "gamma": 2.2})
+variant("bright-contrast", "ShaderNodeBrightContrast", {}, {"Bright": 0.1, "Contrast": 0.4},
+        {"Color": COLOR_IN}, "color.cl", [("Color", "blBrightContrast", 3)],
+        {"color": COLOR_IN, "bright": 0.1, "contrast": 0.4})
+variant("hue-saturation-value", "ShaderNodeHueSaturation", {},
+        {"Hue": 0.3, "Saturation": 1.4, "Value": 0.9}, {"Fac": MIX_FACTOR, "Color": COLOR_IN},
+        "color.cl", [("Color", "blHueSaturationValue", 3)],
+        {"hue": 0.3, "saturation": 1.4, "value": 0.9, "fac": MIX_FACTOR, "color": COLOR_IN})
+variant("rgb-to-bw", "ShaderNodeRGBToBW", {}, {}, {"Color": COLOR_IN}, "color.cl",
+        [("Val", "blRgbToBw", 1)], {"color": COLOR_IN})
+for number, mode in enumerate(["RGB", "HSV", "HSL"]):
+    variant("separate-color-" + mode.lower(), "ShaderNodeSeparateColor", {"mode": mode}, {},
+            {"Color": COLOR_IN}, "color.cl",
+            [("Red", "blSeparateColorR", 1), ("Green", "blSeparateColorG", 1),
+             ("Blue", "blSeparateColorB", 1)], {"color": COLOR_IN, "mode": number})
+    variant("combine-color-" + mode.lower(), "ShaderNodeCombineColor", {"mode": mode}, {},
+            {"Red": "P.x*0.25+0.35", "Green": "P.y*0.25+0.2", "Blue": "P.z*0.3+0.4"}, "color.cl",
+            [("Color", "blCombineColor", 3)],
+            {"r": "P.x*0.25+0.35", "g": "P.y*0.25+0.2", "b": "P.z*0.3+0.4", "mode": number})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 
@@ -420,6 +444,16 @@ def build_variant(v, socket):
         for key, feed in v["feeds"].items():
             if feed == "P":
                 tree.links.new(position, socket_named(node.inputs, key))
+                continue
+            if feed.startswith("P*"):
+                # "P*S+O": the position through Vector Math Multiply Add (texcc: blVectorMath).
+                scale, offset = (float(t) for t in feed[2:].split("+"))
+                affine = tree.nodes.new("ShaderNodeVectorMath")
+                affine.operation = "MULTIPLY_ADD"
+                tree.links.new(position, affine.inputs[0])
+                affine.inputs[1].default_value = (scale, scale, scale)
+                affine.inputs[2].default_value = (offset, offset, offset)
+                tree.links.new(affine.outputs[0], socket_named(node.inputs, key))
                 continue
             if separate is None:
                 separate = tree.nodes.new("ShaderNodeSeparateXYZ")

@@ -21,54 +21,11 @@
  *   | clampResult | int          | 0       | Color only: 1 clamps the result to [0, 1]        |
  */
 
+#include "color.h"
+
 float blMixSaturate(float x) { return fmin(fmax(x, 0.0f), 1.0f); }
 
 float3 blInterp(float3 a, float3 b, float t) { return (1.0f - t) * a + t * b; }
-
-float3 blRgbToHsv(float3 rgb) {
-  float cmax = fmax(rgb.x, fmax(rgb.y, rgb.z));
-  float cmin = fmin(rgb.x, fmin(rgb.y, rgb.z));
-  float cdelta = cmax - cmin;
-  float h = 0.0f, s = cmax != 0.0f ? cdelta / cmax : 0.0f;
-  if (s != 0.0f) {
-    float3 c = ((float3)(cmax) - rgb) / cdelta;
-    if (rgb.x == cmax)
-      h = c.z - c.y;
-    else if (rgb.y == cmax)
-      h = 2.0f + c.x - c.z;
-    else
-      h = 4.0f + c.y - c.x;
-    h /= 6.0f;
-    if (h < 0.0f)
-      h += 1.0f;
-  }
-  return (float3)(h, s, cmax);
-}
-
-float3 blHsvToRgb(float3 hsv) {
-  float h = hsv.x, s = hsv.y, v = hsv.z;
-  if (s == 0.0f)
-    return (float3)(v);
-  if (h == 1.0f)
-    h = 0.0f;
-  h *= 6.0f;
-  float i = floor(h);
-  float f = h - i;
-  float p = v * (1.0f - s);
-  float q = v * (1.0f - s * f);
-  float t = v * (1.0f - s * (1.0f - f));
-  if (i == 0.0f)
-    return (float3)(v, t, p);
-  if (i == 1.0f)
-    return (float3)(q, v, p);
-  if (i == 2.0f)
-    return (float3)(p, v, t);
-  if (i == 3.0f)
-    return (float3)(p, q, v);
-  if (i == 4.0f)
-    return (float3)(t, p, v);
-  return (float3)(v, p, q);
-}
 
 float blMixOverlay(float t, float a, float b) {
   float tm = 1.0f - t;

@@ -60,6 +60,13 @@ def graph_arg(value, extra):
     these need are added to extra."""
     if value == "P":
         return {"attr": "ObjectPos"}
+    if isinstance(value, str) and value.startswith("P*"):
+        scale, offset = (float(t) for t in value[2:].split("+"))
+        node_id = "affine_p_%d" % len(extra)
+        extra.append({"id": node_id, "fn": "blVectorMath",
+                      "args": {"a": {"attr": "ObjectPos"}, "b": [scale] * 3, "c": [offset] * 3,
+                               "scale": 1.0, "operation": 26}})
+        return {"node": node_id}
     if not (isinstance(value, str) and value.startswith("P.")):
         return value
     component = "position_" + value[2]
@@ -76,7 +83,7 @@ def graph_arg(value, extra):
 def build_graph(fixtures, src):
     lib = os.path.join(src, "textures", "blender")
     sources, nodes, materials, outputs = [], [], {}, []
-    uses_components, extra = False, []
+    uses_components, uses_vectors, extra = False, False, []
     for fx in fixtures:
         path = os.path.join(lib, fx["source"])
         if path not in sources:
@@ -84,17 +91,22 @@ def build_graph(fixtures, src):
         args = {k: graph_arg(v, extra) for k, v in fx["args"].items()}
         uses_components |= any(isinstance(v, str) and v.startswith("P.")
                                for v in fx["args"].values())
+        uses_vectors |= any(isinstance(v, str) and v.startswith("P*")
+                            for v in fx["args"].values())
         for out in fx["outputs"]:
             node_id = "%s_%s" % (fx["variant"].replace("-", "_"), out["socket"].lower())
             nodes.append({"id": node_id, "fn": out["fn"],
                           "args": {k: v for k, v in args.items() if k not in out.get("drop", [])}})
             materials["m_" + node_id] = {"bsdf": "diffuse", "color": {"node": node_id}}
             outputs.append((fx, out, "m_" + node_id))
+    helpers = (["converter.cl"] if uses_components else []) + \
+        (["math.cl"] if any(n["fn"] == "blMath" for n in extra) else []) + \
+        (["vector_math.cl"] if uses_vectors else [])
+    for helper in helpers:
+        if os.path.join(lib, helper) not in sources:
+            sources.append(os.path.join(lib, helper))
+    nodes += extra
     if uses_components:
-        for helper in ("converter.cl", "math.cl") if extra else ("converter.cl",):
-            if os.path.join(lib, helper) not in sources:
-                sources.append(os.path.join(lib, helper))
-        nodes += extra
         for axis in "xyz":
             nodes.append({"id": "position_" + axis, "fn": "blSeparateXYZ" + axis.upper(),
                           "args": {"vector": {"attr": "ObjectPos"}}})
