@@ -368,6 +368,27 @@ for number, mode in enumerate(["RGB", "HSV", "HSL"]):
             [("Color", "blCombineColor", 3)],
             {"r": "P.x*0.25+0.35", "g": "P.y*0.25+0.2", "b": "P.z*0.3+0.4", "mode": number})
 
+MAP_LOC, MAP_ROT, MAP_SCALE = (0.3, -0.2, 0.5), (0.4, -0.7, 1.1), (1.5, 0.8, -1.2)
+for number, mtype in enumerate(["POINT", "TEXTURE", "VECTOR", "NORMAL"]):
+    variant("mapping-" + mtype.lower(), "ShaderNodeMapping", {"vector_type": mtype},
+            {"Location": MAP_LOC, "Rotation": MAP_ROT, "Scale": MAP_SCALE}, {"Vector": "P"},
+            "vector_math.cl", [("Vector", "blMapping", 3)],
+            {"vector": "P", "location": list(MAP_LOC), "rotation": list(MAP_ROT),
+             "scale": list(MAP_SCALE), "mappingType": number})
+
+for interpolation, clamp in (("LINEAR", True), ("STEPPED", False), ("SMOOTHSTEP", False),
+                             ("SMOOTHERSTEP", False)):
+    fmin, fmax, tmin, tmax, steps = (0.2, -0.5, 0.0), (1.9, 3.0, 1.2), (-0.5, 0.0, 2.0), \
+        (2.0, 1.0, -1.0), (3.0, 4.0, 2.0)
+    variant("vector-maprange-" + interpolation.lower(), "ShaderNodeMapRange",
+            {"data_type": "FLOAT_VECTOR", "interpolation_type": interpolation, "clamp": clamp},
+            {"From_Min_FLOAT3": fmin, "From_Max_FLOAT3": fmax, "To_Min_FLOAT3": tmin,
+             "To_Max_FLOAT3": tmax, "Steps_FLOAT3": steps}, {"Vector": "P"}, "vector_math.cl",
+            [("Vector", "blMapRangeVector", 3)],
+            {"vector": "P", "fromMin": list(fmin), "fromMax": list(fmax), "toMin": list(tmin),
+             "toMax": list(tmax), "steps": list(steps),
+             "interpolation": MAP_RANGE_TYPES.index(interpolation), "useClamp": int(clamp)})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 

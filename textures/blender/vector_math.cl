@@ -6,6 +6,16 @@
  *   float3 blVectorMath(float3 a, float3 b, float3 c, float scale, int operation)
  *   float  blVectorMathValue(float3 a, float3 b, float3 c, float scale, int operation)
  *
+ * Also the Mapping node and Map Range in Vector mode:
+ *
+ *   float3 blMapping(float3 vector, float3 location, float3 rotation, float3 scale,
+ *                    int mappingType)         0 Point, 1 Texture, 2 Vector, 3 Normal;
+ *                                             rotation: XYZ Euler angles in radians
+ *   float3 blMapRangeVector(float3 vector, float3 fromMin, float3 fromMax, float3 toMin,
+ *                           float3 toMax, float3 steps, int interpolation, int useClamp)
+ *                                             per component; as blMapRange (math.cl), but a
+ *                                             zero-width interval gives 0, not the whole result
+ *
  * Parameters (Blender's defaults):
  *
  *   | name      | type   | default | meaning                                                   |
@@ -102,4 +112,61 @@ float blVectorMathValue(float3 a, float3 b, float3 c, float scale, int operation
   if (operation == 9)
     return blVmLength(a);
   return 0.0f;
+}
+
+/* The rows of Blender's XYZ Euler rotation matrix (Cycles' euler_to_transform). */
+void blEulerRows(float3 euler, float3 *rx, float3 *ry, float3 *rz) {
+  float cx = cos(euler.x), cy = cos(euler.y), cz = cos(euler.z);
+  float sx = sin(euler.x), sy = sin(euler.y), sz = sin(euler.z);
+  *rx = (float3)(cy * cz, sy * sx * cz - cx * sz, sy * cx * cz + sx * sz);
+  *ry = (float3)(cy * sz, sy * sx * sz + cx * cz, sy * cx * sz - sx * cz);
+  *rz = (float3)(-sy, cy * sx, cy * cx);
+}
+
+float3 blMapping(float3 vector, float3 location, float3 rotation, float3 scale, int mappingType) {
+  float3 rx, ry, rz;
+  blEulerRows(rotation, &rx, &ry, &rz);
+  if (mappingType == 1) {
+    /* Texture: the inverse of Point (transposed rotation), so textures move with the object. */
+    float3 v = vector - location;
+    float3 cx = (float3)(rx.x, ry.x, rz.x), cy = (float3)(rx.y, ry.y, rz.y);
+    float3 cz = (float3)(rx.z, ry.z, rz.z);
+    return blVmSafeDivide3((float3)(blVmDot(cx, v), blVmDot(cy, v), blVmDot(cz, v)), scale);
+  }
+  float3 v = mappingType == 3 ? blVmSafeDivide3(vector, scale) : vector * scale;
+  float3 r = (float3)(blVmDot(rx, v), blVmDot(ry, v), blVmDot(rz, v));
+  if (mappingType == 0)
+    return r + location;
+  if (mappingType == 3)
+    return blVmNormalize(r);
+  return r;
+}
+
+float blMapRangeStep(float factor, float steps) {
+  return steps > 0.0f ? floor(factor * (steps + 1.0f)) / steps : 0.0f;
+}
+
+float blMapRangeClamp(float value, float a, float b) {
+  return a > b ? fmin(fmax(value, b), a) : fmin(fmax(value, a), b);
+}
+
+float3 blMapRangeVector(float3 vector, float3 fromMin, float3 fromMax, float3 toMin, float3 toMax,
+                        float3 steps, int interpolation, int useClamp) {
+  float3 factor = blVmSafeDivide3(vector - fromMin, fromMax - fromMin);
+  if (interpolation == 1) {
+    factor = (float3)(blMapRangeStep(factor.x, steps.x), blMapRangeStep(factor.y, steps.y),
+                      blMapRangeStep(factor.z, steps.z));
+  } else if (interpolation == 2) {
+    factor = clamp(factor, 0.0f, 1.0f);
+    factor = ((float3)(3.0f) - 2.0f * factor) * (factor * factor);
+  } else if (interpolation == 3) {
+    factor = clamp(factor, 0.0f, 1.0f);
+    factor = factor * factor * factor * (factor * (factor * 6.0f - 15.0f) + 10.0f);
+  }
+  float3 result = toMin + factor * (toMax - toMin);
+  if (useClamp && interpolation <= 1)
+    result = (float3)(blMapRangeClamp(result.x, toMin.x, toMax.x),
+                      blMapRangeClamp(result.y, toMin.y, toMax.y),
+                      blMapRangeClamp(result.z, toMin.z, toMax.z));
+  return result;
 }
