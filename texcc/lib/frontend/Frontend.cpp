@@ -389,10 +389,56 @@ std::vector<std::string> clangArgs(const std::string &Path, const FrontendOption
   return Args;
 }
 
+/// Why a FIFO, a device or a socket cannot be read, in texcc::checkRegularFile's words; an
+/// error_category of its own so that clang prints the reason at the #include.
+class SpecialFileCategory : public std::error_category {
+public:
+  const char *name() const noexcept override { return "texcc-special-file"; }
+  std::string message(int Type) const override {
+    switch (static_cast<llvm::sys::fs::file_type>(Type)) {
+    case llvm::sys::fs::file_type::fifo_file: return "it is a FIFO, not a regular file";
+    case llvm::sys::fs::file_type::socket_file: return "it is a socket, not a regular file";
+    default: return "it is a device, not a regular file";
+    }
+  }
+};
+
+bool isSpecialFile(llvm::sys::fs::file_type T) {
+  using llvm::sys::fs::file_type;
+  return T == file_type::fifo_file || T == file_type::character_file ||
+         T == file_type::block_file || T == file_type::socket_file;
+}
+
+/// The real file system without FIFOs, devices and sockets. Clang opens an #include'd file with
+/// a blocking open(): a FIFO with no writer never returns, /dev/zero never ends. Here both are
+/// "cannot open file 'x.h': it is a FIFO, not a regular file" at the #include's line:col.
+class RegularFilesOnly : public llvm::vfs::ProxyFileSystem {
+public:
+  explicit RegularFilesOnly(llvm::IntrusiveRefCntPtr<llvm::vfs::FileSystem> FS)
+      : ProxyFileSystem(std::move(FS)) {}
+
+  llvm::ErrorOr<llvm::vfs::Status> status(const llvm::Twine &Path) override {
+    llvm::ErrorOr<llvm::vfs::Status> S = ProxyFileSystem::status(Path);
+    if (S && isSpecialFile(S->getType())) {
+      static const SpecialFileCategory Category;
+      return std::error_code(static_cast<int>(S->getType()), Category);
+    }
+    return S;
+  }
+
+  llvm::ErrorOr<std::unique_ptr<llvm::vfs::File>>
+  openFileForRead(const llvm::Twine &Path) override {
+    // stat() first: it does not block where open() would.
+    if (llvm::ErrorOr<llvm::vfs::Status> S = status(Path); !S)
+      return S.getError();
+    return ProxyFileSystem::openFileForRead(Path);
+  }
+};
+
 /// Parses one source; returns its number of errors.
 unsigned runOne(SourceJob &Job, const FrontendOptions &Opts, llvm::raw_ostream &Diags) {
   auto Overlay = llvm::makeIntrusiveRefCnt<llvm::vfs::OverlayFileSystem>(
-      llvm::vfs::getRealFileSystem());
+      llvm::makeIntrusiveRefCnt<RegularFilesOnly>(llvm::vfs::getRealFileSystem()));
   auto Memory = llvm::makeIntrusiveRefCnt<llvm::vfs::InMemoryFileSystem>();
   Overlay->pushOverlay(Memory);
   if (auto CWD = llvm::vfs::getRealFileSystem()->getCurrentWorkingDirectory())
