@@ -389,6 +389,21 @@ for interpolation, clamp in (("LINEAR", True), ("STEPPED", False), ("SMOOTHSTEP"
              "toMax": list(tmax), "steps": list(steps),
              "interpolation": MAP_RANGE_TYPES.index(interpolation), "useClamp": int(clamp)})
 
+BRICK_COLORS = {"Color1": (0.8, 0.3, 0.2, 1.0), "Color2": (0.4, 0.2, 0.1, 1.0),
+                "Mortar": (0.7, 0.7, 0.65, 1.0)}
+for name, freq, squash, smooth in (("brick", 2, 1.0, 0.1), ("brick-squashed-sharp", 3, 0.6, 0.0)):
+    inputs = dict(BRICK_COLORS, **{"Scale": 2.0, "Mortar Size": 0.03, "Mortar Smooth": smooth,
+                                    "Bias": 0.1, "Brick Width": 0.5, "Row Height": 0.25})
+    variant(name, "ShaderNodeTexBrick",
+            {"offset": 0.5, "offset_frequency": freq, "squash": squash, "squash_frequency": 2},
+            inputs, {"Vector": "P"}, "textures.cl",
+            [("Color", "blBrickColor", 3), ("Fac", "blBrickFac", 1, ["color1", "color2", "mortar"])],
+            {"vector": "P", "color1": list(BRICK_COLORS["Color1"][:3]),
+             "color2": list(BRICK_COLORS["Color2"][:3]), "mortar": list(BRICK_COLORS["Mortar"][:3]),
+             "scale": 2.0, "mortarSize": 0.03, "mortarSmooth": smooth, "bias": 0.1,
+             "brickWidth": 0.5, "rowHeight": 0.25, "offsetAmount": 0.5, "offsetFrequency": freq,
+             "squashAmount": squash, "squashFrequency": 2})
+
 
 # --- Baking ---------------------------------------------------------------------------------
 

@@ -9,6 +9,11 @@
  *   float  blMagicFac(float3 vector, float scale, float distortion, int depth)   mean of Color
  *   float  blWhiteNoise3DValue(float3 vector)                      hash of the bits, in [0, 1]
  *   float3 blWhiteNoise3DColor(float3 vector)
+ *   float3 blBrickColor(float3 vector, float3 color1, float3 color2, float3 mortar, float scale,
+ *                       float mortarSize, float mortarSmooth, float bias, float brickWidth,
+ *                       float rowHeight, float offsetAmount, int offsetFrequency,
+ *                       float squashAmount, int squashFrequency)
+ *   float  blBrickFac(the same without color1, color2, mortar)       1 in the mortar
  *
  * Parameters (Blender's defaults):
  *
@@ -21,6 +26,13 @@
  *   | color1/2     | float3 | 0.8 / 0.2 gray | Checker's colours                             |
  *   | distortion   | float  | 1.0     | Magic's distortion                                   |
  *   | depth        | int    | 2       | Magic's iterations, 0..10                            |
+ *   | color1/2, mortar | float3 | 0.8, 0.2, 0 | Brick: colours mixed by each brick's tint; mortar |
+ *   | mortarSize   | float  | 0.02    | Brick: mortar width                                  |
+ *   | mortarSmooth | float  | 0.1     | Brick: blur of the mortar edge                       |
+ *   | bias         | float  | 0.0     | Brick: tint bias towards color1 (< 0) or color2     |
+ *   | brickWidth, rowHeight | float | 0.5, 0.25 | Brick: brick size                          |
+ *   | offsetAmount, offsetFrequency | float, int | 0.5, 2 | Brick: shift of every Nth row  |
+ *   | squashAmount, squashFrequency | float, int | 1.0, 2 | Brick: width factor of every Nth row |
  */
 
 #include "hash.h"
@@ -117,4 +129,61 @@ float3 blWhiteNoise3DColor(float3 vector) {
   return (float3)(blHashFloat3(vector.x, vector.y, vector.z),
                   blHashFloat4(vector.x, vector.y, vector.z, 1.0f),
                   blHashFloat4(vector.x, vector.y, vector.z, 2.0f));
+}
+
+/* Blender's brick_noise: a fast integer hash of a brick's number to [0, 1). */
+float blBrickNoise(uint n) {
+  n = (n + 1013U) & 0x7fffffffU;
+  n = (n >> 13) ^ n;
+  uint nn = (n * (n * n * 60493U + 19990303U) + 1376312589U) & 0x7fffffffU;
+  return 0.5f * ((float)nn / 1073741824.0f);
+}
+
+/* The brick's tint (x) and the mortar mask (y) at p (already scaled). */
+float2 blBrick(float3 p, float mortarSize, float mortarSmooth, float bias, float brickWidth,
+               float rowHeight, float offsetAmount, int offsetFrequency, float squashAmount,
+               int squashFrequency) {
+  int rownum = (int)floor(p.y / rowHeight);
+  float offset = 0.0f;
+  if (offsetFrequency && squashFrequency) {
+    brickWidth *= (rownum % squashFrequency) ? 1.0f : squashAmount;
+    offset = (rownum % offsetFrequency) ? 0.0f : (brickWidth * offsetAmount);
+  }
+  int bricknum = (int)floor((p.x + offset) / brickWidth);
+  float x = (p.x + offset) - brickWidth * (float)bricknum;
+  float y = p.y - rowHeight * (float)rownum;
+  float tint = clamp(blBrickNoise(((uint)rownum << 16) + (uint)(bricknum & 0xFFFF)) + bias, 0.0f,
+                     1.0f);
+  float minDist = fmin(fmin(x, y), fmin(brickWidth - x, rowHeight - y));
+  float mortar;
+  if (minDist >= mortarSize) {
+    mortar = 0.0f;
+  } else if (mortarSmooth == 0.0f) {
+    mortar = 1.0f;
+  } else {
+    /* Blender's smoothstep of f, clamped: 1 past the blur. */
+    float f = (1.0f - minDist / mortarSize) / mortarSmooth;
+    float ff = f * f;
+    mortar = f <= 0.0f ? 0.0f : (f >= 1.0f ? 1.0f : 3.0f * ff - 2.0f * ff * f);
+  }
+  return (float2)(tint, mortar);
+}
+
+float3 blBrickColor(float3 vector, float3 color1, float3 color2, float3 mortar, float scale,
+                    float mortarSize, float mortarSmooth, float bias, float brickWidth,
+                    float rowHeight, float offsetAmount, int offsetFrequency, float squashAmount,
+                    int squashFrequency) {
+  float2 b = blBrick(vector * scale, mortarSize, mortarSmooth, bias, brickWidth, rowHeight,
+                     offsetAmount, offsetFrequency, squashAmount, squashFrequency);
+  float3 c = color1;
+  if (b.y != 1.0f)
+    c = (1.0f - b.x) * color1 + b.x * color2;
+  return c * (1.0f - b.y) + mortar * b.y;
+}
+
+float blBrickFac(float3 vector, float scale, float mortarSize, float mortarSmooth, float bias,
+                 float brickWidth, float rowHeight, float offsetAmount, int offsetFrequency,
+                 float squashAmount, int squashFrequency) {
+  return blBrick(vector * scale, mortarSize, mortarSmooth, bias, brickWidth, rowHeight,
+                 offsetAmount, offsetFrequency, squashAmount, squashFrequency).y;
 }
