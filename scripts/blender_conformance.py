@@ -318,6 +318,17 @@ variant("whitenoise3d", "ShaderNodeTexWhiteNoise", {"noise_dimensions": "3D"}, {
         {"Vector": "P"}, "textures.cl",
         [("Value", "blWhiteNoise3DValue", 1), ("Color", "blWhiteNoise3DColor", 3)],
         {"vector": "P"})
+variant("whitenoise1d", "ShaderNodeTexWhiteNoise", {"noise_dimensions": "1D"}, {},
+        {"W": "P.x"}, "textures.cl",
+        [("Value", "blWhiteNoise1DValue", 1), ("Color", "blWhiteNoise1DColor", 3)], {"w": "P.x"})
+variant("whitenoise2d", "ShaderNodeTexWhiteNoise", {"noise_dimensions": "2D"}, {},
+        {"Vector": "P"}, "textures.cl",
+        [("Value", "blWhiteNoise2DValue", 1), ("Color", "blWhiteNoise2DColor", 3)],
+        {"vector": "P"})
+variant("whitenoise4d", "ShaderNodeTexWhiteNoise", {"noise_dimensions": "4D"}, {},
+        {"Vector": "P", "W": "P.y"}, "textures.cl",
+        [("Value", "blWhiteNoise4DValue", 1), ("Color", "blWhiteNoise4DColor", 3)],
+        {"vector": "P", "w": "P.y"})
 
 WAVE_PROFILES = ["SIN", "SAW", "TRI"]
 

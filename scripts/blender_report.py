@@ -25,7 +25,6 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NOT_YET = [
     ("Noise Texture 1D", "not implemented (time); 2D, 3D and 4D are"),
     ("Voronoi Texture 1D and 4D", "not implemented (time); 2D and 3D are"),
-    ("White Noise 1D, 2D, 4D", "not implemented (time); 3D is"),
     ("Texture Coordinate (Generated, Object, UV, Normal)",
      "not implemented: Generated needs the object's bounding box and Object its inverse "
      "transform, which texrender does not pass to textures; UV and Normal are the attributes "

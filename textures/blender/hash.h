@@ -23,7 +23,12 @@ uint blHashFinal(uint a, uint b, uint c) {
   return c;
 }
 
-/* lookup3 of 2..4 32-bit words: the seed is 0xdeadbeef plus the length in bytes plus 13. */
+/* lookup3 of 1..4 32-bit words: the seed is 0xdeadbeef plus the length in bytes plus 13. */
+uint blHash1(uint x) {
+  uint s = 0xdeadbeefU + 4U + 13U;
+  return blHashFinal(s + x, s, s);
+}
+
 uint blHash2(uint x, uint y) {
   uint s = 0xdeadbeefU + 8U + 13U;
   return blHashFinal(s + x, s + y, s);
@@ -48,6 +53,8 @@ uint blHash4(uint x, uint y, uint z, uint w) {
 
 /* A hash mapped to [0, 1] as Cycles does (times 1 / 0xFFFFFFFF rounded to float, i.e. 2^-32). */
 float blHashToUnit(uint h) { return (float)h * (1.0f / 4294967296.0f); }
+
+float blHashFloat1(float x) { return blHashToUnit(blHash1(as_uint(x))); }
 
 float blHashFloat2(float x, float y) { return blHashToUnit(blHash2(as_uint(x), as_uint(y))); }
 

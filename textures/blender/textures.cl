@@ -9,6 +9,8 @@
  *   float  blMagicFac(float3 vector, float scale, float distortion, int depth)   mean of Color
  *   float  blWhiteNoise3DValue(float3 vector)                      hash of the bits, in [0, 1]
  *   float3 blWhiteNoise3DColor(float3 vector)
+ *   blWhiteNoise1DValue/Color(float w), blWhiteNoise2DValue/Color(float3 vector) (x, y),
+ *   blWhiteNoise4DValue/Color(float3 vector, float w): the other dimensions
  *   float3 blBrickColor(float3 vector, float3 color1, float3 color2, float3 mortar, float scale,
  *                       float mortarSize, float mortarSmooth, float bias, float brickWidth,
  *                       float rowHeight, float offsetAmount, int offsetFrequency,
@@ -121,6 +123,30 @@ float3 blMagicColor(float3 vector, float scale, float distortion, int depth) {
 float blMagicFac(float3 vector, float scale, float distortion, int depth) {
   float3 c = blMagicColor(vector, scale, distortion, depth);
   return (c.x + c.y + c.z) * (1.0f / 3.0f);
+}
+
+float blWhiteNoise1DValue(float w) { return blHashFloat1(w); }
+
+float3 blWhiteNoise1DColor(float w) {
+  return (float3)(blHashFloat1(w), blHashFloat2(w, 1.0f), blHashFloat2(w, 2.0f));
+}
+
+float blWhiteNoise2DValue(float3 vector) { return blHashFloat2(vector.x, vector.y); }
+
+float3 blWhiteNoise2DColor(float3 vector) {
+  return (float3)(blHashFloat2(vector.x, vector.y), blHashFloat3(vector.x, vector.y, 1.0f),
+                  blHashFloat3(vector.x, vector.y, 2.0f));
+}
+
+float blWhiteNoise4DValue(float3 vector, float w) {
+  return blHashFloat4(vector.x, vector.y, vector.z, w);
+}
+
+float3 blWhiteNoise4DColor(float3 vector, float w) {
+  /* Cycles' hash_float4_to_float3: the other two channels hash permuted components. */
+  return (float3)(blHashFloat4(vector.x, vector.y, vector.z, w),
+                  blHashFloat4(vector.z, vector.x, w, vector.y),
+                  blHashFloat4(w, vector.z, vector.y, vector.x));
 }
 
 float blWhiteNoise3DValue(float3 vector) { return blHashFloat3(vector.x, vector.y, vector.z); }
