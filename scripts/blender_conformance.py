@@ -84,17 +84,19 @@ def noise_variant(name, dims, ntype, normalize=True, scale=1.5, detail=3.0, roug
     inputs = {"Scale": scale, "Detail": detail, "Roughness": roughness,
               "Lacunarity": lacunarity, "Offset": offset, "Gain": gain,
               "Distortion": distortion}
-    args = {"vector": "P"}
+    args, feeds = {"vector": "P"}, {"Vector": "P"}
     if dims == 4:
         inputs["W"] = w
         args["w"] = w
+    if dims == 1:  # the W input only, fed from the position's x
+        args, feeds = {"w": "P.x"}, {"W": "P.x"}
     args.update({"scale": scale, "detail": detail, "roughness": roughness,
                  "lacunarity": lacunarity, "offset": offset, "gain": gain,
                  "distortion": distortion, "type": NOISE_TYPES[ntype],
                  "normalize": 1 if normalize else 0})
     variant(name, "ShaderNodeTexNoise",
             {"noise_dimensions": "%dD" % dims, "noise_type": ntype, "normalize": normalize},
-            inputs, {"Vector": "P"}, "noise.cl",
+            inputs, feeds, "noise.cl",
             [("Factor", "blNoise%dDFac" % dims, 1), ("Color", "blNoise%dDColor" % dims, 3)], args)
 
 
@@ -109,6 +111,8 @@ noise_variant("noise3d-hetero", 3, "HETERO_TERRAIN", detail=2.5, offset=0.4)
 noise_variant("noise3d-fbm-detail8", 3, "FBM", detail=8.0, scale=3.0)
 noise_variant("noise2d-fbm", 2, "FBM", detail=2.5, distortion=0.3)
 noise_variant("noise2d-ridged", 2, "RIDGED_MULTIFRACTAL", offset=1.0, gain=2.0)
+noise_variant("noise1d-fbm", 1, "FBM", detail=3.5, distortion=0.4)
+noise_variant("noise1d-hybrid", 1, "HYBRID_MULTIFRACTAL", detail=2.0, offset=0.6, gain=1.2)
 noise_variant("noise4d-fbm", 4, "FBM", detail=2.5, w=0.37, distortion=0.2)
 noise_variant("noise4d-hetero", 4, "HETERO_TERRAIN", detail=2.0, offset=0.3, w=-1.2)
 

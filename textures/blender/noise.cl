@@ -9,6 +9,8 @@
  *
  * One texture function per (dimensions, output), since a graph node has one output:
  *
+ *   float  blNoise1DFac  (float w, float scale, ... as below)        1D: uses w only
+ *   float3 blNoise1DColor(float w, float scale, ...)
  *   float  blNoise2DFac  (float3 vector, float scale, float detail, float roughness,
  *                         float lacunarity, float offset, float gain, float distortion,
  *                         int type, int normalize)                    2D: uses vector.xy
@@ -23,7 +25,7 @@
  *   | name       | type   | default | meaning                                                |
  *   |------------|--------|---------|--------------------------------------------------------|
  *   | vector     | float3 | -       | lookup point; Blender's default is Generated coordinates |
- *   | w          | float  | 0.0     | fourth coordinate (4D only)                            |
+ *   | w          | float  | 0.0     | fourth coordinate (4D), the coordinate (1D)            |
  *   | scale      | float  | 5.0     | lattice cells per unit of vector                       |
  *   | detail     | float  | 2.0     | octaves beyond the first, clamped to [0, 15]; fractional blends |
  *   | roughness  | float  | 0.5     | amplitude factor per octave (negative is taken as 0)   |
@@ -57,6 +59,12 @@ float blFloorFrac(float x, int *i) {
   return x - f;
 }
 
+float blGrad1(uint hash, float x) {
+  int h = (int)(hash & 15U);
+  float g = (float)(1 + (h & 7));
+  return blNegateIf(g, h & 8) * x;
+}
+
 float blGrad2(uint hash, float x, float y) {
   int h = (int)(hash & 7U);
   float u = h < 4 ? x : y;
@@ -81,6 +89,13 @@ float blGrad4(uint hash, float x, float y, float z, float w) {
 }
 
 float blMix(float a, float b, float t) { return a + t * (b - a); }
+
+float blPerlin1(float x) {
+  int X;
+  float fx = blFloorFrac(x, &X);
+  return blMix(blGrad1(blHash1((uint)X), fx), blGrad1(blHash1((uint)(X + 1)), fx - 1.0f),
+               blFade(fx));
+}
 
 float blPerlin2(float x, float y) {
   int X, Y;
@@ -140,11 +155,13 @@ float blPerlin4(float x, float y, float z, float w) {
   return blMix(a, b, s);
 }
 
-/* Signed noise of dimension dims (2..4) at p: wrapped every 100000 as Blender does, then
- * scaled by the factors that make each dimension's range about [-1, 1]. */
+/* Signed noise of dimension dims (1..4; 1D uses p.w) at p: wrapped every 100000 as Blender
+ * does, then scaled by the factors that make each dimension's range about [-1, 1]. */
 float blSnoise(float4 p, int dims) {
   float x = fmod(p.x, 100000.0f), y = fmod(p.y, 100000.0f);
   float z = fmod(p.z, 100000.0f), w = fmod(p.w, 100000.0f);
+  if (dims == 1)
+    return 0.25f * blPerlin1(w);
   if (dims == 2)
     return 0.6616f * blPerlin2(x, y);
   if (dims == 3)
@@ -256,9 +273,11 @@ float blNoiseSelect(float4 p, int dims, float detail, float roughness, float lac
   return blNoiseFbm(p, dims, detail, roughness, lacunarity, normalize);
 }
 
-/* Keeps the components a dimension uses (2D: x, y; 3D: x, y, z; 4D: all), zero elsewhere, so
- * that seed offsets added to unused components change nothing. */
+/* Keeps the components a dimension uses (1D: w; 2D: x, y; 3D: x, y, z; 4D: all), zero
+ * elsewhere, so that seed offsets added to unused components change nothing. */
 float4 blNoiseMask(float4 p, int dims) {
+  if (dims == 1)
+    return (float4)(0.0f, 0.0f, 0.0f, p.w);
   if (dims == 2)
     return (float4)(p.x, p.y, 0.0f, 0.0f);
   if (dims == 3)
@@ -275,6 +294,15 @@ float blNoiseTexture(float4 co, int dims, float scale, float detail, float rough
   detail = clamp(detail, 0.0f, 15.0f);
   roughness = fmax(roughness, 0.0f);
   float4 p = blNoiseMask(co * scale, dims);
+  if (dims == 1) {
+    /* 1D seeds hash one word: 100 + hash(seed) * 100 (Cycles' random_float_offset). */
+    if (distortion != 0.0f)
+      p.w += blSnoise(p + (float4)(0.0f, 0.0f, 0.0f, 100.0f + blHashFloat1(0.0f) * 100.0f), 1) *
+             distortion;
+    if (channel > 0)
+      p.w += 100.0f + blHashFloat1((float)channel) * 100.0f;
+    return blNoiseSelect(p, 1, detail, roughness, lacunarity, offset, gain, type, normalize);
+  }
   if (distortion != 0.0f) {
     float4 d = (float4)(0.0f, 0.0f, 0.0f, 0.0f);
     d.x = blSnoise(p + blNoiseMask(blSeedOffset4(0.0f), dims), dims);
@@ -301,6 +329,18 @@ float3 blNoiseColor(float4 co, int dims, float scale, float detail, float roughn
   c.z = blNoiseTexture(co, dims, scale, detail, roughness, lacunarity, offset, gain, distortion,
                        type, normalize, 2);
   return c;
+}
+
+float blNoise1DFac(float w, float scale, float detail, float roughness, float lacunarity,
+                   float offset, float gain, float distortion, int type, int normalize) {
+  return blNoiseTexture((float4)(0.0f, 0.0f, 0.0f, w), 1, scale, detail, roughness, lacunarity,
+                        offset, gain, distortion, type, normalize, 0);
+}
+
+float3 blNoise1DColor(float w, float scale, float detail, float roughness, float lacunarity,
+                      float offset, float gain, float distortion, int type, int normalize) {
+  return blNoiseColor((float4)(0.0f, 0.0f, 0.0f, w), 1, scale, detail, roughness, lacunarity,
+                      offset, gain, distortion, type, normalize);
 }
 
 float blNoise2DFac(float3 vector, float scale, float detail, float roughness,
