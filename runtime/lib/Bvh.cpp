@@ -1,6 +1,7 @@
 #include "texrender/Bvh.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -155,6 +156,7 @@ bool hitBox(const RtBvhNode &N, const Vec3 &O, const Vec3 &InvD, float TMax) {
 } // namespace
 
 Bvh buildBvh(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
+  const auto T0 = std::chrono::steady_clock::now();
   Bvh Out;
   size_t N = Positions.size() / 3;
   Out.Order.resize(N);
@@ -178,6 +180,7 @@ Bvh buildBvh(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
   }
   B.build(0, 0, uint32_t(N), 0);
   Out.Depth = B.Depth;
+  Out.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - T0).count();
   return Out;
 }
 

@@ -40,7 +40,7 @@ struct KernelFile {
 const std::vector<KernelFile> &fixedKernels() {
   static const std::vector<KernelFile> Files = {
       {"raygen.cl", {"raygen"}},       {"closest_hit.cl", {"closest_hit"}},
-      {"hit_attributes.cl", {"hit_attributes"}}, {"ao.cl", {"ao_trace", "ao_reduce", "ao_loop"}},
+      {"hit_attributes.cl", {"hit_attributes"}}, {"ao.cl", {"ao_trace", "ao_reduce", "ao_loop", "ao_rays"}},
       {"shade.cl", {"shade"}},         {"shadow.cl", {"shadow"}},
       {"compact.cl", {"compact"}},     {"accumulate.cl", {"accumulate"}}};
   return Files;
@@ -89,6 +89,7 @@ Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
   try {
     buildFixedKernels();
     uploadScene();
+    Tracer = makeTrace(Opts.Trace, TraceContext{*Cl, K, B, Data});
     uploadLayoutData();
     buildTextureKernel();
   } catch (const cl::Error &E) {
@@ -289,10 +290,7 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
   int Bounces = 0;
   const bool Attrs = AttrMask != 0 || HasTextureWork;
   while (Count > 0 && (Settings.MaxDepth < 0 || Depth <= Settings.MaxDepth) && Depth < 4096) {
-    cl::Kernel &CH = K["closest_hit"];
-    CH.setArg(0, B["bvhNodes"]), CH.setArg(1, B["triangles"]), CH.setArg(2, B["paths"]);
-    CH.setArg(3, Cur), CH.setArg(4, cl_int(Count)), CH.setArg(5, B["hits"]);
-    Cl->launch(CH, Count, Depth == 1 ? "closest_hit_primary" : "closest_hit_bounce");
+    Tracer->closestHit(Cur, Count, Depth == 1 ? "closest_hit_primary" : "closest_hit_bounce");
     (Depth == 1 ? Stats.PrimaryRays : Stats.BounceRays) += Count;
     if (Attrs) {
       cl::Kernel &HA = K["hit_attributes"];
@@ -319,10 +317,7 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
     SH.setArg(12, B["textureOutputs"]), SH.setArg(13, cl_int(Lay.MaxOutputs));
     SH.setArg(14, B["shadowRays"]), SH.setArg(15, B["counters"]);
     Cl->launch(SH, Count, "shade");
-    cl::Kernel &SD = K["shadow"];
-    SD.setArg(0, B["bvhNodes"]), SD.setArg(1, B["triangles"]), SD.setArg(2, B["shadowRays"]);
-    SD.setArg(3, B["paths"]), SD.setArg(4, Cur), SD.setArg(5, cl_int(Count));
-    Cl->launch(SD, Count, "shadow");
+    Tracer->shadow(Cur, Count);
     cl_int Zero = 0;
     Cl->write(B["activeCount"], &Zero, sizeof Zero);
     cl::Kernel &CP = K["compact"];

@@ -1,5 +1,6 @@
-// Ambient occlusion of a Renderer: by default every AO ray of every hit in one launch
-// (ao_trace, hits x aoSamples work-items) and a reduction (ao_reduce), as the paper proposes;
+// Ambient occlusion of a Renderer: by default every AO ray of every hit at once (the trace
+// backend's aoOccluded: the OpenCL ao_trace launch of hits x aoSamples work-items, or one Embree
+// stream of the rays ao_rays makes) and a reduction (ao_reduce), as the paper proposes;
 // with RendererOptions::AoPerHitLoop the per-hit loop it argues against (ao_loop), which
 // traces the same rays and gives the same AO, so that the two can be timed on one image.
 
@@ -11,21 +12,26 @@ namespace texrender {
 
 void Renderer::runAo(const cl::Buffer &Active, int Count, FrameStats &Stats) {
   const cl_int Samples = Settings.AoSamples;
-  cl::Kernel &AT = K[Opts.AoPerHitLoop ? "ao_loop" : "ao_trace"];
-  AT.setArg(0, B["bvhNodes"]), AT.setArg(1, B["triangles"]);
-  AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Active);
-  AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, B["meshes"]);
-  AT.setArg(8, B["materials"]), AT.setArg(9, Samples);
-  AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_float(1e-4f));
-  AT.setArg(12, cl_uint(Settings.Seed));
   if (Opts.AoPerHitLoop) {
+    // The per-hit loop is an OpenCL kernel whatever the trace backend (it exists to be timed
+    // against the parallel launch of the OpenCL traversal).
+    cl::Kernel &AT = K["ao_loop"];
+    AT.setArg(0, B["bvhNodes"]), AT.setArg(1, B["triangles"]);
+    AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Active);
+    AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, B["meshes"]);
+    AT.setArg(8, B["materials"]), AT.setArg(9, Samples);
+    AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_float(1e-4f));
+    AT.setArg(12, cl_uint(Settings.Seed));
     AT.setArg(13, B["hitAttributes"]), AT.setArg(14, B["counters"]);
     Cl->launch(AT, size_t(Count), "ao_loop");
     Stats.AoWorkItemsPerLaunchMax = std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, Count);
     return;
   }
-  AT.setArg(13, B["aoOccluded"]);
-  Cl->launch(AT, size_t(Count) * Samples, "ao_trace");
+  // Every AO ray of every hit at once: ao_trace (OpenCL) or one Embree stream (Trace.h).
+  AoParams P;
+  P.Samples = Samples, P.Distance = Settings.AoDistance, P.Epsilon = 1e-4f;
+  P.Seed = Settings.Seed;
+  Tracer->aoOccluded(Active, Count, P);
   Stats.AoWorkItemsPerLaunchMax =
       std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, uint64_t(Count) * Samples);
   cl::Kernel &AR = K["ao_reduce"];

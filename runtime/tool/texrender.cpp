@@ -39,6 +39,8 @@ const char *Usage =
     "  --ao-samples N       AO rays per hit      --ao-distance D   AO ray length\n"
     "  --ao-method=parallel|loop  parallel (default): one work-item per AO ray, all rays of\n"
     "                       all hits in one launch; loop: one work-item per hit (to compare)\n"
+    "  --trace=opencl|embree|auto  the trace backend (closest hit, shadow, AO rays); auto\n"
+    "                       (default): embree on a CPU device, opencl otherwise\n"
     "  --seed N             random seed\n"
     "  --set NODE.ARG=VALUE live edit before rendering (repeatable)\n"
     "  --edit-script FILE   render, then per line apply an edit (set NODE.ARG=VALUE |\n"
@@ -72,6 +74,7 @@ struct Options {
   double TimeLimit = 0; // --time-limit seconds; 0: none
   std::vector<std::string> Sets;
   int Device = 0;
+  TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
   bool Quiet = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
@@ -174,6 +177,8 @@ Options parseArgs(int Argc, char **Argv) {
       O.Device = toInt(A, Next());
     } else if (A == "--list-devices") {
       O.ListDevices = true;
+    } else if (A == "--trace") {
+      O.Trace = parseTraceKind(Next());
     } else if (A == "--ao-method") {
       std::string M = Next();
       if (M != "parallel" && M != "loop")
@@ -487,6 +492,7 @@ int run(int Argc, char **Argv) try {
   RO.Progress = !O.Quiet && isatty(2);
   RO.CheckNan = O.CheckNan;
   RO.AoPerHitLoop = O.AoLoop;
+  RO.Trace = O.Trace;
   if (Dog) {
     RO.Deadline = T0 + O.TimeLimit;
     RO.OnPass = [W = Dog.get()](bool InPass) { W->pass(InPass); };

@@ -19,6 +19,7 @@ struct Bvh {
   std::vector<RtBvhNode> Nodes;
   std::vector<uint32_t> Order; // Order[k]: the input triangle stored at position k
   unsigned Depth = 0;
+  double BuildSeconds = 0; // wall clock of buildBvh
 };
 
 /// Builds over Positions (3 per triangle). Leaves hold at most MaxLeaf triangles; the depth

@@ -77,6 +77,11 @@ public:
   cl::Device &device() { return Device; }
   const std::map<std::string, KernelTiming> &timings() const { return Timings; }
   void resetTimings() { Timings.clear(); }
+  /// Adds a stage that ran on the host (a host trace backend, Trace.h) to the timings.
+  void addHostTiming(const std::string &Name, double Seconds, uint64_t WorkItems) {
+    KernelTiming &T = Timings[Name];
+    ++T.Launches, T.Seconds += Seconds, T.WorkItems += WorkItems;
+  }
   const std::map<std::string, size_t> &memory() const { return Memory; }
   size_t memoryTotal() const;
 

@@ -12,6 +12,7 @@
 #include "texrender/Scene.h"
 #include "texrender/SceneData.h"
 #include "texrender/TextureTiers.h"
+#include "texrender/Trace.h"
 
 #include <cstdint>
 #include <functional>
@@ -40,6 +41,8 @@ struct RendererOptions {
   /// work-item per AO ray (ao_trace + ao_reduce). Same rays, same image; kept to measure the
   /// paper's claim that the parallel launch is faster (bench/ao.py).
   bool AoPerHitLoop = false;
+  /// --trace: the trace backend (Trace.h); Auto: Embree on CPU devices, OpenCL otherwise.
+  TraceKind Trace = TraceKind::Auto;
   /// --time-limit: render() stops at the first pass boundary after this time (steadySeconds();
   /// 0: none) and averages the passes done (FrameStats::SamplesDone, TimeLimited).
   double Deadline = 0;
@@ -123,6 +126,8 @@ public:
 
   ClContext &cl() { return *Cl; }
   const SceneData &sceneData() const { return Data; }
+  /// The trace backend in use (closest hit, shadow and AO rays).
+  const Trace &tracer() const { return *Tracer; }
   RenderSettings &settings() { return Settings; }
   uint32_t attributeMask() const { return AttrMask; }
   bool runsAo() const { return (AttrMask >> TEXCC_ATTR_AO) & 1u; }
@@ -200,6 +205,7 @@ private:
   unsigned FramesRendered = 0;
 
   std::map<std::string, cl::Buffer> B;      // device buffers by name
+  std::unique_ptr<Trace> Tracer;            // the trace stages (after B: it refers to it)
   size_t Capacity = 0;                      // paths the work buffers hold
   int CapacityAo = 0;
 };
