@@ -74,6 +74,12 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
   J["image"] = {{"width", S.Width}, {"height", S.Height}, {"spp", S.Spp}, {"maxDepth", S.MaxDepth}};
   J["triangles"] = R.sceneData().Tris.size();
   J["bvhNodes"] = R.sceneData().Tree.Nodes.size();
+  // The trace backend (Trace.h) and the build time of each acceleration structure made: the
+  // SAH BVH (always; the OpenCL traversal and the host tests use it) and Embree's (embree only).
+  J["trace"] = R.tracer().name();
+  J["bvhBuildSeconds"] = {{"sah", R.sceneData().Tree.BuildSeconds},
+                          {"embree", std::string(R.tracer().name()) == "embree"
+                                         ? json(R.tracer().buildSeconds()) : json(nullptr)}};
   J["lights"] = R.sceneData().Lights.size();
   std::vector<std::string> Attrs;
   static const char *Names[TEXCC_ATTR_COUNT] = {"WorldPos", "ObjectPos", "Normal", "GeomNormal",
