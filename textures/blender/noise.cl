@@ -157,9 +157,11 @@ float blPerlin4(float x, float y, float z, float w) {
 
 /* Signed noise of dimension dims (1..4; 1D uses p.w) at p: wrapped every 100000 as Blender
  * does, then scaled by the factors that make each dimension's range about [-1, 1]. */
+float blWrap100k(float x) { return fabs(x) < 100000.0f ? x : fmod(x, 100000.0f); }
+
 float blSnoise(float4 p, int dims) {
-  float x = fmod(p.x, 100000.0f), y = fmod(p.y, 100000.0f);
-  float z = fmod(p.z, 100000.0f), w = fmod(p.w, 100000.0f);
+  /* fmod(x, 100000) is x itself below 100000: skipping the call there changes no value. */
+  float x = blWrap100k(p.x), y = blWrap100k(p.y), z = blWrap100k(p.z), w = blWrap100k(p.w);
   if (dims == 1)
     return 0.25f * blPerlin1(w);
   if (dims == 2)
