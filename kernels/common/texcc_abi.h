@@ -54,4 +54,22 @@ typedef struct TexccImageInfo {
   int pad;
 } TexccImageInfo;
 
+/* The fault record: the texture kernels' last argument (docs/abi.md "Faults"), TEXCC_FAULT_WORDS
+ * ints, all zero until the first work-item whose user code trips a safety check that texcc
+ * inserted (docs/reliability.md "User code") fills it; later faults of the launch are dropped. */
+#define TEXCC_FAULT_NONE 0
+#define TEXCC_FAULT_LOOP_BUDGET 1 /* a loop ran past the budget; detail: the budget */
+#define TEXCC_FAULT_INDEX 2       /* a __global array read out of bounds; detail: the index,
+                                     extra: the array's length */
+#define TEXCC_FAULT_KIND 0        /* word indices */
+#define TEXCC_FAULT_LINE 1        /* the user's line (__LINE__, #line-mapped) */
+#define TEXCC_FAULT_AT 2          /* the node: TEXCC_AT_NODE | node index, or the material's
+                                     instruction index */
+#define TEXCC_FAULT_HIT 3         /* the work-item (hit) */
+#define TEXCC_FAULT_DETAIL 4
+#define TEXCC_FAULT_EXTRA 5
+#define TEXCC_FAULT_MATERIAL 6
+#define TEXCC_FAULT_WORDS 8
+#define TEXCC_AT_NODE 0x40000000
+
 #endif

@@ -7,11 +7,29 @@
 
 typedef int sam2D; /* an image index into TexccCtx::images */
 
+/* The loop budget: how many loop iterations (all loops of all nodes together) one work-item may
+ * run per launch; texcc --loop-budget N defines it before this header. */
+#ifndef TEXCC_LOOP_BUDGET
+#define TEXCC_LOOP_BUDGET 16777216u
+#endif
+
+/* The safety state of one work-item (docs/reliability.md "User code"): what is left of its loop
+ * budget, which node runs (TEXCC_FAULT_AT), and where a tripped check records the launch's
+ * first fault (texcc_abi.h). */
+typedef struct TexccGuard {
+  uint loopsLeft;
+  uint at;
+  int hit;
+  int material;
+  __global int *fault;
+} TexccGuard;
+
 typedef struct TexccCtx {
   TexccHitAttrs hit;
   __global const TexccSettings *settings;
   __global const float4 *texels;
   __global const TexccImageInfo *images;
+  TexccGuard *guard;
 } TexccCtx;
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx
@@ -20,6 +38,32 @@ typedef struct TexccCtx {
  * place costs a GPU backend registers and scratch around it (clang-15, gfx90a: scratches in
  * shape mode 51 VGPRs and 8 B of scratch with voronoiSearch called, 36 and 0 B inlined). */
 #define TEXCC_FN __attribute__((always_inline))
+
+/* Records a fault unless one was recorded before in this launch (one compare-exchange). */
+static inline void texcc_fault(const TexccCtx *c, int kind, int line, int detail, int extra) {
+  __global int *f = c->guard->fault;
+  if (atomic_cmpxchg(f + TEXCC_FAULT_KIND, TEXCC_FAULT_NONE, kind) != TEXCC_FAULT_NONE)
+    return;
+  f[TEXCC_FAULT_LINE] = line;
+  f[TEXCC_FAULT_AT] = (int)c->guard->at;
+  f[TEXCC_FAULT_HIT] = c->guard->hit;
+  f[TEXCC_FAULT_DETAIL] = detail;
+  f[TEXCC_FAULT_EXTRA] = extra;
+  f[TEXCC_FAULT_MATERIAL] = c->guard->material;
+}
+
+/* texcc ends the condition of every user loop with `&& texcc_loop_continues(texcc_ctx,
+ * __LINE__)`: each iteration spends one of the work-item's budget. With none left the loop
+ * ends, and so does every loop around it at its next test; the fault names the line. */
+static inline bool texcc_loop_continues(const TexccCtx *c, int line) {
+  TexccGuard *g = c->guard;
+  if (g->loopsLeft != 0u) {
+    --g->loopsLeft;
+    return true;
+  }
+  texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, line, (int)TEXCC_LOOP_BUDGET, 0);
+  return false;
+}
 
 /* readAttr("Name") lowers to texcc_attr_Name(texcc_ctx). */
 static inline float3 texcc_attr_WorldPos(const TexccCtx *c) { return c->hit.worldPos.xyz; }

@@ -219,6 +219,8 @@ void Renderer::allocateWorkBuffers(size_t N) {
                          : Lay.Spill             ? Lay.StackSlots
                                                  : 0;
   B["textureScratch"] = Cl->allocate("textureScratch", std::max<size_t>(1, N * ScratchPerHit) * sizeof(cl_float4), RW);
+  const cl_int NoFault[TEXCC_FAULT_WORDS] = {};
+  B["textureFaults"] = Cl->allocateWith("textureFaults", NoFault, sizeof NoFault, RW);
   if (runsAo() && !Opts.AoPerHitLoop)
     B["aoOccluded"] = Cl->allocate("aoOccluded", N * Settings.AoSamples, RW);
   Capacity = N;
@@ -244,6 +246,8 @@ void Renderer::runTextures(int NumActive) {
     T.setArg(6, B["images"]);
     T.setArg(7, B["textureOutputs"]);
     T.setArg(8, B["textureScratch"]);
+    if (T.getInfo<CL_KERNEL_NUM_ARGS>() > 9) // kernels made before the fault record lack it
+      T.setArg(9, B["textureFaults"]);
     Cl->launch(T, NumActive, "proctex");
   }
 }
@@ -325,6 +329,8 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
     CP.setArg(3, Next), CP.setArg(4, B["activeCount"]);
     Cl->launch(CP, Count, "compact");
     Cl->read(B["activeCount"], &Count, sizeof Count);
+    if (HasTextureWork)
+      checkTextureFaults(Cur);
     std::swap(Cur, Next);
     ++Depth;
     ++Bounces;

@@ -5,11 +5,13 @@
 #include "texcc/Frontend/Frontend.h"
 #include "texcc/Graph/Compile.h"
 #include "texcc/Graph/Graph.h"
+#include "texcc/OutOfMemory.h"
 #include "texcc/StackGuard.h"
 #include "texcc/Support/File.h"
 #include "texcc/Version.h"
 
 #include "llvm/Support/CommandLine.h"
+#include "llvm/Support/ErrorHandling.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <filesystem>
@@ -76,6 +78,12 @@ static cl::opt<unsigned> LightCost(
     cl::desc("interp: a function may be part of a superinstruction when its cost (layout.json "
              "functions[].cost) is at most N (default 1200)"),
     cl::value_desc("N"), cl::init(1200), cl::Hidden, cl::cat(TexccCategory));
+static cl::opt<uint64_t> LoopBudget(
+    "loop-budget",
+    cl::desc("Loop iterations one hit may run in the user's textures, all loops together; past "
+             "it the loops end and texrender reports the node, line and pixel (default "
+             "16777216, at most 2147483647)"),
+    cl::value_desc("N"), cl::init(0), cl::cat(TexccCategory));
 static cl::list<std::string> IncludeDirs("I", cl::Prefix, cl::desc("Add an include directory"),
                                          cl::value_desc("DIR"), cl::cat(TexccCategory));
 static cl::list<std::string> Defines("D", cl::Prefix, cl::desc("Define a macro for the sources"),
@@ -168,14 +176,19 @@ static int run() {
   const bool EmitUserCode = Emit == "user-code";
   if (!Emit.empty() && !EmitUserCode)
     return fail("unknown --emit value '" + Emit + "' (expected user-code)");
+  if (LoopBudget.getNumOccurrences() && (LoopBudget < 1 || LoopBudget > 2147483647))
+    return fail("--loop-budget " + std::to_string(LoopBudget) +
+                " is out of range (expected 1 to 2147483647)");
   if (OutDir.empty() && !EmitUserCode)
     return fail("no output folder given (-o OUTDIR)");
 
   std::string GraphText, Why;
-  if (!texcc::readRegularFile(GraphPath, GraphText, Why))
+  if (!texcc::whileAllocating("reading the graph",
+                              [&] { return texcc::readRegularFile(GraphPath, GraphText, Why); }))
     return fail("cannot read graph '" + GraphPath + "': " + Why);
   gr::DiagnosticSink GraphDiags;
-  std::optional<gr::Graph> G = gr::parseGraph(GraphPath, GraphText, GraphDiags);
+  std::optional<gr::Graph> G = texcc::whileAllocating(
+      "parsing the graph", [&] { return gr::parseGraph(GraphPath, GraphText, GraphDiags); });
   GraphDiags.print(std::cerr);
   if (!G)
     return 1;
@@ -199,7 +212,9 @@ static int run() {
     FeOpts.HoistableParams = constantParameters(*G);
   FeOpts.IncludeDirs.assign(IncludeDirs.begin(), IncludeDirs.end());
   FeOpts.Defines.assign(Defines.begin(), Defines.end());
-  auto FR = fe::runFrontend(sourceList(*G), TextureNames, FeOpts, errs());
+  auto FR = texcc::whileAllocating("parsing the texture sources", [&] {
+    return fe::runFrontend(sourceList(*G), TextureNames, FeOpts, errs());
+  });
   if (!FR)
     return fail(toString(FR.takeError()));
   if (EmitUserCode) {
@@ -236,6 +251,7 @@ static int run() {
   Opts.Tgt = *Target;
   Opts.GraphPath = fs::absolute(fs::path(GraphPath.getValue())).lexically_normal().string();
   Opts.InterpHoists = InterpHoists;
+  Opts.LoopBudget = static_cast<uint32_t>(LoopBudget);
   Opts.UserCode = renderReachableUserCode(*FR, *CG, CG->liveFunctions(),
                                           Shape ? cg::hoistingFunctions(*CG) : std::set<std::string>{});
   // The interp kernel (interp mode, shape mode's fallback) calls the functions of dead nodes
@@ -251,7 +267,10 @@ static int run() {
         InterpHoists ? cg::interpHoistingFunctions(*CG) : std::set<std::string>{});
   }
   std::string Error;
-  if (!cg::writeOutputsAtomically(OutDir, cg::generateOutputs(*CG, Opts, !Dump.empty()), Error))
+  std::vector<cg::OutputFile> Files = texcc::whileAllocating(
+      "generating the kernel and layout.json", [&] { return cg::generateOutputs(*CG, Opts, !Dump.empty()); });
+  if (!texcc::whileAllocating("writing the outputs",
+                              [&] { return cg::writeOutputsAtomically(OutDir, Files, Error); }))
     return fail(Error);
   if (Verbose)
     errs() << "texcc: wrote " << cg::kernelFileName(*Target) << ", layout.json, args.bin"
@@ -265,5 +284,19 @@ int main(int argc, char **argv) {
   cl::ParseCommandLineOptions(argc, argv,
                               "texcc: compiles procedural textures (OpenCL C) and a node graph "
                               "into an OpenCL kernel\n");
-  return texcc::runWithLargeStack(run, "texcc");
+  // Out of memory is one line and exit status 1 (texcc/OutOfMemory.h), from operator new and
+  // from LLVM's own allocators (whose default is a message and abort()).
+  texcc::installOutOfMemoryHandler("texcc");
+  llvm::install_bad_alloc_error_handler(
+      [](void *, const char *, bool) { texcc::exitOutOfMemory(); });
+  return texcc::runWithLargeStack(
+      [] {
+        try {
+          return run();
+        } catch (const std::bad_alloc &E) {
+          texcc::reportOutOfMemory("texcc", E);
+          return 1;
+        }
+      },
+      "texcc");
 }

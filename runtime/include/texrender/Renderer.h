@@ -161,6 +161,9 @@ private:
   /// --check-nan: throws, naming the material, the node and the pixel, if a texture output
   /// of the NumActive hits in Active is NaN or infinite.
   void checkTextureOutputs(const cl::Buffer &Active, int NumActive);
+  /// Throws, naming node, line and pixel, if a safety check of user code tripped in this
+  /// bounce's texture kernels (the fault record; Faults.cpp).
+  void checkTextureFaults(const cl::Buffer &Active);
   void setSceneArgs();
   std::string programOptions() const;
 

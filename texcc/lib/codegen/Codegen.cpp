@@ -141,7 +141,10 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
   OS << "\n#define TEXCC_STACK_SLOTS " << CG.StackSlots << "\n"
      << "#define TEXCC_MAX_OUTPUTS " << std::max(1u, CG.MaxOutputs) << "\n"
      << "#define TEXCC_NUM_MATERIALS " << CG.Materials.size() << "\n"
-     << "#define TEXCC_SPILL " << (CG.Spill && !Host ? 1 : 0) << "\n\n";
+     << "#define TEXCC_SPILL " << (CG.Spill && !Host ? 1 : 0) << "\n";
+  if (Opts.LoopBudget)
+    OS << "#define TEXCC_LOOP_BUDGET " << Opts.LoopBudget << "u\n";
+  OS << "\n";
   if (!Host)
     // No a*b+c fused into one rounding: where the compiler fuses depends on how each mode's
     // code is inlined and folded, and the tiered runtime swaps interp and shape kernels

@@ -94,10 +94,11 @@ std::string kernelParameterList() {
          "    __global const float4 *texels,\n"
          "    __global const TexccImageInfo *images,\n"
          "    __global float4 *outputs,\n"
-         "    __global float4 *scratch";
+         "    __global float4 *scratch,\n"
+         "    __global int *faults";
 }
 
-void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard) {
+void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard, const std::string &At) {
   OS << "  const int gid = (int)get_global_id(0);\n"
      << "  if (gid >= numHits)\n"
      << "    return;\n"
@@ -109,7 +110,13 @@ void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard) {
      << "  ctx.settings = settings;\n"
      << "  ctx.texels = texels;\n"
      << "  ctx.images = images;\n"
+     << "  TexccGuard guard = {TEXCC_LOOP_BUDGET, " << At << ", gid, mat, faults};\n"
+     << "  ctx.guard = &guard;\n"
      << "  const TexccCtx *texcc_ctx = &ctx;\n";
+}
+
+std::string guardAtInstruction(unsigned Instruction) {
+  return "texcc_ctx->guard->at = " + std::to_string(Instruction) + "u;";
 }
 
 std::string signatureComment(const FunctionSignature &Sig) {

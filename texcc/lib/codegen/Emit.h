@@ -33,8 +33,13 @@ std::string nodeLocalName(const graph::CompiledNode &N, unsigned Index);
 /// The kernel parameters of docs/abi.md, identical for every mode, one per line, indented.
 std::string kernelParameterList();
 /// The common opening of every texture kernel: the work-item's hit, its material (Guard is
-/// an extra return condition, may be empty) and the hit context `texcc_ctx`.
-void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard);
+/// an extra return condition, may be empty), its safety state `guard` (At: which node runs
+/// first, TEXCC_FAULT_AT) and the hit context `texcc_ctx`.
+void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard,
+                        const std::string &At = "0u");
+/// The statement that tells the guard which node runs next (the fault names it): instruction
+/// Instruction of the material's program.
+std::string guardAtInstruction(unsigned Instruction);
 
 /// The parameter/return spelling of a texture function, e.g. "float fbm3(float3 p, int n)".
 std::string signatureComment(const graph::FunctionSignature &Sig);

@@ -51,6 +51,8 @@ void emitHost(std::ostringstream &OS, const CompiledGraph &CG) {
         "  ctx.settings = settings;\n"
         "  ctx.texels = texels;\n"
         "  ctx.images = images;\n"
+        "  TexccGuard guard = {TEXCC_LOOP_BUDGET, 0u, 0, material, nullptr};\n"
+        "  ctx.guard = &guard;\n"
         "  float4 out[TEXCC_MAX_OUTPUTS];\n"
         "  int n = 0;\n"
         "  switch (material) {\n";

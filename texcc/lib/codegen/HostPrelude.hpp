@@ -304,12 +304,49 @@ inline int as_int(float x) { return static_cast<int>(as_uint(x)); }
 // ---- the hit context and the embedded API (kernels/common/texcc_device.h on the device) ----
 typedef int sam2D;
 
+#ifndef TEXCC_LOOP_BUDGET
+#define TEXCC_LOOP_BUDGET 16777216u
+#endif
+
+// The safety state of one evaluation (texcc_device.h); fault may be null (not recorded).
+struct TexccGuard {
+  uint loopsLeft;
+  uint at;
+  int hit;
+  int material;
+  int *fault;
+};
+
 struct TexccCtx {
   TexccHitAttrs hit;
   const TexccSettings *settings;
   const cl_float4 *texels;
   const TexccImageInfo *images;
+  TexccGuard *guard;
 };
+
+inline void texcc_fault(const TexccCtx *c, int kind, int line, int detail, int extra) {
+  int *f = c->guard->fault;
+  if (!f || f[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
+    return;
+  f[TEXCC_FAULT_KIND] = kind;
+  f[TEXCC_FAULT_LINE] = line;
+  f[TEXCC_FAULT_AT] = static_cast<int>(c->guard->at);
+  f[TEXCC_FAULT_HIT] = c->guard->hit;
+  f[TEXCC_FAULT_DETAIL] = detail;
+  f[TEXCC_FAULT_EXTRA] = extra;
+  f[TEXCC_FAULT_MATERIAL] = c->guard->material;
+}
+
+inline bool texcc_loop_continues(const TexccCtx *c, int line) {
+  TexccGuard *g = c->guard;
+  if (g->loopsLeft != 0u) {
+    --g->loopsLeft;
+    return true;
+  }
+  texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, line, static_cast<int>(TEXCC_LOOP_BUDGET), 0);
+  return false;
+}
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx
 #define TEXCC_CTX_ARG texcc_ctx

@@ -27,9 +27,11 @@ void emitStraightLineMaterial(std::ostringstream &OS, const CompiledGraph &CG,
   E.Tgt = T;
   E.BakeConstants = true;
   E.ChildExpr = [&CG](unsigned Child) { return nodeLocalName(CG.Nodes[Child], Child); };
-  for (const Instruction &I : M.Program) {
+  for (size_t J = 0; J < M.Program.size(); ++J) {
+    const Instruction &I = M.Program[J];
     const CompiledNode &N = CG.Nodes[I.Node];
-    OS << "  const " << spelling(N.Return) << " " << nodeLocalName(N, I.Node) << " = "
+    OS << "  " << guardAtInstruction(J) << "\n"
+       << "  const " << spelling(N.Return) << " " << nodeLocalName(N, I.Node) << " = "
        << E.call(CG, I.Node) << ";\n";
   }
   for (size_t K = 0; K < M.Outputs.size(); ++K) {

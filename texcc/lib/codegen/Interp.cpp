@@ -203,6 +203,7 @@ static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph
      << "      skipNext = true;\n"
      << "      resultSlot = fakeStack[prog + 6u + 3u * i];\n"
      << "      const uint rec2 = fakeStack[prog + 7u + 3u * i] / 4u;\n"
+     << "      guard.at = i + 1u;\n"
      << "      r = "
      << widenToFloat4(G.Return,
                       interpCall(G, Hoists, "rec2", static_cast<int>(Sup.Param), Value,
@@ -244,6 +245,7 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
   OS << "    " << (CG.Superinstructions.empty() ? "const " : "")
      << "uint resultSlot = fakeStack[prog + 3u + 3u * i];\n";
   OS << "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
+        "    guard.at = i;\n"
         "    float4 r;\n"
         "    switch (fnId) {\n";
   // Every function a node of the graph names, live or dead: a rewiring onto any node runs on

@@ -65,7 +65,8 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
     } else {
       Call = E.call(CG, NodeIndex);
     }
-    OS << "  const " << spelling(N.Return) << " s" << J << " = " << Call << ";\n";
+    OS << "  " << guardAtInstruction(J) << "\n"
+       << "  const " << spelling(N.Return) << " s" << J << " = " << Call << ";\n";
   }
   for (size_t O = 0; O < M.Outputs.size(); ++O) {
     const BaseType T = CG.Nodes[M.Outputs[O].Node].Return;

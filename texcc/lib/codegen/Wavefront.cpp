@@ -36,7 +36,8 @@ static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsi
      << Sig.File << "; record at byte " << N.RecordOffset << " */\n"
      << "__kernel void " << wavefrontKernelName(NodeIndex) << "(\n"
      << kernelParameterList() << ") {\n";
-  emitKernelPrologue(OS, " || !texcc_wf_uses[mat][" + std::to_string(NodeIndex) + "]");
+  emitKernelPrologue(OS, " || !texcc_wf_uses[mat][" + std::to_string(NodeIndex) + "]",
+                     "TEXCC_AT_NODE | " + std::to_string(NodeIndex) + "u");
   ArgEmitter E;
   E.Tgt = Target::OpenCL;
   E.ArgIndent = 10;

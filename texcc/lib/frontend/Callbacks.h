@@ -96,6 +96,34 @@ private:
   FileContext &FC;
 };
 
+/// Bounds every loop of user code with the work-item's loop budget (Safety.cpp): its
+/// condition ends with `&& texcc_loop_continues(texcc_ctx, __LINE__)` (texcc_device.h).
+class LoopBudget : public MatchFinder::MatchCallback {
+public:
+  explicit LoopBudget(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+
+private:
+  void reportUnbounded(clang::SourceLocation Loc);
+  FileContext &FC;
+};
+
+/// Refuses, at the user's line, a private array larger than MaxPrivateArrayBytes (the
+/// work-item's stack: PoCL's is a few MiB) and an unroll pragma (`#pragma unroll N`,
+/// `#pragma clang loop unroll_count(N)`) with N above MaxUnrollCount (the device build).
+class ResourceLimits : public MatchFinder::MatchCallback {
+public:
+  static constexpr uint64_t MaxPrivateArrayBytes = 16 * 1024;
+  static constexpr unsigned MaxUnrollCount = 1024;
+  explicit ResourceLimits(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+
+private:
+  FileContext &FC;
+};
+
 } // namespace texcc::frontend
 
 #endif

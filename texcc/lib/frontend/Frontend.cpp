@@ -125,12 +125,16 @@ void TexccConsumer::HandleTranslationUnit(ASTContext &Ctx) {
   ContextThreading Thread(FC);
   SignatureCollector Signatures(FC);
   Restrictions Restrict(FC);
+  LoopBudget Loops(FC);
+  ResourceLimits Limits(FC);
   MatchFinder Finder;
   Rename.registerMatchers(Finder);
   Lower.registerMatchers(Finder);
   Thread.registerMatchers(Finder);
   Signatures.registerMatchers(Finder);
   Restrict.registerMatchers(Finder);
+  Loops.registerMatchers(Finder);
+  Limits.registerMatchers(Finder);
   Finder.matchAST(Ctx);
   Restrict.finish();
   Signatures.finish(*Job.TextureNames, Job.EarlierTextures, Job.Textures, Job.Reachable);

@@ -10,6 +10,7 @@
 // texture kernels' device time per textured hit of each, over R rounds in one process
 // (timeOpenCL): the per-hit figure of bench/per_hit.py that the machine's load does not swamp.
 #include "texcc_abi.h"
+#include "texcc/OutOfMemory.h"
 #include "texcc/Support/File.h"
 
 #include <CL/opencl.hpp>
@@ -225,6 +226,7 @@ struct DeviceRun {
     Outputs = buffer(std::vector<float>(NumHits * Info.MaxOutputs * 4, 0.0f), CL_MEM_READ_WRITE);
     cl::Buffer Scratch =
         buffer(std::vector<cl_float4>(NumHits * Info.ScratchPerHit), CL_MEM_READ_WRITE);
+    cl::Buffer Faults = buffer(std::vector<cl_int>(TEXCC_FAULT_WORDS, 0), CL_MEM_READ_WRITE);
     auto kernel = [&](const std::string &Name) {
       try {
         return cl::Kernel(Prog, Name.c_str());
@@ -252,10 +254,12 @@ struct DeviceRun {
       K.setArg(6, Images);
       K.setArg(7, Outputs);
       K.setArg(8, Scratch);
+      if (K.getInfo<CL_KERNEL_NUM_ARGS>() > 9) // the fault record (docs/abi.md)
+        K.setArg(9, Faults);
       Kernels.push_back(K);
     }
     // A kernel does not retain its buffer arguments: the run owns them.
-    Buffers = {Hits, HitMaterial, FakeStack, Settings, Texels, Images, Scratch};
+    Buffers = {Hits, HitMaterial, FakeStack, Settings, Texels, Images, Scratch, Faults};
   }
 
   /// Enqueues every texture kernel once over all hits; their events go to Events.
@@ -440,16 +444,24 @@ Options parseArgs(int Argc, char **Argv) {
 } // namespace
 
 int main(int Argc, char **Argv) {
+  // Out of memory: one line naming the step, exit status 1 (texcc/OutOfMemory.h).
+  texcc::installOutOfMemoryHandler("texcc-eval");
   Options Opts = parseArgs(Argc, Argv);
   try {
     if (Opts.TimeReps) {
       timeOpenCL(Opts);
       return 0;
     }
-    LayoutInfo Info = readLayout(Opts.OutDir);
-    Inputs In = makeInputs(Info, Opts);
-    std::vector<float> Out = Opts.Host ? runHost(Info, In, Opts) : runOpenCL(Info, In, Opts);
+    LayoutInfo Info =
+        texcc::whileAllocating("reading layout.json", [&] { return readLayout(Opts.OutDir); });
+    Inputs In = texcc::whileAllocating("making the hits", [&] { return makeInputs(Info, Opts); });
+    std::vector<float> Out = texcc::whileAllocating("evaluating the textures", [&] {
+      return Opts.Host ? runHost(Info, In, Opts) : runOpenCL(Info, In, Opts);
+    });
     printOutputs(Info, Opts, Out);
+  } catch (const std::bad_alloc &E) {
+    texcc::reportOutOfMemory("texcc-eval", E);
+    return 1;
   } catch (const cl::Error &E) {
     die(std::string("OpenCL: ") + E.what() + " (" + std::to_string(E.err()) + ")");
   } catch (const std::exception &E) {

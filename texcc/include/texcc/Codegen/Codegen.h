@@ -41,6 +41,9 @@ struct CodegenOptions {
   /// values (interpHoistingFunctions), reading them from the record, and has the kernel
   /// texcc_uniforms that computes them (docs/modes.md). Off for shape mode's fallback.
   bool InterpHoists = false;
+  /// --loop-budget: the loop iterations one work-item may run (docs/reliability.md "User
+  /// code"); 0: the default of texcc_device.h (TEXCC_LOOP_BUDGET), and no #define is written.
+  uint32_t LoopBudget = 0;
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).
