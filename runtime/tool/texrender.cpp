@@ -3,6 +3,7 @@
 //             [--set NODE.ARG=VALUE]... [--edit-script FILE] [--device N]
 //             -o image.png|image.exr [--stats stats.json]
 // Exit 0 on success, 1 on any error, with a one-line reason first.
+#include "texcc/OutOfMemory.h"
 #include "texcc/StackGuard.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
@@ -560,6 +561,8 @@ static int runAndReport(int Argc, char **Argv) {
   } catch (const cl::Error &E) {
     std::fprintf(stderr, "texrender: error: OpenCL call %s failed: %s\n", E.what(),
                  clErrorName(E.err()).c_str());
+  } catch (const std::bad_alloc &E) {
+    texcc::reportOutOfMemory("texrender", E); // "out of memory while ..." (texcc/OutOfMemory.h)
   } catch (const std::exception &E) {
     std::fprintf(stderr, "texrender: error: %s\n", E.what());
   }

@@ -1,6 +1,7 @@
 // compileGraph(): validation, then the passes in order, then the encoding.
 
 #include "texcc/Graph/Passes.h"
+#include "texcc/OutOfMemory.h"
 
 namespace texcc::graph {
 
@@ -24,19 +25,27 @@ std::set<std::string> CompiledGraph::liveFunctions() const {
 
 std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
                                           const CompileOptions &Opts, DiagnosticSink &Diags) {
-  std::optional<CompiledGraph> CG = resolveGraph(G, Sigs, Opts, Diags);
+  // Each step names what it allocates, for "out of memory while ..." (texcc/OutOfMemory.h).
+  std::optional<CompiledGraph> CG = whileAllocating(
+      "building the node and material tables", [&] { return resolveGraph(G, Sigs, Opts, Diags); });
   if (!CG)
     return std::nullopt;
-  removeUnreachableNodes(*CG, Opts.Log);
-  mergeIdenticalNodes(*CG, Opts.Log);
-  assignFunctionIds(*CG, Sigs, Opts, Opts.Log);
-  orderPrograms(*CG, Opts.Log);
-  allocateStackSlots(*CG, Opts.StackLimit, Opts.Log, Opts.LocalStackLimit);
-  computeWavefrontOrder(*CG, Opts.Log);
-  layoutArguments(*CG, Opts.Log);
-  selectSuperinstructions(*CG, Opts, Opts.Log);
-  selectQuickened(*CG, Opts, Opts.Log);
-  encodeArgsBin(*CG);
+  whileAllocating("optimizing the node graph", [&] {
+    removeUnreachableNodes(*CG, Opts.Log);
+    mergeIdenticalNodes(*CG, Opts.Log);
+    assignFunctionIds(*CG, Sigs, Opts, Opts.Log);
+  });
+  whileAllocating("encoding the material programs", [&] {
+    orderPrograms(*CG, Opts.Log);
+    allocateStackSlots(*CG, Opts.StackLimit, Opts.Log, Opts.LocalStackLimit);
+    computeWavefrontOrder(*CG, Opts.Log);
+  });
+  whileAllocating("laying out the arguments", [&] { layoutArguments(*CG, Opts.Log); });
+  whileAllocating("selecting superinstructions", [&] {
+    selectSuperinstructions(*CG, Opts, Opts.Log);
+    selectQuickened(*CG, Opts, Opts.Log);
+  });
+  whileAllocating("encoding args.bin", [&] { encodeArgsBin(*CG); });
   return CG;
 }
 
