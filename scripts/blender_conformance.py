@@ -131,16 +131,19 @@ def voronoi_variant(name, dims, feature, metric="EUCLIDEAN", normalize=False, sc
             "randomness": randomness, "feature": VORONOI_FEATURES[feature],
             "metric": VORONOI_METRICS[metric], "normalize": 1 if normalize else 0}
     fn = "blVoronoi%dD" % dims
+    feeds = {"Vector": "P"}
+    if dims == 4:  # W fed from the position's y
+        feeds["W"] = args["w"] = "P.y"
     if feature == "N_SPHERE_RADIUS":
         outputs = [("Radius", fn + "Radius", 1)]
     elif feature == "DISTANCE_TO_EDGE":
         outputs = [("Distance", fn + "Distance", 1)]
     else:
         outputs = [("Distance", fn + "Distance", 1), ("Color", fn + "Color", 3),
-                   ("Position", fn + "Position", 3)]
+                   ("Position", fn + "Position", 3)] + ([("W", fn + "W", 1)] if dims == 4 else [])
     variant(name, "ShaderNodeTexVoronoi",
             {"voronoi_dimensions": "%dD" % dims, "feature": feature, "distance": metric,
-             "normalize": normalize}, inputs, {"Vector": "P"}, "voronoi.cl", outputs, args)
+             "normalize": normalize}, inputs, feeds, "voronoi.cl", outputs, args)
 
 
 voronoi_variant("voronoi3d-f1", 3, "F1")
@@ -159,6 +162,11 @@ voronoi_variant("voronoi2d-f2-manhattan", 2, "F2", "MANHATTAN", scale=3.0)
 voronoi_variant("voronoi2d-smooth-f1", 2, "SMOOTH_F1", smoothness=0.8, scale=3.0)
 voronoi_variant("voronoi2d-edge", 2, "DISTANCE_TO_EDGE", scale=3.0)
 voronoi_variant("voronoi2d-nsphere", 2, "N_SPHERE_RADIUS", scale=3.0)
+voronoi_variant("voronoi4d-f1", 4, "F1", scale=1.5)
+voronoi_variant("voronoi4d-f2-chebychev", 4, "F2", "CHEBYCHEV", scale=1.5, normalize=True)
+voronoi_variant("voronoi4d-smooth-f1", 4, "SMOOTH_F1", scale=1.5, smoothness=0.5)
+voronoi_variant("voronoi4d-edge", 4, "DISTANCE_TO_EDGE", scale=1.5)
+voronoi_variant("voronoi4d-nsphere", 4, "N_SPHERE_RADIUS", scale=1.5)
 
 # Cycles' NodeMathType order: textures/blender/math.cl's operation numbers.
 MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "SINE", "COSINE", "TANGENT", "ARCSINE",

@@ -23,7 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # Nodes the issue lists that textures/blender/ does not implement yet, and why.
 NOT_YET = [
-    ("Voronoi Texture 1D and 4D", "not implemented (time); 2D and 3D are"),
+    ("Voronoi Texture 1D", "not implemented (time); 2D, 3D and 4D are"),
     ("Texture Coordinate (Generated, Object, UV, Normal)",
      "not implemented: Generated needs the object's bounding box and Object its inverse "
      "transform, which texrender does not pass to textures; UV and Normal are the attributes "

@@ -99,3 +99,21 @@ float4 blHashInt3(int x, int y, int z) {
   c += a * b;
   return (float4)(blPcgToUnit(a), blPcgToUnit(b), blPcgToUnit(c), 0.0f);
 }
+
+float4 blHashInt4(int x, int y, int z, int w) {
+  uint a = (uint)x * 1664525U + 1013904223U, b = (uint)y * 1664525U + 1013904223U;
+  uint c = (uint)z * 1664525U + 1013904223U, d = (uint)w * 1664525U + 1013904223U;
+  a += b * d;
+  b += c * a;
+  c += a * b;
+  d += b * c;
+  a = blXorShift16(a);
+  b = blXorShift16(b);
+  c = blXorShift16(c);
+  d = blXorShift16(d);
+  a += b * d;
+  b += c * a;
+  c += a * b;
+  d += b * c;
+  return (float4)(blPcgToUnit(a), blPcgToUnit(b), blPcgToUnit(c), blPcgToUnit(d));
+}

@@ -17,6 +17,8 @@
  *   float3 blVoronoi2DPosition(same parameters)             F1, F2, Smooth F1 (z = 0)
  *   float  blVoronoi2DRadius  (same parameters)             N-Sphere Radius
  *   blVoronoi3DDistance, blVoronoi3DColor, blVoronoi3DPosition, blVoronoi3DRadius: the same in 3D
+ *   blVoronoi4DDistance, ...Color, ...Position, ...W, ...Radius(float3 vector, float w, then as
+ *                              above): 4D, W its fourth coordinate and output
  *
  * An output the feature does not produce is 0, as in Blender (Distance of N-Sphere Radius, ...).
  *
@@ -39,40 +41,50 @@
 
 #include "hash.h"
 
+float blDot(float4 a, float4 b, int dims) {
+  if (dims == 2)
+    return a.x * b.x + a.y * b.y;
+  if (dims == 3)
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+  return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+}
+
+float blEuclid(float4 d, int dims) { return sqrt(blDot(d, d, dims)); }
+
 /* The cell's feature-point offset in [0, 1]^dims and its colour: PCG hashes of the integer cell
  * (Cycles' hash_int2_to_float2 / hash_int3_to_float3, colour hash_int2_to_float3 /
  * hash_int3_to_float3). c holds the cell's integer coordinates as floats. */
 float4 blVoronoiCellOffset(float4 c, int dims) {
   if (dims == 2)
     return blHashInt2((int)c.x, (int)c.y);
+  if (dims == 4)
+    return blHashInt4((int)c.x, (int)c.y, (int)c.z, (int)c.w);
   return blHashInt3((int)c.x, (int)c.y, (int)c.z);
 }
 
 float3 blVoronoiCellColor(float4 c, int dims) {
+  if (dims == 4)
+    return blHashInt4((int)c.x, (int)c.y, (int)c.z, (int)c.w).xyz;
   return blHashInt3((int)c.x, (int)c.y, dims == 2 ? 0 : (int)c.z).xyz;
 }
 
+/* The metric over the first dims components. */
 float blVoronoiMetric(float4 a, float4 b, int dims, int metric, float exponent) {
-  float dx = fabs(a.x - b.x), dy = fabs(a.y - b.y), dz = fabs(a.z - b.z);
+  float dx = fabs(a.x - b.x), dy = fabs(a.y - b.y), dz = fabs(a.z - b.z), dw = fabs(a.w - b.w);
   if (metric == 1)
-    return dims == 2 ? dx + dy : dx + dy + dz;
+    return dims == 2 ? dx + dy : (dims == 3 ? dx + dy + dz : dx + dy + dz + dw);
   if (metric == 2)
-    return dims == 2 ? fmax(dx, dy) : fmax(fmax(dx, dy), dz);
+    return dims == 2 ? fmax(dx, dy)
+                     : (dims == 3 ? fmax(fmax(dx, dy), dz) : fmax(fmax(fmax(dx, dy), dz), dw));
   if (metric == 3) {
     float s = pow(dx, exponent) + pow(dy, exponent);
-    if (dims == 3)
+    if (dims >= 3)
       s += pow(dz, exponent);
+    if (dims == 4)
+      s += pow(dw, exponent);
     return pow(s, 1.0f / exponent);
   }
-  return dims == 2 ? sqrt(dx * dx + dy * dy) : sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-float blEuclid(float4 d, int dims) {
-  return dims == 2 ? sqrt(d.x * d.x + d.y * d.y) : sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-}
-
-float blDot(float4 a, float4 b, int dims) {
-  return dims == 2 ? a.x * b.x + a.y * b.y : a.x * b.x + a.y * b.y + a.z * b.z;
+  return sqrt(blDot(a - b, a - b, dims));
 }
 
 float blSmoothstep01(float x) {
@@ -90,43 +102,46 @@ float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exp
   float4 cell = floor(coord);
   float4 rel = coord - cell;
   int reach = feature == 2 ? 2 : 1;
-  int kreach = dims == 2 ? 0 : reach;
+  int kreach = dims == 2 ? 0 : reach, ureach = dims == 4 ? reach : 0;
   float d1 = 3.402823466e+38f, d2 = 3.402823466e+38f;
   float4 o1 = (float4)(0.0f), o2 = (float4)(0.0f), p1 = (float4)(0.0f), p2 = (float4)(0.0f);
   float sd = 0.0f, h = -1.0f;
   float3 sc = (float3)(0.0f);
   float4 sp = (float4)(0.0f);
-  for (int k = -kreach; k <= kreach; k++)
-    for (int j = -reach; j <= reach; j++)
-      for (int i = -reach; i <= reach; i++) {
-        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
-        float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
-        float d = blVoronoiMetric(point, rel, dims, metric, exponent);
-        if (feature == 2) {
-          h = h == -1.0f ? 1.0f : blSmoothstep01(0.5f + 0.5f * (sd - d) / smoothness);
-          float correction = smoothness * h * (1.0f - h);
-          sd = sd + h * (d - sd) - correction;
-          correction /= 1.0f + 3.0f * smoothness;
-          float3 cc = blVoronoiCellColor(cell + off, dims);
-          sc = sc + h * (cc - sc) - correction;
-          sp = sp + h * (point - sp) - correction;
-        } else if (d < d1) {
-          d2 = d1;
-          o2 = o1;
-          p2 = p1;
-          d1 = d;
-          o1 = off;
-          p1 = point;
-        } else if (d < d2) {
-          d2 = d;
-          o2 = off;
-          p2 = point;
+  for (int u = -ureach; u <= ureach; u++)
+    for (int k = -kreach; k <= kreach; k++)
+      for (int j = -reach; j <= reach; j++)
+        for (int i = -reach; i <= reach; i++) {
+          float4 off = (float4)((float)i, (float)j, (float)k, (float)u);
+          float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
+          float d = blVoronoiMetric(point, rel, dims, metric, exponent);
+          if (feature == 2) {
+            h = h == -1.0f ? 1.0f : blSmoothstep01(0.5f + 0.5f * (sd - d) / smoothness);
+            float correction = smoothness * h * (1.0f - h);
+            sd = sd + h * (d - sd) - correction;
+            correction /= 1.0f + 3.0f * smoothness;
+            float3 cc = blVoronoiCellColor(cell + off, dims);
+            sc = sc + h * (cc - sc) - correction;
+            sp = sp + h * (point - sp) - correction;
+          } else if (d < d1) {
+            d2 = d1;
+            o2 = o1;
+            p2 = p1;
+            d1 = d;
+            o1 = off;
+            p1 = point;
+          } else if (d < d2) {
+            d2 = d;
+            o2 = off;
+            p2 = point;
+          }
         }
-      }
   if (feature == 2) {
-    /* The correction above is subtracted from every component; 2D has no z. */
+    /* The correction above is subtracted from every component; 2D has no z, 2D and 3D no w. */
     if (dims == 2)
       sp.z = 0.0f;
+    if (dims <= 3)
+      sp.w = 0.0f;
     *color = sc;
     *pos = cell + sp;
     return sd;
@@ -146,32 +161,34 @@ float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exp
 float blVoronoiEdgeOctave(float4 coord, int dims, float randomness) {
   float4 cell = floor(coord);
   float4 rel = coord - cell;
-  int kreach = dims == 2 ? 0 : 1;
+  int kreach = dims == 2 ? 0 : 1, ureach = dims == 4 ? 1 : 0;
   float4 closest = (float4)(0.0f);
   float best = 3.402823466e+38f;
-  for (int k = -kreach; k <= kreach; k++)
-    for (int j = -1; j <= 1; j++)
-      for (int i = -1; i <= 1; i++) {
-        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
-        float4 v = off + blVoronoiCellOffset(cell + off, dims) * randomness - rel;
-        float d = blDot(v, v, dims);
-        if (d < best) {
-          best = d;
-          closest = v;
+  for (int u = -ureach; u <= ureach; u++)
+    for (int k = -kreach; k <= kreach; k++)
+      for (int j = -1; j <= 1; j++)
+        for (int i = -1; i <= 1; i++) {
+          float4 off = (float4)((float)i, (float)j, (float)k, (float)u);
+          float4 v = off + blVoronoiCellOffset(cell + off, dims) * randomness - rel;
+          float d = blDot(v, v, dims);
+          if (d < best) {
+            best = d;
+            closest = v;
+          }
         }
-      }
   best = 3.402823466e+38f;
-  for (int k = -kreach; k <= kreach; k++)
-    for (int j = -1; j <= 1; j++)
-      for (int i = -1; i <= 1; i++) {
-        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
-        float4 v = off + blVoronoiCellOffset(cell + off, dims) * randomness - rel;
-        float4 perp = v - closest;
-        if (blDot(perp, perp, dims) > 0.0001f) {
-          float4 n = perp / blEuclid(perp, dims);
-          best = fmin(best, blDot((closest + v) / 2.0f, n, dims));
+  for (int u = -ureach; u <= ureach; u++)
+    for (int k = -kreach; k <= kreach; k++)
+      for (int j = -1; j <= 1; j++)
+        for (int i = -1; i <= 1; i++) {
+          float4 off = (float4)((float)i, (float)j, (float)k, (float)u);
+          float4 v = off + blVoronoiCellOffset(cell + off, dims) * randomness - rel;
+          float4 perp = v - closest;
+          if (blDot(perp, perp, dims) > 0.0001f) {
+            float4 n = perp / blEuclid(perp, dims);
+            best = fmin(best, blDot((closest + v) / 2.0f, n, dims));
+          }
         }
-      }
   return best;
 }
 
@@ -179,48 +196,51 @@ float blVoronoiEdgeOctave(float4 coord, int dims, float randomness) {
 float blVoronoiRadius(float4 coord, int dims, float randomness) {
   float4 cell = floor(coord);
   float4 rel = coord - cell;
-  int kreach = dims == 2 ? 0 : 1;
+  int kreach = dims == 2 ? 0 : 1, ureach = dims == 4 ? 1 : 0;
   float4 closest = (float4)(0.0f), closestOff = (float4)(0.0f);
   float best = 3.402823466e+38f;
-  for (int k = -kreach; k <= kreach; k++)
-    for (int j = -1; j <= 1; j++)
-      for (int i = -1; i <= 1; i++) {
-        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f);
-        float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
-        float d = blEuclid(point - rel, dims);
-        if (d < best) {
-          best = d;
-          closest = point;
-          closestOff = off;
+  for (int u = -ureach; u <= ureach; u++)
+    for (int k = -kreach; k <= kreach; k++)
+      for (int j = -1; j <= 1; j++)
+        for (int i = -1; i <= 1; i++) {
+          float4 off = (float4)((float)i, (float)j, (float)k, (float)u);
+          float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
+          float d = blEuclid(point - rel, dims);
+          if (d < best) {
+            best = d;
+            closest = point;
+            closestOff = off;
+          }
         }
-      }
   best = 3.402823466e+38f;
   float4 neighbour = (float4)(0.0f);
-  for (int k = -kreach; k <= kreach; k++)
-    for (int j = -1; j <= 1; j++)
-      for (int i = -1; i <= 1; i++) {
-        if (i == 0 && j == 0 && k == 0)
-          continue;
-        float4 off = (float4)((float)i, (float)j, (float)k, 0.0f) + closestOff;
-        float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
-        float d = blEuclid(closest - point, dims);
-        if (d < best) {
-          best = d;
-          neighbour = point;
+  for (int u = -ureach; u <= ureach; u++)
+    for (int k = -kreach; k <= kreach; k++)
+      for (int j = -1; j <= 1; j++)
+        for (int i = -1; i <= 1; i++) {
+          if (i == 0 && j == 0 && k == 0 && u == 0)
+            continue;
+          float4 off = (float4)((float)i, (float)j, (float)k, (float)u) + closestOff;
+          float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
+          float d = blEuclid(closest - point, dims);
+          if (d < best) {
+            best = d;
+            neighbour = point;
+          }
         }
-      }
   return blEuclid(neighbour - closest, dims) / 2.0f;
 }
 
-/* The node: output 0 Distance, 1 Color, 2 Position, 3 Radius, as a float4 (scalar in .x). */
-float4 blVoronoiTexture(float3 vector, int dims, float scale, float detail, float roughness,
-                        float lacunarity, float smoothness, float exponent, float randomness,
-                        int feature, int metric, int normalize, int output) {
+/* The node: output 0 Distance, 1 Color, 2 Position (w: the W output), 3 Radius, as a float4
+ * (scalar in .x). w is the W input (4D only). */
+float4 blVoronoiTexture(float3 vector, float w, int dims, float scale, float detail,
+                        float roughness, float lacunarity, float smoothness, float exponent,
+                        float randomness, int feature, int metric, int normalize, int output) {
   detail = clamp(detail, 0.0f, 15.0f);
   roughness = clamp(roughness, 0.0f, 1.0f);
   randomness = clamp(randomness, 0.0f, 1.0f);
   smoothness = clamp(smoothness / 2.0f, 0.0f, 0.5f);
-  float4 coord = (float4)(vector * scale, 0.0f);
+  float4 coord = (float4)(vector * scale, dims == 4 ? w * scale : 0.0f);
   if (dims == 2)
     coord.z = 0.0f;
   if (feature == 4)
@@ -247,7 +267,8 @@ float4 blVoronoiTexture(float3 vector, int dims, float scale, float detail, floa
       } else {
         float rmd = detail - floor(detail);
         if (rmd != 0.0f) {
-          float lerpAmplitude = maxAmplitude + amplitude * (maxDistance / octaveScale - maxAmplitude);
+          float lerpAmplitude =
+              maxAmplitude + amplitude * (maxDistance / octaveScale - maxAmplitude);
           maxAmplitude = maxAmplitude + rmd * (lerpAmplitude - maxAmplitude);
           float lerpDistance = distance + amplitude * (fmin(distance, d / octaveScale) - distance);
           distance = distance + rmd * (fmin(distance, lerpDistance) - distance);
@@ -261,7 +282,7 @@ float4 blVoronoiTexture(float3 vector, int dims, float scale, float detail, floa
   if (feature == 2 && smoothness == 0.0f)
     feature = 0;
   float m = 0.5f + 0.5f * randomness;
-  float maxDistance = blVoronoiMetric((float4)(0.0f), (float4)(m, m, m, 0.0f), dims, metric,
+  float maxDistance = blVoronoiMetric((float4)(0.0f), (float4)(m), dims, metric,
                                       exponent) * (feature == 1 ? 2.0f : 1.0f);
   float maxAmplitude = 0.0f, distance = 0.0f;
   float3 color = (float3)(0.0f);
@@ -310,58 +331,93 @@ float4 blVoronoiTexture(float3 vector, int dims, float scale, float detail, floa
   return (float4)(0.0f);
 }
 
-float blVoronoi2DDistance(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                          float smoothness, float exponent, float randomness, int feature, int metric,
-                          int normalize) {
-  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 0).x;
+float blVoronoi2DDistance(float3 vector, float scale, float detail, float roughness,
+                          float lacunarity, float smoothness, float exponent, float randomness,
+                          int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 2, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 0).x;
 }
 
-float3 blVoronoi2DColor(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                        float smoothness, float exponent, float randomness, int feature, int metric,
-                        int normalize) {
-  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 1).xyz;
+float3 blVoronoi2DColor(float3 vector, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 2, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 1).xyz;
 }
 
-float3 blVoronoi2DPosition(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                           float smoothness, float exponent, float randomness, int feature, int metric,
-                           int normalize) {
-  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 2).xyz;
+float3 blVoronoi2DPosition(float3 vector, float scale, float detail, float roughness,
+                           float lacunarity, float smoothness, float exponent, float randomness,
+                           int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 2, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 2).xyz;
 }
 
-float blVoronoi2DRadius(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                        float smoothness, float exponent, float randomness, int feature, int metric,
-                        int normalize) {
-  return blVoronoiTexture(vector, 2, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 3).x;
+float blVoronoi2DRadius(float3 vector, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 2, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 3).x;
 }
 
-float blVoronoi3DDistance(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                          float smoothness, float exponent, float randomness, int feature, int metric,
-                          int normalize) {
-  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 0).x;
+float blVoronoi3DDistance(float3 vector, float scale, float detail, float roughness,
+                          float lacunarity, float smoothness, float exponent, float randomness,
+                          int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 3, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 0).x;
 }
 
-float3 blVoronoi3DColor(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                        float smoothness, float exponent, float randomness, int feature, int metric,
-                        int normalize) {
-  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 1).xyz;
+float3 blVoronoi3DColor(float3 vector, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 3, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 1).xyz;
 }
 
-float3 blVoronoi3DPosition(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                           float smoothness, float exponent, float randomness, int feature, int metric,
-                           int normalize) {
-  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 2).xyz;
+float3 blVoronoi3DPosition(float3 vector, float scale, float detail, float roughness,
+                           float lacunarity, float smoothness, float exponent, float randomness,
+                           int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 3, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 2).xyz;
 }
 
-float blVoronoi3DRadius(float3 vector, float scale, float detail, float roughness, float lacunarity,
-                        float smoothness, float exponent, float randomness, int feature, int metric,
-                        int normalize) {
-  return blVoronoiTexture(vector, 3, scale, detail, roughness, lacunarity, smoothness, exponent,
-                          randomness, feature, metric, normalize, 3).x;
+float blVoronoi3DRadius(float3 vector, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, 0.0f, 3, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 3).x;
+}
+
+float blVoronoi4DDistance(float3 vector, float w, float scale, float detail, float roughness,
+                          float lacunarity, float smoothness, float exponent, float randomness,
+                          int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, w, 4, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 0).x;
+}
+
+float3 blVoronoi4DColor(float3 vector, float w, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, w, 4, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 1).xyz;
+}
+
+float3 blVoronoi4DPosition(float3 vector, float w, float scale, float detail, float roughness,
+                           float lacunarity, float smoothness, float exponent, float randomness,
+                           int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, w, 4, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 2).xyz;
+}
+
+float blVoronoi4DW(float3 vector, float w, float scale, float detail, float roughness,
+                   float lacunarity, float smoothness, float exponent, float randomness,
+                   int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, w, 4, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 2).w;
+}
+
+float blVoronoi4DRadius(float3 vector, float w, float scale, float detail, float roughness,
+                        float lacunarity, float smoothness, float exponent, float randomness,
+                        int feature, int metric, int normalize) {
+  return blVoronoiTexture(vector, w, 4, scale, detail, roughness, lacunarity, smoothness,
+                          exponent, randomness, feature, metric, normalize, 3).x;
 }
