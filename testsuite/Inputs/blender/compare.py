@@ -206,7 +206,6 @@ def main():
                 if worst is None or err > worst[0]:
                     worst = (err, i, got, want)
                 max_smooth = max(max_smooth, err)
-        smooth = len(points) - jumps
         mean = sum(errors) / len(errors)
         within = sum(1 for e in errors if e <= NEAR_ZERO) / len(errors)
         ok = max_smooth <= args.tol and unmatched == 0
