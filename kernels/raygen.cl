@@ -1,20 +1,24 @@
-/* raygen.cl: one camera ray per path. Path i of a pass samples pixel i / sppPerPass with the
- * sample index passStart + i % sppPerPass; the pixel position is uniform in the pixel (box
- * filter, as Mitsuba's `box` rfilter). */
+/* raygen.cl: one camera ray per path. Path i of a pass samples pixel i / sppPerPass of the
+ * region (regionX, regionY, regionWidth wide, inside the width x height film) with the sample
+ * index passStart + i % sppPerPass; the pixel position is uniform in the pixel (box filter, as
+ * Mitsuba's `box` rfilter). The random stream and RtPath.pixel use the full-film pixel index, so
+ * that a region renders exactly the pixels of a whole render (texrender --region). */
 #include "rt_sampling.h"
 #include "rt_types.h"
 
 __kernel void raygen(__global RtPath *paths, __global int *active, __global const RtCamera *camera,
                      int width, int height, int sppPerPass, int passStart, uint seed,
-                     int numPaths) {
+                     int numPaths, int regionX, int regionY, int regionWidth) {
   int i = get_global_id(0);
   if (i >= numPaths)
     return;
-  int pixel = i / sppPerPass;
+  int inRegion = i / sppPerPass;
+  int x = regionX + inRegion % regionWidth, y = regionY + inRegion / regionWidth;
+  int pixel = y * width + x;
   int sample = passStart + i % sppPerPass;
   uint rng = rt_seed((uint)pixel, (uint)sample, seed);
-  float px = (float)(pixel % width) + rt_rand(&rng);
-  float py = (float)(pixel / width) + rt_rand(&rng);
+  float px = (float)x + rt_rand(&rng);
+  float py = (float)y + rt_rand(&rng);
   float sx = 2.0f * px / (float)width - 1.0f;
   float sy = 1.0f - 2.0f * py / (float)height;
   RtCamera cam = *camera;

@@ -347,7 +347,11 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
   Cl->finish();
   Cl->resetTimings();
   const int W = Settings.Width, H = Settings.Height, Spp = Settings.Spp;
-  const size_t NumPixels = size_t(W) * H;
+  // --region: the pixels rendered, in full-film coordinates (raygen.cl); the image is its size.
+  const bool Whole = Settings.RegionWidth == 0;
+  const int RX = Whole ? 0 : Settings.RegionX, RY = Whole ? 0 : Settings.RegionY;
+  const int RW = Whole ? W : Settings.RegionWidth, RH = Whole ? H : Settings.RegionHeight;
+  const size_t NumPixels = size_t(RW) * RH;
   int SppPerPass = int(std::clamp<size_t>(Opts.MaxPathsPerPass / NumPixels, 1, size_t(Spp)));
   size_t Need = NumPixels * SppPerPass;
   try {
@@ -355,6 +359,10 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       allocateWorkBuffers(std::max(Need, Capacity));
     RtCamera Cam = makeCamera(SceneDesc.Cam, W, H);
     Cl->write(B["camera"], &Cam, sizeof Cam);
+    TexccSettings Set{};
+    Set.cameraPos = {{SceneDesc.Cam.Position[0], SceneDesc.Cam.Position[1], SceneDesc.Cam.Position[2], 0}};
+    Set.time = Settings.Time, Set.frame = Settings.Frame;
+    Cl->write(B["settings"], &Set, sizeof Set);
     RtShadeParams Prm{};
     Prm.maxDepth = Settings.MaxDepth;
     Prm.rrDepth = 5;
@@ -383,6 +391,7 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       RG.setArg(0, B["paths"]), RG.setArg(1, B["activeA"]), RG.setArg(2, B["camera"]);
       RG.setArg(3, cl_int(W)), RG.setArg(4, cl_int(H)), RG.setArg(5, cl_int(Now));
       RG.setArg(6, cl_int(Done)), RG.setArg(7, cl_uint(Settings.Seed)), RG.setArg(8, cl_int(N));
+      RG.setArg(9, cl_int(RX)), RG.setArg(10, cl_int(RY)), RG.setArg(11, cl_int(RW));
       Cl->launch(RG, N, "raygen");
       Stats.Bounces += traceBounces(N, Stats, false);
       cl::Kernel &AC = K["accumulate"];
@@ -470,6 +479,7 @@ std::vector<TexccHitAttrs> Renderer::primaryHitAttributes(uint32_t Mask, FrameSt
   RG.setArg(0, B["paths"]), RG.setArg(1, B["activeA"]), RG.setArg(2, B["camera"]);
   RG.setArg(3, cl_int(Settings.Width)), RG.setArg(4, cl_int(Settings.Height)), RG.setArg(5, cl_int(1));
   RG.setArg(6, cl_int(0)), RG.setArg(7, cl_uint(Settings.Seed)), RG.setArg(8, cl_int(N));
+  RG.setArg(9, cl_int(0)), RG.setArg(10, cl_int(0)), RG.setArg(11, cl_int(Settings.Width));
   Cl->launch(RG, N, "raygen");
   traceBounces(int(N), Stats, true);
   Cl->finish();

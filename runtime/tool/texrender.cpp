@@ -11,6 +11,7 @@
 #include "texrender/Renderer.h"
 #include "texrender/Stats.h"
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -43,6 +44,11 @@ const char *Usage =
     "  --trace=opencl|embree|auto  the trace backend (closest hit, shadow, AO rays); auto\n"
     "                       (default): embree on a CPU device, opencl otherwise\n"
     "  --seed N             random seed\n"
+    "  --region X,Y,W,H     render only this W x H part of the film (--size), from pixel\n"
+    "                       (X, Y), row 0 at the top; the image written is W x H and equals\n"
+    "                       that part of a whole render bit for bit (scripts/farm.py tiles)\n"
+    "  --frame N            readSetting(\"Frame\") = N and readSetting(\"Time\") = N / fps\n"
+    "  --fps F              frames per second of --frame's Time (default 24)\n"
     "  --set NODE.ARG=VALUE live edit before rendering (repeatable)\n"
     "  --edit-script FILE   render, then per line apply an edit (set NODE.ARG=VALUE |\n"
     "                       rewire NODE.ARG=SOURCE | wait) and render again; frame k is also\n"
@@ -72,6 +78,9 @@ struct Options {
   std::string Scene, Textures, Output, Stats, Variance, EditScript, KernelDir, CacheDir = defaultCacheDir();
   std::optional<int> Spp, Width, Height, MaxDepth, AoSamples, Seed;
   std::optional<float> AoDistance;
+  std::optional<std::array<int, 4>> Region; // --region X,Y,W,H
+  int Frame = 0;
+  float Fps = 24;
   double TimeLimit = 0; // --time-limit seconds; 0: none
   std::vector<std::string> Sets;
   int Device = 0;
@@ -100,6 +109,25 @@ float toFloat(const std::string &Opt, const std::string &V) {
   } catch (...) {
   }
   throw Error(Opt + ": expected a number, got '" + V + "'");
+}
+
+/// --region X,Y,W,H: four integers, X and Y at least 0, W and H at least 1 (the film's size is
+/// checked once the scene is read).
+std::array<int, 4> parseRegion(const std::string &S) {
+  std::array<int, 4> R{};
+  std::istringstream In(S);
+  std::string Part;
+  int K = 0;
+  for (; std::getline(In, Part, ','); ++K) {
+    if (K == 4)
+      break;
+    R[K] = toInt("--region", Part);
+  }
+  if (K != 4 || !In.eof() || S.empty() || S.back() == ',')
+    throw Error("--region: expected X,Y,W,H, got '" + S + "'");
+  if (R[0] < 0 || R[1] < 0 || R[2] < 1 || R[3] < 1)
+    throw Error("--region " + S + ": X and Y must be at least 0, W and H at least 1");
+  return R;
 }
 
 /// Every output's folder is checked before the render: a run that fails at its end must not
@@ -168,6 +196,14 @@ Options parseArgs(int Argc, char **Argv) {
       O.AoDistance = toFloat(A, Next());
     } else if (A == "--seed") {
       O.Seed = toInt(A, Next());
+    } else if (A == "--region") {
+      O.Region = parseRegion(Next());
+    } else if (A == "--frame") {
+      O.Frame = toInt(A, Next());
+    } else if (A == "--fps") {
+      O.Fps = toFloat(A, Next());
+      if (!(O.Fps > 0))
+        throw Error("--fps: expected a positive number");
     } else if (A == "--set") {
       O.Sets.push_back(Next());
     } else if (A == "--edit-script") {
@@ -449,7 +485,9 @@ bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
       continue;
     }
     printLatency(Frames.size() - 1, Frames.back());
-    writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
+    const RenderSettings &G = S.Render;
+    writeImage(O.Output, G.RegionWidth ? G.RegionWidth : G.Width,
+               G.RegionWidth ? G.RegionHeight : G.Height, Image);
   }
   return true;
 }
@@ -476,6 +514,19 @@ int run(int Argc, char **Argv) try {
   if (O.AoSamples) S.Render.AoSamples = *O.AoSamples;
   if (O.AoDistance) S.Render.AoDistance = *O.AoDistance;
   if (O.Seed) S.Render.Seed = unsigned(*O.Seed);
+  S.Render.Frame = O.Frame;
+  S.Render.Time = float(double(O.Frame) / O.Fps);
+  // The size of every image written: the region's, or the film's.
+  int OutW = S.Render.Width, OutH = S.Render.Height;
+  if (O.Region) {
+    const std::array<int, 4> &G = *O.Region;
+    if (int64_t(G[0]) + G[2] > S.Render.Width || int64_t(G[1]) + G[3] > S.Render.Height)
+      throw Error("--region " + std::to_string(G[0]) + "," + std::to_string(G[1]) + "," +
+                  std::to_string(G[2]) + "," + std::to_string(G[3]) + ": outside the " +
+                  std::to_string(S.Render.Width) + "x" + std::to_string(S.Render.Height) + " film");
+    S.Render.RegionX = G[0], S.Render.RegionY = G[1];
+    S.Render.RegionWidth = OutW = G[2], S.Render.RegionHeight = OutH = G[3];
+  }
   std::string TexDir = O.Textures.empty() ? S.TexturesDir : O.Textures;
   if (TexDir.empty())
     throw Error(O.Scene + ": no texture folder: give --textures OUTDIR or \"textures\" in the scene");
@@ -531,16 +582,16 @@ int run(int Argc, char **Argv) try {
                          "pixel (%u passes); the image averages those\n",
                  O.TimeLimit, First.Frame.SamplesDone, S.Render.Spp, First.Frame.Passes);
   if (!O.Variance.empty())
-    writeImage(O.Variance, S.Render.Width, S.Render.Height, Variance);
+    writeImage(O.Variance, OutW, OutH, Variance);
   Builds.record(First);
   Frames.push_back(First);
   if (!Script.empty())
-    writeImage(frameName(O.Output, 0), S.Render.Width, S.Render.Height, Image);
+    writeImage(frameName(O.Output, 0), OutW, OutH, Image);
   for (size_t K = 0; K < Script.size(); ++K) {
     Frames.push_back(renderAfterEdit(Script[K], *Editor, R, Builds, Image));
-    writeImage(frameName(O.Output, K + 1), S.Render.Width, S.Render.Height, Image);
+    writeImage(frameName(O.Output, K + 1), OutW, OutH, Image);
   }
-  writeImage(O.Output, S.Render.Width, S.Render.Height, Image);
+  writeImage(O.Output, OutW, OutH, Image);
   bool SessionOk = !O.Interactive || interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty())
     writeTextFile(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");

@@ -56,6 +56,11 @@ struct RenderSettings {
   int AoSamples = 8;
   float AoDistance = 0.5f;
   unsigned Seed = 1;
+  /// texrender --region: the part of the film to render (RegionWidth 0: the whole film). Its
+  /// pixels keep their full-film coordinates and random streams (kernels/raygen.cl).
+  int RegionX = 0, RegionY = 0, RegionWidth = 0, RegionHeight = 0;
+  int Frame = 0;  // readSetting("Frame") (texrender --frame)
+  float Time = 0; // readSetting("Time"), seconds (texrender: Frame / --fps)
 };
 
 struct Scene {
