@@ -1,0 +1,440 @@
+#!/usr/bin/env python3
+"""farm.py: renders frames and tiles of a texrender scene on a Ray cluster (docs/farm.md).
+
+  farm.py render scene.json --textures T [--frames 1-48] [--tiles 4x4] -o out/frame.####.exr
+          [--address ADDR] [--workers N] [--sweep NODE.ARG=A:B:N] [texrender options ...]
+  farm.py stitch --size WxH -o OUT.exr TILE.exr@X,Y ...
+
+render: one Ray task per (frame, tile) runs `texrender --region X,Y,W,H --frame N` with the
+texrender options given (--size, --spp, --seed, --max-depth, --set, ...), so that the stitched
+frame equals `texrender` run alone with the same options, bit for bit. The scene.json, the OBJ
+files it names, the texcc output folder and the images its layout binds travel to the workers
+through Ray's object store (no shared file system). A task whose worker dies is retried; each
+frame is written atomically once all its tiles are there. --sweep renders one frame per value
+through texrender --edit-script (one kernel build per task, not per value).
+
+Ray comes from PyPI (scripts/requirements-farm.txt) and is installed into the repository's
+.venv/ on first use. Without --address a local Ray cluster is started (--workers CPUs).
+"""
+import argparse
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(REPO, "scripts"))
+
+import texexr  # noqa: E402
+
+VENV_PYTHON = os.path.join(REPO, ".venv", "bin", "python")
+REQUIREMENTS = os.path.join(REPO, "scripts", "requirements-farm.txt")
+# texrender options that farm.py sets per task (or that make no sense per tile).
+OWN_OPTIONS = {"-o", "--output", "--region", "--frame", "--stats", "--variance", "--edit-script",
+               "--interactive", "--textures", "--list-devices"}
+# texrender options that take a value (the rest are flags), to split the pass-through list.
+VALUE_OPTIONS = {"--spp", "--size", "--max-depth", "--ao-samples", "--ao-distance", "--seed",
+                 "--set", "--tier", "--device", "--trace", "--ao-method", "--kernels",
+                 "--cache-dir", "--time-limit", "--fps"}
+
+
+class FarmError(Exception):
+    pass
+
+
+def fail(message):
+    sys.stderr.write("farm.py: error: %s\n" % message)
+    sys.exit(1)
+
+
+# --- Ray, from .venv ---------------------------------------------------------------------------
+
+def import_ray():
+    """Ray, installed into .venv/ on first use (farm.py re-runs itself under .venv's Python)."""
+    if os.path.realpath(sys.prefix) != os.path.realpath(os.path.join(REPO, ".venv")):
+        if not os.path.exists(VENV_PYTHON):
+            fail("%s is missing: run scripts/setup.sh first" % VENV_PYTHON)
+        os.execv(VENV_PYTHON, [VENV_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
+    try:
+        import ray  # noqa: F401
+    except ImportError:
+        sys.stderr.write("farm.py: installing Ray into .venv/ (%s)\n" % REQUIREMENTS)
+        r = subprocess.run([VENV_PYTHON, "-m", "pip", "install", "-q", "-r", REQUIREMENTS])
+        if r.returncode != 0:
+            fail("cannot install Ray (pip install -r %s failed)" % REQUIREMENTS)
+    import ray
+    return ray
+
+
+# --- the bundle: every file a task reads ------------------------------------------------------
+
+def read_bytes(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def make_bundle(scene_path, textures_dir):
+    """{relative path: bytes}: scene.json (its OBJ paths rewritten to meshes/K_NAME, no
+    "textures" key), the texcc output folder under textures/ (layout.json's images rewritten to
+    images/K_NAME), and those files. Paths are resolved as texrender resolves them."""
+    files = {}
+    scene_dir = os.path.dirname(os.path.abspath(scene_path))
+    try:
+        scene = json.loads(read_bytes(scene_path))
+    except (OSError, ValueError) as e:
+        raise FarmError("%s: %s" % (scene_path, e))
+    scene.pop("textures", None)
+    for k, mesh in enumerate(scene.get("meshes", [])):
+        if isinstance(mesh, dict) and isinstance(mesh.get("obj"), str):
+            src = os.path.join(scene_dir, mesh["obj"])
+            name = "meshes/%d_%s" % (k, os.path.basename(src))
+            files[name] = read_bytes(src)
+            mesh["obj"] = name
+    files["scene.json"] = json.dumps(scene, indent=1).encode()
+    for entry in sorted(os.listdir(textures_dir)):
+        path = os.path.join(textures_dir, entry)
+        if os.path.isfile(path):
+            files["textures/" + entry] = read_bytes(path)
+    layout = json.loads(files["textures/layout.json"])
+    for k, image in enumerate(layout.get("images", [])):
+        src = os.path.join(textures_dir, image["path"])
+        name = "../images/%d_%s" % (k, os.path.basename(src))
+        files[name[3:]] = read_bytes(src)
+        image["path"] = name
+    files["textures/layout.json"] = json.dumps(layout, indent=1).encode()
+    return files
+
+
+def bundle_digest(files):
+    h = hashlib.sha256()
+    for name in sorted(files):
+        h.update(name.encode() + b"\0" + hashlib.sha256(files[name]).digest())
+    return h.hexdigest()[:16]
+
+
+# --- one task ---------------------------------------------------------------------------------
+
+def unpack_bundle(files, digest):
+    """The bundle's folder on this node (written once per node and bundle, atomically)."""
+    root = os.path.join(tempfile.gettempdir(), "texcc-farm-%d" % os.getuid(), digest)
+    if os.path.isdir(root):
+        return root
+    os.makedirs(os.path.dirname(root), exist_ok=True)
+    tmp = tempfile.mkdtemp(dir=os.path.dirname(root))
+    for name, data in files.items():
+        path = os.path.join(tmp, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "wb") as f:
+            f.write(data)
+    try:
+        os.rename(tmp, root)
+    except OSError:  # another worker of this node was first
+        shutil.rmtree(tmp, ignore_errors=True)
+    return root
+
+
+def render_tile(texrender, files, digest, options, frame, region, sweep, crash_marker):
+    """Renders one tile of one frame (one image per sweep value); returns the EXR bytes."""
+    if crash_marker:
+        # Test hook (FARM_TEST_CRASH_ONCE): the first task to get here kills its worker process.
+        try:
+            fd = os.open(crash_marker, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
+            os.close(fd)
+            os._exit(1)
+        except FileExistsError:
+            pass
+    root = unpack_bundle(files, digest)
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "tile.exr")
+        cmd = [texrender, os.path.join(root, "scene.json"), "--textures",
+               os.path.join(root, "textures"), "--quiet", "--frame", str(frame),
+               "--region", "%d,%d,%d,%d" % region, "-o", out] + options
+        outs = [out]
+        if sweep:
+            node_arg, values = sweep
+            cmd += ["--set", "%s=%s" % (node_arg, values[0])]
+            script = os.path.join(work, "sweep.txt")
+            with open(script, "w") as f:
+                f.writelines("set %s=%s\n" % (node_arg, v) for v in values[1:])
+            cmd += ["--edit-script", script]
+            outs = [os.path.join(work, "tile.frame%d.exr" % k) for k in range(len(values))]
+        r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if r.returncode != 0:
+            lines = r.stderr.strip().splitlines()
+            raise FarmError(lines[0] if lines else "texrender exited with %d" % r.returncode)
+        return [read_bytes(p) for p in outs]
+
+
+# --- options ----------------------------------------------------------------------------------
+
+def parse_frames(text):
+    frames = []
+    for part in text.split(","):
+        a, _, b = part.partition("-")
+        try:
+            lo, hi = int(a), int(b or a)
+        except ValueError:
+            raise FarmError("--frames: expected N, A-B or a list of them, got '%s'" % text)
+        if hi < lo:
+            raise FarmError("--frames %s: %d-%d is empty" % (text, lo, hi))
+        frames.extend(range(lo, hi + 1))
+    return frames
+
+
+def parse_pair(option, text, sep):
+    try:
+        a, b = (int(v) for v in text.split(sep))
+    except ValueError:
+        raise FarmError("%s: expected A%sB, got '%s'" % (option, sep, text))
+    if a < 1 or b < 1:
+        raise FarmError("%s %s: both must be at least 1" % (option, text))
+    return a, b
+
+
+def parse_sweep(text):
+    """NODE.ARG=A:B:N -> (NODE.ARG, N values from A to B, evenly spaced)."""
+    node_arg, _, spec = text.partition("=")
+    parts = spec.split(":")
+    try:
+        a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
+        if len(parts) != 3 or n < 1 or "." not in node_arg:
+            raise ValueError
+    except (ValueError, IndexError):
+        raise FarmError("--sweep: expected NODE.ARG=A:B:N, got '%s'" % text)
+    return node_arg, [repr(a + (b - a) * k / (n - 1)) if n > 1 else repr(a) for k in range(n)]
+
+
+def tiles_of(width, height, nx, ny):
+    """(x, y, w, h) of an nx x ny grid over the film; edge tiles take the remainder."""
+    if nx > width or ny > height:
+        raise FarmError("--tiles %dx%d: more tiles than pixels (%dx%d)" % (nx, ny, width, height))
+    xs = [width * i // nx for i in range(nx + 1)]
+    ys = [height * j // ny for j in range(ny + 1)]
+    return [(xs[i], ys[j], xs[i + 1] - xs[i], ys[j + 1] - ys[j])
+            for j in range(ny) for i in range(nx)]
+
+
+def film_size(scene_path, options):
+    size = None
+    for k, opt in enumerate(options):
+        if opt == "--size" and k + 1 < len(options):
+            size = options[k + 1]
+        elif opt.startswith("--size="):
+            size = opt.split("=", 1)[1]
+    if size:
+        return parse_pair("--size", size, "x")
+    film = json.loads(read_bytes(scene_path)).get("film", {})
+    return film.get("width", 256), film.get("height", 256)
+
+
+def check_passthrough(options):
+    k = 0
+    while k < len(options):
+        name = options[k].split("=", 1)[0]
+        if name in OWN_OPTIONS:
+            raise FarmError("%s: set by farm.py per task; not a pass-through option" % name)
+        if not name.startswith("-"):
+            raise FarmError("unexpected argument '%s'" % options[k])
+        k += 2 if name in VALUE_OPTIONS and "=" not in options[k] else 1
+
+
+def output_name(pattern, frame, sweep_index):
+    if "#" not in pattern:
+        raise FarmError("-o %s: the name needs #### for the frame number" % pattern)
+    start = pattern.index("#")
+    end = start
+    while end < len(pattern) and pattern[end] == "#":
+        end += 1
+    name = pattern[:start] + "%0*d" % (end - start, frame) + pattern[end:]
+    if sweep_index is not None:
+        stem, ext = os.path.splitext(name)
+        name = "%s.v%d%s" % (stem, sweep_index, ext)
+    return name
+
+
+def write_atomically(path, data):
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(path) + ".")
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
+
+
+def find_texrender(given):
+    path = given or shutil.which("texrender") or os.path.join(REPO, "build", "bin", "texrender")
+    if not os.access(path, os.X_OK):
+        raise FarmError("cannot find texrender (give --texrender PATH)")
+    return os.path.abspath(path)
+
+
+def validate(texrender, scene, textures, options, frame):
+    """A bad scene, texture folder or option fails here, once, before any task: texrender on
+    the first frame's top-left pixel at 1 spp with every other option as given."""
+    opts = []
+    k = 0
+    while k < len(options):  # keep the options, but 1 spp
+        if options[k] == "--spp":
+            k += 2
+            continue
+        if not options[k].startswith("--spp="):
+            opts.append(options[k])
+        k += 1
+    with tempfile.TemporaryDirectory() as work:
+        r = subprocess.run([texrender, scene, "--textures", textures, "--quiet", "--spp", "1",
+                            "--frame", str(frame), "--region", "0,0,1,1",
+                            "-o", os.path.join(work, "check.exr")] + opts,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        lines = r.stderr.strip().splitlines()
+        raise FarmError(lines[0] if lines else "texrender exited with %d" % r.returncode)
+
+
+# --- render -----------------------------------------------------------------------------------
+
+class Progress:
+    def __init__(self, frames, tasks):
+        self.frames, self.tasks, self.start, self.last = frames, tasks, time.time(), 0.0
+
+    def show(self, frames_done, tasks_done, in_flight, final=False):
+        now = time.time()
+        if not final and now - self.last < 0.5:
+            return
+        self.last = now
+        eta = "?"
+        if tasks_done:
+            eta = "%.0f s" % ((now - self.start) / tasks_done * (self.tasks - tasks_done))
+        sys.stderr.write("\rfarm.py: frames %d/%d done, tiles %d/%d done, %d in flight, ETA %s   "
+                         % (frames_done, self.frames, tasks_done, self.tasks, in_flight, eta))
+        if final:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+
+
+def render(args, options):
+    frames = parse_frames(args.frames)
+    nx, ny = parse_pair("--tiles", args.tiles, "x")
+    width, height = film_size(args.scene, options)
+    tiles = tiles_of(width, height, nx, ny)
+    sweep = parse_sweep(args.sweep) if args.sweep else None
+    check_passthrough(options)
+    texrender = find_texrender(args.texrender)
+    textures = args.textures or os.path.join(
+        os.path.dirname(os.path.abspath(args.scene)),
+        json.loads(read_bytes(args.scene)).get("textures", ""))
+    if not os.path.isfile(os.path.join(textures, "layout.json")):
+        raise FarmError("%s: not a texcc output folder (no layout.json)" % textures)
+    for f in frames:
+        out_dir = os.path.dirname(os.path.abspath(output_name(args.output, f, None)))
+        if not os.path.isdir(out_dir):
+            raise FarmError("-o %s: '%s' is not a folder" % (args.output, out_dir))
+    validate(texrender, args.scene, textures, options, frames[0])
+    files = make_bundle(args.scene, textures)
+    digest = bundle_digest(files)
+
+    ray = import_ray()
+    if args.address:
+        ray.init(address=args.address, logging_level="ERROR", log_to_driver=False)
+    else:
+        ray.init(num_cpus=args.workers, logging_level="ERROR", log_to_driver=False,
+                 include_dashboard=False)
+    task = ray.remote(num_cpus=1, max_retries=args.retries)(render_tile)
+    files_ref = ray.put(files)
+    crash = os.environ.get("FARM_TEST_CRASH_ONCE", "")
+    pending = {}
+    for f in frames:
+        for t in tiles:
+            ref = task.remote(texrender, files_ref, digest, options, f, t, sweep, crash)
+            pending[ref] = (f, t)
+    got = {f: {} for f in frames}
+    progress = Progress(len(frames), len(pending))
+    done_frames = tasks_done = 0
+    refs = list(pending)
+    while refs:
+        ready, refs = ray.wait(refs, num_returns=1, timeout=0.5)
+        for ref in ready:
+            f, t = pending[ref]
+            try:
+                images = ray.get(ref)
+            except ray.exceptions.RayTaskError as e:
+                cause = e.cause if getattr(e, "cause", None) else e
+                raise FarmError("frame %d, tile %s: %s" % (f, "%d,%d,%d,%d" % t, cause))
+            got[f][t] = images
+            tasks_done += 1
+            if len(got[f]) == len(tiles):
+                write_frame(args.output, f, width, height, got.pop(f), sweep)
+                done_frames += 1
+        progress.show(done_frames, tasks_done, len(refs))
+    progress.show(done_frames, tasks_done, 0, final=True)
+    ray.shutdown()
+
+
+def write_frame(pattern, frame, width, height, tiles, sweep):
+    import numpy as np
+    for k in range(len(sweep[1]) if sweep else 1):
+        image = np.zeros((height, width, 3), dtype=np.float32)
+        for (x, y, w, h), images in tiles.items():
+            image[y:y + h, x:x + w] = texexr.read_exr(images[k])
+        write_atomically(output_name(pattern, frame, k if sweep else None), texexr.write_exr(image))
+
+
+# --- stitch -----------------------------------------------------------------------------------
+
+def stitch(args):
+    """Places tiles (TILE.exr@X,Y) into a WxH image: for texrender --region outputs."""
+    import numpy as np
+    width, height = parse_pair("--size", args.size, "x")
+    image = np.zeros((height, width, 3), dtype=np.float32)
+    for spec in args.tiles:
+        path, _, at = spec.rpartition("@")
+        x, y = (int(v) for v in at.split(","))
+        tile = texexr.read_exr(read_bytes(path))
+        h, w, _ = tile.shape
+        if x + w > width or y + h > height:
+            raise FarmError("%s: a %dx%d tile at %d,%d is outside %dx%d" % (path, w, h, x, y,
+                                                                           width, height))
+        image[y:y + h, x:x + w] = tile
+    write_atomically(args.output, texexr.write_exr(image))
+
+
+def main(argv):
+    p = argparse.ArgumentParser(prog="farm.py", description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="command", required=True)
+    r = sub.add_parser("render", help="render frames and tiles on a Ray cluster")
+    r.add_argument("scene")
+    r.add_argument("--textures", help="texcc output folder (default: scene.json \"textures\")")
+    r.add_argument("--frames", default="0", help="frames: N, A-B or a comma list (default 0)")
+    r.add_argument("--tiles", default="1x1", help="tiles per frame, NXxNY (default 1x1)")
+    r.add_argument("-o", "--output", required=True, help="frame file name with #### (EXR)")
+    r.add_argument("--address", help="an existing Ray cluster (default: start a local one)")
+    r.add_argument("--workers", type=int, default=os.cpu_count(),
+                   help="CPUs of the local cluster (default: all)")
+    r.add_argument("--retries", type=int, default=3, help="retries of a task whose worker dies")
+    r.add_argument("--sweep", help="NODE.ARG=A:B:N: one image per value (live edits)")
+    r.add_argument("--texrender", help="texrender on every node (default: PATH, then build/bin)")
+    s = sub.add_parser("stitch", help="place texrender --region tiles into one EXR")
+    s.add_argument("--size", required=True)
+    s.add_argument("-o", "--output", required=True)
+    s.add_argument("tiles", nargs="+", metavar="TILE.exr@X,Y")
+    args, rest = p.parse_known_args(argv)
+    try:
+        if args.command == "stitch":
+            if rest:
+                raise FarmError("unexpected arguments: %s" % " ".join(rest))
+            stitch(args)
+        else:
+            render(args, rest)
+    except (FarmError, texexr.ExrError, OSError) as e:
+        fail(str(e))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
