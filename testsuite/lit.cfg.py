@@ -55,3 +55,13 @@ if os.path.isdir(os.path.join(shared, "assets")):
     config.substitutions.append(("%shared", os.path.abspath(shared)))
 else:
     lit_config.note("../shared/assets is absent: tests that REQUIRE shared-assets are skipped")
+
+# REQUIRES: ray — scripts/farm.py's tests need Ray in .venv/ (scripts/requirements-farm.txt;
+# .ci/run installs it).
+import glob  # noqa: E402
+if glob.glob(os.path.join(config.texcc_src_root, ".venv", "lib", "python3*", "site-packages",
+                          "ray", "__init__.py")):
+    config.available_features.add("ray")
+else:
+    lit_config.note("Ray is not installed in .venv/ (pip install -r scripts/requirements-farm.txt): "
+                    "tests that REQUIRE ray are skipped")
