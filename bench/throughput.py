@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Ray throughput of texrender (rays per second by kind, from OpenCL profiling events) on the
-Cornell box (plain, and with a texture that reads AO) and on the atrium with the rust texture.
-Writes bench/throughput.json and bench/throughput.md.
+"""Ray throughput of texrender (rays per second by kind) with each trace backend (--trace=opencl:
+OpenCL profiling events of the trace kernels; --trace=embree: wall time of the Embree stages) on
+the Cornell box (plain, and with a texture that reads AO) and on the atrium with the rust texture.
+The two backends run one after the other per scene. Writes bench/throughput.json and
+bench/throughput.md.
 
-usage: bench/throughput.py [--build build] [--device N]
+usage: bench/throughput.py [--build build] [--device N] [--trace opencl,embree]
 Needs texcc and texrender in BUILD/bin; the atrium is skipped when examples/atrium/generated
 (scripts/make_scenes.py) is missing.
 """
@@ -38,6 +40,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--device", default="0")
+    ap.add_argument("--trace", default="opencl,embree", help="backends, comma-separated")
     args = ap.parse_args()
     texcc = os.path.join(args.build, "bin", "texcc")
     texrender = os.path.join(args.build, "bin", "texrender")
@@ -51,35 +54,40 @@ def main():
             out = os.path.join(tmp, name.split()[0])
             run([texcc] + sources + ["--graph", os.path.join(ROOT, graph), "-o", out])
             stats = os.path.join(tmp, "stats.json")
-            cmd = [texrender, os.path.join(ROOT, scene), "--textures", out, "--quiet",
-                   "--device", args.device, "-o", os.path.join(tmp, "img.exr"), "--stats", stats]
-            run(cmd + opts)  # warm the program cache
-            run(cmd + opts)
-            with open(stats) as f:
-                s = json.load(f)
-            load = os.getloadavg()[0]
-            results.append({"scene": name, "options": " ".join(opts), "device": s["device"],
-                            "cpus": os.cpu_count(), "loadAverage": round(load, 1),
-                            "triangles": s["triangles"], "renderSeconds": s["renderSeconds"],
-                            "rays": s["rays"]})
-            print("%-14s %s" % (name, {k: round(v["perSecond"] / 1e6, 2)
-                                        for k, v in s["rays"].items()}))
+            for trace in args.trace.split(","):
+                cmd = [texrender, os.path.join(ROOT, scene), "--textures", out, "--quiet",
+                       "--device", args.device, "--trace=" + trace,
+                       "-o", os.path.join(tmp, "img.exr"), "--stats", stats]
+                run(cmd + opts)  # warm the program cache
+                run(cmd + opts)
+                with open(stats) as f:
+                    s = json.load(f)
+                load = os.getloadavg()[0]
+                results.append({"scene": name, "options": " ".join(opts), "device": s["device"],
+                                "trace": s["trace"], "bvhBuildSeconds": s["bvhBuildSeconds"],
+                                "cpus": os.cpu_count(), "loadAverage": round(load, 1),
+                                "triangles": s["triangles"], "renderSeconds": s["renderSeconds"],
+                                "rays": s["rays"]})
+                print("%-14s %-6s %s" % (name, s["trace"], {
+                    k: round(v["perSecond"] / 1e6, 2) for k, v in s["rays"].items()}))
     with open(os.path.join(ROOT, "bench", "throughput.json"), "w") as f:
         json.dump(results, f, indent=2)
         f.write("\n")
     lines = ["# texrender ray throughput", "",
-             "Rays per second by kind, from OpenCL profiling events of the kernel that traces "
+             "Rays per second by kind and trace backend: the time of the stage that traces "
              "them (`closest_hit_primary`, `closest_hit_bounce`, `shadow`, `ao_trace`; "
-             "docs/runtime.md). Regenerate: `bench/throughput.py` (raw numbers: "
-             "`bench/throughput.json`). On a CPU device the numbers depend on what else runs: "
-             "the load average (1 min) at the end of each run is listed.", "",
-             "| scene | triangles | options | device | primary Mray/s | bounce Mray/s | "
+             "opencl: OpenCL profiling events of the kernel; embree: wall time of the Embree "
+             "stage, map and unmap included; docs/runtime.md). Regenerate: "
+             "`bench/throughput.py` (raw numbers: `bench/throughput.json`). On a CPU device the "
+             "numbers depend on what else runs: the load average (1 min) at the end of each "
+             "run is listed.", "",
+             "| scene | triangles | options | device | trace | primary Mray/s | bounce Mray/s | "
              "shadow Mray/s | AO Mray/s | render s | CPUs, load |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         ray = lambda k: ("%.2f" % (r["rays"][k]["perSecond"] / 1e6)) if r["rays"][k]["count"] else "-"
-        lines.append("| %s | %d | `%s` | %s | %s | %s | %s | %s | %.2f | %d, %.1f |" % (
-            r["scene"], r["triangles"], r["options"], r["device"], ray("primary"),
+        lines.append("| %s | %d | `%s` | %s | %s | %s | %s | %s | %s | %.2f | %d, %.1f |" % (
+            r["scene"], r["triangles"], r["options"], r["device"], r["trace"], ray("primary"),
             ray("bounce"), ray("shadow"), ray("ao"), r["renderSeconds"], r["cpus"],
             r["loadAverage"]))
     with open(os.path.join(ROOT, "bench", "throughput.md"), "w") as f:

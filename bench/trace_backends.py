@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""Frame time of the atrium with each trace backend (issue 24): 512x512, maxDepth 4, diffuse
+(no texture, no AO) and rust (texture + 8 AO rays per hit), 1 and 16 spp, --trace=opencl and
+--trace=embree interleaved (every repetition renders every configuration in turn); medians of
+the frame time (renderSeconds) and of each stage's time, the BVH build times, and the 1-minute
+load average at each render. Writes bench/trace_backends.json and prints a Markdown table.
+
+usage: bench/trace_backends.py [--build build] [--reps 1spp,16spp] [--size 512x512]
+Needs examples/atrium/generated (scripts/make_scenes.py --only atrium rust).
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CONFIGS = {"diffuse": ("examples/atrium/scene-diffuse.json", "bench/inputs/diffuse/graph.json"),
+           "rust": ("examples/atrium/scene.json", "examples/rust/graph.json")}
+TRACES = ["opencl", "embree"]
+STAGES = ["closest_hit_primary", "closest_hit_bounce", "shadow", "ao_rays", "ao_trace", "shade",
+          "hit_attributes", "proctex"]
+
+
+def run(cmd):
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        sys.exit("trace_backends.py: %s failed:\n%s" % (" ".join(cmd), r.stderr))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--reps", default="5,3", help="repetitions at 1 spp and at 16 spp")
+    ap.add_argument("--size", default="512x512")
+    args = ap.parse_args()
+    reps = dict(zip([1, 16], map(int, args.reps.split(","))))
+    texcc = os.path.join(args.build, "bin", "texcc")
+    texrender = os.path.join(args.build, "bin", "texrender")
+    raw = []
+    with tempfile.TemporaryDirectory() as tmp:
+        tex = {}
+        for name, (_, graph) in CONFIGS.items():
+            tex[name] = os.path.join(tmp, name)
+            run([texcc, "--graph", os.path.join(ROOT, graph), "-o", tex[name]])
+
+        def render(name, spp, trace, rep):
+            stats = os.path.join(tmp, "stats.json")
+            cmd = [texrender, os.path.join(ROOT, CONFIGS[name][0]), "--textures", tex[name],
+                   "--size", args.size, "--spp", str(spp), "--max-depth", "4", "--quiet",
+                   "--trace=" + trace, "-o", os.path.join(tmp, "img.exr"), "--stats", stats]
+            run(cmd)
+            with open(stats) as f:
+                s = json.load(f)
+            r = {"config": name, "spp": spp, "trace": trace, "rep": rep,
+                 "renderSeconds": s["renderSeconds"], "bvhBuildSeconds": s["bvhBuildSeconds"],
+                 "loadAverage": os.getloadavg()[0], "device": s["device"],
+                 "stages": {k: v["seconds"] for k, v in s["kernels"].items()},
+                 "rays": s["rays"]}
+            print("%-7s %2d spp %-6s rep %d: %.3f s (load %.1f)" % (
+                name, spp, trace, rep, r["renderSeconds"], r["loadAverage"]), flush=True)
+            return r
+
+        for name in CONFIGS:  # warm the program caches
+            for trace in TRACES:
+                render(name, 1, trace, -1)
+        for spp in (1, 16):
+            for rep in range(reps[spp]):
+                for name in CONFIGS:
+                    for trace in TRACES:
+                        raw.append(render(name, spp, trace, rep))
+    summary = []
+    for spp in (1, 16):
+        for name in CONFIGS:
+            for trace in TRACES:
+                rs = [r for r in raw if r["config"] == name and r["spp"] == spp and r["trace"] == trace]
+                med = lambda f: statistics.median(f(r) for r in rs)
+                summary.append({
+                    "config": name, "spp": spp, "trace": trace, "n": len(rs),
+                    "renderSeconds": med(lambda r: r["renderSeconds"]),
+                    "renderSecondsAll": [round(r["renderSeconds"], 3) for r in rs],
+                    "stages": {k: med(lambda r: r["stages"].get(k, 0.0)) for k in STAGES},
+                    "bvhBuildSeconds": {k: (med(lambda r: r["bvhBuildSeconds"][k])
+                                            if rs[0]["bvhBuildSeconds"][k] is not None else None)
+                                        for k in ("sah", "embree")},
+                    "raysPerSecond": {k: med(lambda r: r["rays"][k]["perSecond"])
+                                      for k in ("primary", "bounce", "shadow", "ao")},
+                    "loadAverage": [round(r["loadAverage"], 1) for r in rs]})
+    out = {"size": args.size, "maxDepth": 4, "cpus": os.cpu_count(), "summary": summary, "raw": raw}
+    with open(os.path.join(ROOT, "bench", "trace_backends.json"), "w") as f:
+        json.dump(out, f, indent=2)
+        f.write("\n")
+    print("\n| config | spp | trace | frame s (median) | frames s | "
+          + " | ".join(STAGES) + " | load |")
+    print("|---|---|---|---|---|" + "---|" * len(STAGES) + "---|")
+    for s in summary:
+        print("| %s | %d | %s | %.3f | %s | %s | %s |" % (
+            s["config"], s["spp"], s["trace"], s["renderSeconds"],
+            ", ".join("%.2f" % x for x in s["renderSecondsAll"]),
+            " | ".join("%.3f" % s["stages"][k] for k in STAGES),
+            "-".join("%.1f" % x for x in (min(s["loadAverage"]), max(s["loadAverage"])))))
+
+
+if __name__ == "__main__":
+    main()
