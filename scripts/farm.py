@@ -196,7 +196,7 @@ def parse_pair(option, text, sep):
 
 
 def parse_sweep(text):
-    """NODE.ARG=A:B:N -> (NODE.ARG, N values from A to B, evenly spaced)."""
+    """NODE.ARG=A:B:N -> (NODE.ARG, N values from A to B, evenly spaced, as --set text)."""
     node_arg, _, spec = text.partition("=")
     parts = spec.split(":")
     try:
@@ -205,7 +205,11 @@ def parse_sweep(text):
             raise ValueError
     except (ValueError, IndexError):
         raise FarmError("--sweep: expected NODE.ARG=A:B:N, got '%s'" % text)
-    return node_arg, [repr(a + (b - a) * k / (n - 1)) if n > 1 else repr(a) for k in range(n)]
+    values = [a + (b - a) * k / (n - 1) if n > 1 else a for k in range(n)]
+    # Integer ends and steps stay integers (an int parameter refuses "2.0").
+    if all(v == int(v) for v in values) and "." not in parts[0] + parts[1]:
+        return node_arg, [str(int(v)) for v in values]
+    return node_arg, [repr(v) for v in values]
 
 
 def tiles_of(width, height, nx, ny):
