@@ -195,11 +195,14 @@ void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const Compil
     Used.insert(Q.Opcode);
   CG.Signatures.clear();
   std::set<std::string> Attributes, Settings;
+  // The smallest free id: Used only grows, so the search goes on from the last one (from 0
+  // every time it was quadratic in the number of functions).
+  unsigned FirstFree = 0;
   for (CompiledNode &N : CG.Nodes) {
     if (!Ids.count(N.Fn)) {
-      unsigned Id = 0;
-      while (Used.count(Id))
-        ++Id;
+      while (Used.count(FirstFree))
+        ++FirstFree;
+      const unsigned Id = FirstFree;
       Used.insert(Id);
       Ids[N.Fn] = Id;
       if (Log)
@@ -228,8 +231,9 @@ void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const Compil
     if (Fixed != Opts.FixedFunctionIds.end()) {
       Id = Fixed->second;
     } else {
-      while (Used.count(Id))
-        ++Id;
+      while (Used.count(FirstFree))
+        ++FirstFree;
+      Id = FirstFree;
       Used.insert(Id);
       if (Log)
         *Log << "function-ids: '" << Fn << "' gets id " << Id << " (only dead nodes name it)\n";

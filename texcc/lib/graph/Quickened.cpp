@@ -9,6 +9,8 @@
 #include "texcc/Graph/Passes.h"
 
 #include <algorithm>
+#include <map>
+#include <tuple>
 
 namespace texcc::graph {
 
@@ -52,10 +54,12 @@ QuickenedOp patternAt(const CompiledGraph &CG, const CompiledMaterial &M, size_t
   return P;
 }
 
-bool samePattern(const QuickenedOp &A, const QuickenedOp &B) {
-  QuickenedOp C = B;
-  C.Opcode = A.Opcode;
-  return A == C;
+/// A pattern without its opcode, as a map key: patterns are looked up once per instruction (a
+/// scan of the patterns seen so far was quadratic in the number of distinct functions).
+using PatternKey = std::tuple<std::string, std::vector<std::string>, std::string, unsigned,
+                              std::vector<std::string>>;
+PatternKey keyOf(const QuickenedOp &Q) {
+  return {Q.Fn, Q.Sources, Q.Second, Q.Param, Q.SecondSources};
 }
 
 /// Whether instruction J is the second half of a superinstruction (skipped: the
@@ -86,18 +90,18 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
     // over all programs; ties in order of first occurrence.
     std::vector<QuickenedOp> Order;
     std::vector<unsigned> Count;
+    std::map<PatternKey, size_t> IndexOf;
     for (const CompiledMaterial &M : CG.Materials)
       for (size_t J = 0; J < M.Program.size(); ++J) {
         if (secondOfSuperinstruction(M, J))
           continue;
-        const QuickenedOp P = patternAt(CG, M, J);
-        auto It = std::find_if(Order.begin(), Order.end(),
-                               [&](const QuickenedOp &Q) { return samePattern(Q, P); });
-        if (It == Order.end()) {
-          Order.push_back(P);
+        QuickenedOp P = patternAt(CG, M, J);
+        auto [It, New] = IndexOf.emplace(keyOf(P), Order.size());
+        if (New) {
+          Order.push_back(std::move(P));
           Count.push_back(1);
         } else {
-          ++Count[It - Order.begin()];
+          ++Count[It->second];
         }
       }
     std::vector<size_t> Rank(Order.size());
@@ -116,17 +120,18 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
     }
   }
   std::vector<unsigned> Uses(Table.size(), 0);
+  std::map<PatternKey, size_t> TableIndex; // the first entry of each pattern
+  for (size_t K = 0; K < Table.size(); ++K)
+    TableIndex.emplace(keyOf(Table[K]), K);
   for (CompiledMaterial &M : CG.Materials)
     for (size_t J = 0; J < M.Program.size(); ++J) {
       Instruction &In = M.Program[J];
       In.Quick = -1;
       if (secondOfSuperinstruction(M, J))
         continue;
-      const QuickenedOp P = patternAt(CG, M, J);
-      auto It = std::find_if(Table.begin(), Table.end(),
-                             [&](const QuickenedOp &Q) { return samePattern(Q, P); });
-      if (It != Table.end()) {
-        In.Quick = static_cast<int>(It - Table.begin());
+      auto It = TableIndex.find(keyOf(patternAt(CG, M, J)));
+      if (It != TableIndex.end()) {
+        In.Quick = static_cast<int>(It->second);
         ++Uses[In.Quick];
       }
     }
