@@ -8,7 +8,9 @@ stack in local memory, texcc's default for these graphs' 2 and 3 slots), interp-
 stack a private array, --local-stack-limit=0), interp-unhoisted (interp --no-hoist),
 interp-unquickened (interp --max-quickened=0), wavefront,
 shape, shape --no-hoist (every declaration of the user's functions computed per hit), and
-shape+bake (every constant int argument baked, --bake: the "mode" arguments, as in section 3). One
+shape+bake (every constant int argument baked, --bake: the "mode" arguments, as in section 3), and
+inline, interp and shape with --no-checks (the loop budget compiled out: "checkCost" is the
+checked configuration's median time per hit over the unchecked one's, minus 1). One
 `texcc-eval --time R` process per texture builds every configuration's kernel and runs all of
 them over the same random hits (texcc-eval's grid: positions, normals, AO and UVs drawn as in
 the equivalence tests) in R rounds, each round launching every configuration once in an order
@@ -38,7 +40,10 @@ CONFIGS = (("inline", "inline", []),
            ("interp-unquickened", "interp", ["--max-quickened=0"]),
            ("wavefront", "wavefront", []),
            ("shape", "shape", []),
-           ("shape-unhoisted", "shape", ["--no-hoist"]))
+           ("shape-unhoisted", "shape", ["--no-hoist"]),
+           ("inline-unchecked", "inline", ["--no-checks"]),
+           ("interp-unchecked", "interp", ["--no-checks"]),
+           ("shape-unchecked", "shape", ["--no-checks"]))
 GRAPHS = {"rust": os.path.join("examples", "rust", "graph.json"),
           "scratches": os.path.join("examples", "scratches", "graph.json")}
 
@@ -80,6 +85,11 @@ def measure_texture(tools, name, rounds, grid):
                                "medianNsPerHit": f["medianNsPerHit"],
                                "minNsPerHit": f["minNsPerHit"],
                                "medianRatioToInline": f["medianRatioToFirst"]}
+    row["checkCost"] = {m: row["configs"][m]["medianNsPerHit"] /
+                        row["configs"][m + "-unchecked"]["medianNsPerHit"] - 1.0
+                        for m in ("inline", "interp", "shape")}
+    common.log("%s: loop budget's cost per hit %s" % (
+        name, {m: "%+.1f%%" % (100 * c) for m, c in row["checkCost"].items()}))
     common.log("%s: ns per textured hit (median) %s; median ratios to inline %s" % (
         name, {c: round(v["medianNsPerHit"], 1) for c, v in row["configs"].items()},
         {c: round(v["medianRatioToInline"], 3) for c, v in row["configs"].items()}))

@@ -84,6 +84,11 @@ static cl::opt<uint64_t> LoopBudget(
              "it the loops end and texrender reports the node, line and pixel (default "
              "16777216, at most 2147483647)"),
     cl::value_desc("N"), cl::init(0), cl::cat(TexccCategory));
+static cl::opt<bool> NoChecks(
+    "no-checks",
+    cl::desc("Compile the loop budget out of the kernel, for A/B measurement of its cost "
+             "(bench/per_hit.py); a texture that loops forever then hangs the renderer"),
+    cl::Hidden, cl::cat(TexccCategory));
 static cl::list<std::string> IncludeDirs("I", cl::Prefix, cl::desc("Add an include directory"),
                                          cl::value_desc("DIR"), cl::cat(TexccCategory));
 static cl::list<std::string> Defines("D", cl::Prefix, cl::desc("Define a macro for the sources"),
@@ -252,6 +257,7 @@ static int run() {
   Opts.GraphPath = fs::absolute(fs::path(GraphPath.getValue())).lexically_normal().string();
   Opts.InterpHoists = InterpHoists;
   Opts.LoopBudget = static_cast<uint32_t>(LoopBudget);
+  Opts.Checks = !NoChecks;
   Opts.UserCode = renderReachableUserCode(*FR, *CG, CG->liveFunctions(),
                                           Shape ? cg::hoistingFunctions(*CG) : std::set<std::string>{});
   // The interp kernel (interp mode, shape mode's fallback) calls the functions of dead nodes

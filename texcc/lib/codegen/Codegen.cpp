@@ -144,6 +144,8 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
      << "#define TEXCC_SPILL " << (CG.Spill && !Host ? 1 : 0) << "\n";
   if (Opts.LoopBudget)
     OS << "#define TEXCC_LOOP_BUDGET " << Opts.LoopBudget << "u\n";
+  if (!Opts.Checks)
+    OS << "#define TEXCC_CHECKS 0 /* texcc --no-checks: no loop budget */\n";
   OS << "\n";
   if (!Host)
     // No a*b+c fused into one rounding: where the compiler fuses depends on how each mode's

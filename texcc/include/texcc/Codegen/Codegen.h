@@ -44,6 +44,9 @@ struct CodegenOptions {
   /// --loop-budget: the loop iterations one work-item may run (docs/reliability.md "User
   /// code"); 0: the default of texcc_device.h (TEXCC_LOOP_BUDGET), and no #define is written.
   uint32_t LoopBudget = 0;
+  /// --no-checks (hidden, for A/B measurement: bench/per_hit.py): `#define TEXCC_CHECKS 0`,
+  /// which makes the loop budget's test always true, so the device compiler drops the checks.
+  bool Checks = true;
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).
