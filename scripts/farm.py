@@ -27,11 +27,24 @@ import tempfile
 import time
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+VENV_PYTHON = os.path.join(REPO, ".venv", "bin", "python")
+
+
+def run_in_venv():
+    """Re-runs the command under .venv's Python (numpy, and Ray once installed), if not there."""
+    if os.path.realpath(sys.prefix) == os.path.realpath(os.path.join(REPO, ".venv")):
+        return
+    if not os.path.exists(VENV_PYTHON):
+        sys.exit("farm.py: error: %s is missing: run scripts/setup.sh first" % VENV_PYTHON)
+    os.execv(VENV_PYTHON, [VENV_PYTHON, os.path.abspath(sys.argv[0])] + sys.argv[1:])
+
+
+if __name__ == "__main__":
+    run_in_venv()
 sys.path.insert(0, os.path.join(REPO, "scripts"))
 
 import texexr  # noqa: E402
 
-VENV_PYTHON = os.path.join(REPO, ".venv", "bin", "python")
 REQUIREMENTS = os.path.join(REPO, "scripts", "requirements-farm.txt")
 # texrender options that farm.py sets per task (or that make no sense per tile).
 OWN_OPTIONS = {"-o", "--output", "--region", "--frame", "--stats", "--variance", "--edit-script",
@@ -54,11 +67,7 @@ def fail(message):
 # --- Ray, from .venv ---------------------------------------------------------------------------
 
 def import_ray():
-    """Ray, installed into .venv/ on first use (farm.py re-runs itself under .venv's Python)."""
-    if os.path.realpath(sys.prefix) != os.path.realpath(os.path.join(REPO, ".venv")):
-        if not os.path.exists(VENV_PYTHON):
-            fail("%s is missing: run scripts/setup.sh first" % VENV_PYTHON)
-        os.execv(VENV_PYTHON, [VENV_PYTHON, os.path.abspath(__file__)] + sys.argv[1:])
+    """Ray, installed into .venv/ on first use (farm.py runs under .venv's Python)."""
     try:
         import ray  # noqa: F401
     except ImportError:
