@@ -660,7 +660,8 @@ def tail_sections():
              "## Other measurements", ""]
     for name, text in (("bench/scenes.md", "atrium size and load/BVH time"),
                        ("bench/throughput.md", "ray throughput (`bench/throughput.py`)"),
-                       ("bench/frontend-speed.md", "texcc front-end speed")):
+                       ("bench/frontend-speed.md", "texcc front-end speed"),
+                       ("bench/farm.md", "Ray farm: per-task overhead, 1 vs 2 workers (`bench/farm.py`)")):
         if os.path.exists(os.path.join(common.ROOT, name)):
             lines.append("- [%s](%s): %s" % (name, name, text))
     return lines + [""]
