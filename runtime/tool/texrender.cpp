@@ -114,17 +114,15 @@ float toFloat(const std::string &Opt, const std::string &V) {
 /// --region X,Y,W,H: four integers, X and Y at least 0, W and H at least 1 (the film's size is
 /// checked once the scene is read).
 std::array<int, 4> parseRegion(const std::string &S) {
-  std::array<int, 4> R{};
+  std::vector<std::string> Parts;
   std::istringstream In(S);
-  std::string Part;
-  int K = 0;
-  for (; std::getline(In, Part, ','); ++K) {
-    if (K == 4)
-      break;
-    R[K] = toInt("--region", Part);
-  }
-  if (K != 4 || !In.eof() || S.empty() || S.back() == ',')
+  for (std::string Part; std::getline(In, Part, ',');)
+    Parts.push_back(Part);
+  if (Parts.size() != 4 || S.back() == ',')
     throw Error("--region: expected X,Y,W,H, got '" + S + "'");
+  std::array<int, 4> R{};
+  for (int K = 0; K < 4; ++K)
+    R[K] = toInt("--region", Parts[K]);
   if (R[0] < 0 || R[1] < 0 || R[2] < 1 || R[3] < 1)
     throw Error("--region " + S + ": X and Y must be at least 0, W and H at least 1");
   return R;
