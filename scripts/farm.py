@@ -376,9 +376,13 @@ def render(args, options):
             f, t = pending[ref]
             try:
                 images = ray.get(ref)
-            except ray.exceptions.RayTaskError as e:
+            except ray.exceptions.RayTaskError as e:  # texrender failed in the task
                 cause = e.cause if getattr(e, "cause", None) else e
                 raise FarmError("frame %d, tile %s: %s" % (f, "%d,%d,%d,%d" % t, cause))
+            except ray.exceptions.RayError as e:  # a worker or node lost more times than retried
+                first = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
+                raise FarmError("frame %d, tile %s: %s (after %d retries)"
+                                % (f, "%d,%d,%d,%d" % t, first, args.retries))
             got[f][t] = images
             tasks_done += 1
             if len(got[f]) == len(tiles):
