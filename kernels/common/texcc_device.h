@@ -25,6 +25,8 @@ typedef struct TexccGuard {
   int hit;
   int material;
   __global int *fault;
+  int line;     /* of the loop that spent the budget; 0: none did */
+  uint lineAt;  /* at, when it did */
 } TexccGuard;
 
 typedef struct TexccCtx {
@@ -43,12 +45,14 @@ typedef struct TexccCtx {
 #define TEXCC_FN __attribute__((always_inline))
 
 /* Records a fault unless one was recorded before in this launch (one compare-exchange). */
-static inline void texcc_fault(const TexccCtx *c, int kind, int line, int detail, int extra) {
+/* Records a fault unless one was recorded before in this launch (one compare-exchange). */
+static inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, int detail,
+                               int extra) {
   __global int *f = c->guard->fault;
   if (atomic_cmpxchg(f + TEXCC_FAULT_KIND, TEXCC_FAULT_NONE, kind) != TEXCC_FAULT_NONE)
     return;
   f[TEXCC_FAULT_LINE] = line;
-  f[TEXCC_FAULT_AT] = (int)c->guard->at;
+  f[TEXCC_FAULT_AT] = (int)at;
   f[TEXCC_FAULT_HIT] = c->guard->hit;
   f[TEXCC_FAULT_DETAIL] = detail;
   f[TEXCC_FAULT_EXTRA] = extra;
@@ -57,15 +61,26 @@ static inline void texcc_fault(const TexccCtx *c, int kind, int line, int detail
 
 /* texcc ends the condition of every user loop with `&& texcc_loop_continues(texcc_ctx,
  * __LINE__)`: each iteration spends one of the work-item's budget. With none left the loop
- * ends, and so does every loop around it at its next test; the fault names the line. */
+ * ends, and so does every loop around it at its next test; the first such loop's line and
+ * node are kept for texcc_report_fault (private stores only: no atomic inside user loops). */
 static inline bool texcc_loop_continues(const TexccCtx *c, int line) {
   TexccGuard *g = c->guard;
   if (!TEXCC_CHECKS || g->loopsLeft != 0u) {
     --g->loopsLeft;
     return true;
   }
-  texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, line, (int)TEXCC_LOOP_BUDGET, 0);
+  if (g->line == 0) {
+    g->line = line;
+    g->lineAt = g->at;
+  }
   return false;
+}
+
+/* At the end of the kernel: the work-item's fault, if any, into the fault record. */
+static inline void texcc_report_fault(const TexccCtx *c) {
+  if (TEXCC_CHECKS && c->guard->line != 0)
+    texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, c->guard->line, c->guard->lineAt,
+                (int)TEXCC_LOOP_BUDGET, 0);
 }
 
 /* readAttr("Name") lowers to texcc_attr_Name(texcc_ctx). */

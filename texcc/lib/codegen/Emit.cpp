@@ -110,9 +110,13 @@ void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard, const 
      << "  ctx.settings = settings;\n"
      << "  ctx.texels = texels;\n"
      << "  ctx.images = images;\n"
-     << "  TexccGuard guard = {TEXCC_LOOP_BUDGET, " << At << ", gid, mat, faults};\n"
+     << "  TexccGuard guard = {TEXCC_LOOP_BUDGET, " << At << ", gid, mat, faults, 0, 0u};\n"
      << "  ctx.guard = &guard;\n"
      << "  const TexccCtx *texcc_ctx = &ctx;\n";
+}
+
+std::string kernelEpilogue() {
+  return "  texcc_report_fault(texcc_ctx);\n";
 }
 
 std::string guardAtInstruction(unsigned Instruction) {

@@ -37,6 +37,10 @@ std::string kernelParameterList();
 /// first, TEXCC_FAULT_AT) and the hit context `texcc_ctx`.
 void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard,
                         const std::string &At = "0u");
+/// The end of every kernel that runs user code: the work-item's fault, if a check tripped,
+/// into the fault record (once, after the nodes: an atomic inside the loops keeps PoCL from
+/// vectorizing straight-line kernels, 10x slower).
+std::string kernelEpilogue();
 /// The statement that tells the guard which node runs next (the fault names it): instruction
 /// Instruction of the material's program.
 std::string guardAtInstruction(unsigned Instruction);

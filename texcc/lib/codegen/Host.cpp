@@ -51,7 +51,7 @@ void emitHost(std::ostringstream &OS, const CompiledGraph &CG) {
         "  ctx.settings = settings;\n"
         "  ctx.texels = texels;\n"
         "  ctx.images = images;\n"
-        "  TexccGuard guard = {TEXCC_LOOP_BUDGET, 0u, 0, material, nullptr};\n"
+        "  TexccGuard guard = {TEXCC_LOOP_BUDGET, 0u, 0, material, nullptr, 0, 0u};\n"
         "  ctx.guard = &guard;\n"
         "  float4 out[TEXCC_MAX_OUTPUTS];\n"
         "  int n = 0;\n"

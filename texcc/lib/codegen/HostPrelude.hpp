@@ -328,13 +328,13 @@ struct TexccCtx {
   TexccGuard *guard;
 };
 
-inline void texcc_fault(const TexccCtx *c, int kind, int line, int detail, int extra) {
+inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, int detail, int extra) {
   int *f = c->guard->fault;
   if (!f || f[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
     return;
   f[TEXCC_FAULT_KIND] = kind;
   f[TEXCC_FAULT_LINE] = line;
-  f[TEXCC_FAULT_AT] = static_cast<int>(c->guard->at);
+  f[TEXCC_FAULT_AT] = static_cast<int>(at);
   f[TEXCC_FAULT_HIT] = c->guard->hit;
   f[TEXCC_FAULT_DETAIL] = detail;
   f[TEXCC_FAULT_EXTRA] = extra;
@@ -347,8 +347,17 @@ inline bool texcc_loop_continues(const TexccCtx *c, int line) {
     --g->loopsLeft;
     return true;
   }
-  texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, line, static_cast<int>(TEXCC_LOOP_BUDGET), 0);
+  if (g->line == 0) {
+    g->line = line;
+    g->lineAt = g->at;
+  }
   return false;
+}
+
+inline void texcc_report_fault(const TexccCtx *c) {
+  if (TEXCC_CHECKS && c->guard->line != 0)
+    texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, c->guard->line, c->guard->lineAt,
+                static_cast<int>(TEXCC_LOOP_BUDGET), 0);
 }
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx

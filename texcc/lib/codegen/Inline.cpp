@@ -59,7 +59,7 @@ void emitInline(std::ostringstream &OS, const CompiledGraph &CG) {
   OS << "  default:\n"
      << "    break;\n"
      << "  }\n"
-     << "}\n";
+     << kernelEpilogue() << "}\n";
 }
 
 } // namespace texcc::codegen

@@ -294,7 +294,7 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
         "  for (uint k = 0u; k < numOutputs; ++k)\n"
         "    outputs[gid * TEXCC_MAX_OUTPUTS + k] =\n"
         "        TEXCC_SLOT(fakeStack[prog + 2u + 3u * numInstructions + k]);\n"
-        "}\n";
+     << kernelEpilogue() << "}\n";
 }
 
 /// texcc_uniforms for the interp kernel: one work-item walks every material's program and, for

@@ -180,7 +180,7 @@ void emitShape(std::ostringstream &OS, const CompiledGraph &CG) {
   OS << "  default:\n"
      << "    break;\n"
      << "  }\n"
-     << "}\n";
+     << kernelEpilogue() << "}\n";
 }
 
 } // namespace texcc::codegen

@@ -47,7 +47,7 @@ static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsi
   };
   OS << "  " << scratchAt(NodeIndex) << " =\n      "
      << widenToFloat4(N.Return, E.call(CG, NodeIndex), Target::OpenCL) << ";\n"
-     << "}\n\n";
+     << kernelEpilogue() << "}\n\n";
 }
 
 static void emitOutputsKernel(std::ostringstream &OS, const CompiledGraph &CG) {
