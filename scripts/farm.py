@@ -352,6 +352,15 @@ def render(args, options):
     files = make_bundle(args.scene, textures)
     digest = bundle_digest(files)
 
+    if args.address:
+        # `ray start --head` turns token authentication on (Ray 2.60); a driver joining it must
+        # ask for token mode itself, before Ray is imported, when it has the token
+        # (~/.ray/auth_token, RAY_AUTH_TOKEN_PATH or RAY_AUTH_TOKEN).
+        token_file = os.environ.get("RAY_AUTH_TOKEN_PATH",
+                                    os.path.join(os.path.expanduser("~"), ".ray", "auth_token"))
+        if "RAY_AUTH_MODE" not in os.environ and (os.environ.get("RAY_AUTH_TOKEN")
+                                                  or os.path.exists(token_file)):
+            os.environ["RAY_AUTH_MODE"] = "token"
     ray = import_ray()
     if args.address:
         ray.init(address=args.address, logging_level="ERROR", log_to_driver=False)
