@@ -249,7 +249,9 @@ def check_passthrough(options):
     while k < len(options):
         name = options[k].split("=", 1)[0]
         if name in OWN_OPTIONS:
-            raise FarmError("%s: set by farm.py per task; not a pass-through option" % name)
+            raise FarmError("%s: not passed to the tasks (farm.py sets -o, --region, --frame and "
+                            "--textures itself; --stats, --variance, --edit-script, "
+                            "--interactive and --list-devices do not apply to tiles)" % name)
         if not name.startswith("-"):
             raise FarmError("unexpected argument '%s'" % options[k])
         k += 2 if name in VALUE_OPTIONS and "=" not in options[k] else 1
@@ -258,6 +260,8 @@ def check_passthrough(options):
 def output_name(pattern, frame, sweep_index):
     if "#" not in pattern:
         raise FarmError("-o %s: the name needs #### for the frame number" % pattern)
+    if not pattern.lower().endswith(".exr"):
+        raise FarmError("-o %s: frames are written as .exr (linear float)" % pattern)
     start = pattern.index("#")
     end = start
     while end < len(pattern) and pattern[end] == "#":
@@ -433,7 +437,9 @@ def stitch(args):
 def main(argv):
     p = argparse.ArgumentParser(prog="farm.py", description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="command", required=True)
-    r = sub.add_parser("render", help="render frames and tiles on a Ray cluster")
+    r = sub.add_parser("render", help="render frames and tiles on a Ray cluster",
+                       epilog="Every other option (--size, --spp, --seed, --max-depth, --set, "
+                              "--fps, ...) is passed to each texrender task (docs/farm.md).")
     r.add_argument("scene")
     r.add_argument("--textures", help="texcc output folder (default: scene.json \"textures\")")
     r.add_argument("--frames", default="0", help="frames: N, A-B or a comma list (default 0)")
