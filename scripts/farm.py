@@ -317,21 +317,27 @@ def validate(texrender, scene, textures, options, frame):
 # --- render -----------------------------------------------------------------------------------
 
 class Progress:
+    """One status line on stderr: redrawn in place on a terminal (twice a second), else a new
+    line every 10 seconds and at the end (logs stay readable)."""
+
     def __init__(self, frames, tasks):
         self.frames, self.tasks, self.start, self.last = frames, tasks, time.time(), 0.0
+        self.tty = sys.stderr.isatty()
 
     def show(self, frames_done, tasks_done, in_flight, final=False):
         now = time.time()
-        if not final and now - self.last < 0.5:
+        if not final and now - self.last < (0.5 if self.tty else 10.0):
             return
         self.last = now
         eta = "?"
         if tasks_done:
             eta = "%.0f s" % ((now - self.start) / tasks_done * (self.tasks - tasks_done))
-        sys.stderr.write("\rfarm.py: frames %d/%d done, tiles %d/%d done, %d in flight, ETA %s   "
-                         % (frames_done, self.frames, tasks_done, self.tasks, in_flight, eta))
-        if final:
-            sys.stderr.write("\n")
+        line = ("farm.py: frames %d/%d done, tiles %d/%d done, %d in flight, ETA %s"
+                % (frames_done, self.frames, tasks_done, self.tasks, in_flight, eta))
+        if self.tty:
+            sys.stderr.write("\r" + line + "   " + ("\n" if final else ""))
+        else:
+            sys.stderr.write(line + "\n")
         sys.stderr.flush()
 
 
