@@ -321,7 +321,8 @@ class Progress:
     line every 10 seconds and at the end (logs stay readable)."""
 
     def __init__(self, frames, tasks):
-        self.frames, self.tasks, self.start, self.last = frames, tasks, time.time(), 0.0
+        self.frames, self.tasks, self.start = frames, tasks, time.time()
+        self.last = self.start
         self.tty = sys.stderr.isatty()
 
     def show(self, frames_done, tasks_done, in_flight, final=False):
@@ -371,6 +372,9 @@ def render(args, options):
         if "RAY_AUTH_MODE" not in os.environ and (os.environ.get("RAY_AUTH_TOKEN")
                                                   or os.path.exists(token_file)):
             os.environ["RAY_AUTH_MODE"] = "token"
+    # farm.py reports the first failed task itself; the tasks failing beside it would each print
+    # a traceback at exit ("Unhandled error").
+    os.environ.setdefault("RAY_IGNORE_UNHANDLED_ERRORS", "1")
     ray = import_ray()
     if args.address:
         ray.init(address=args.address, logging_level="ERROR", log_to_driver=False)
