@@ -318,6 +318,8 @@ struct TexccGuard {
   int hit;
   int material;
   int *fault;
+  int line;    // of the loop that spent the budget; 0: none did
+  uint lineAt; // at, when it did
 };
 
 struct TexccCtx {
