@@ -51,7 +51,13 @@ public:
       : Cl(Cl), Buf(B) {
     Ptr = Cl.queue().enqueueMapBuffer(Buf, CL_TRUE, Flags, 0, std::max<size_t>(Bytes, 1));
   }
-  ~Mapped() { Cl.queue().enqueueUnmapMemObject(Buf, Ptr); }
+  ~Mapped() {
+    try {
+      Cl.queue().enqueueUnmapMemObject(Buf, Ptr);
+    } catch (const cl::Error &) {
+      // Unwinding from an error already: the queue is failing, nothing more to do.
+    }
+  }
   template <typename T> T *as() const { return static_cast<T *>(Ptr); }
 
 private:
