@@ -661,7 +661,9 @@ def tail_sections():
     for name, text in (("bench/scenes.md", "atrium size and load/BVH time"),
                        ("bench/throughput.md", "ray throughput (`bench/throughput.py`)"),
                        ("bench/frontend-speed.md", "texcc front-end speed"),
-                       ("bench/farm.md", "Ray farm: per-task overhead, 1 vs 2 workers (`bench/farm.py`)")):
+                       ("bench/farm.md", "Ray farm: per-task overhead, 1 vs 2 workers (`bench/farm.py`)"),
+                       ("bench/loop-budget.md", "cost of texcc's loop budget per hit (`bench/per_hit.py`, checked against `--no-checks`)"),
+                       ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`, `bench/ao_embree.py`)")):
         if os.path.exists(os.path.join(common.ROOT, name)):
             lines.append("- [%s](%s): %s" % (name, name, text))
     return lines + [""]
