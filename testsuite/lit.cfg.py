@@ -16,6 +16,10 @@ config.excludes = ["Inputs", "Unit", "utils", "lit.cfg.py", "CMakeLists.txt"]
 config.test_source_root = os.path.dirname(__file__)
 config.test_exec_root = os.path.join(config.texcc_obj_root, "testsuite")
 
+# The sanitizer build (scripts/test-asan.sh): ASan reserves terabytes of address space for its
+# shadow memory, so tests that pin memory with `ulimit -v` cannot run there (UNSUPPORTED: asan).
+if getattr(config, "texcc_sanitize", "OFF").upper() in ("ON", "1", "TRUE", "YES"):
+    config.available_features.add("asan")
 tools = config.texcc_tools_dir
 config.substitutions.append(("%texcc-src", config.texcc_src_root))
 config.substitutions.append(("%inputs", os.path.join(config.test_source_root, "Inputs")))
