@@ -134,10 +134,17 @@ def voronoi_variant(name, dims, feature, metric="EUCLIDEAN", normalize=False, sc
     feeds = {"Vector": "P"}
     if dims == 4:  # W fed from the position's y
         feeds["W"] = args["w"] = "P.y"
+    if dims == 1:  # W only, fed from the position's x; a line has no metric (texcc takes none)
+        feeds = {"W": "P.x"}
+        del args["vector"], args["metric"], args["exponent"]
+        args = dict({"w": "P.x"}, **args)
     if feature == "N_SPHERE_RADIUS":
         outputs = [("Radius", fn + "Radius", 1)]
     elif feature == "DISTANCE_TO_EDGE":
         outputs = [("Distance", fn + "Distance", 1)]
+    elif dims == 1:
+        outputs = [("Distance", fn + "Distance", 1), ("Color", fn + "Color", 3),
+                   ("W", fn + "W", 1)]
     else:
         outputs = [("Distance", fn + "Distance", 1), ("Color", fn + "Color", 3),
                    ("Position", fn + "Position", 3)] + ([("W", fn + "W", 1)] if dims == 4 else [])
@@ -167,6 +174,13 @@ voronoi_variant("voronoi4d-f2-chebychev", 4, "F2", "CHEBYCHEV", scale=1.5, norma
 voronoi_variant("voronoi4d-smooth-f1", 4, "SMOOTH_F1", scale=1.5, smoothness=0.5)
 voronoi_variant("voronoi4d-edge", 4, "DISTANCE_TO_EDGE", scale=1.5)
 voronoi_variant("voronoi4d-nsphere", 4, "N_SPHERE_RADIUS", scale=1.5)
+voronoi_variant("voronoi1d-f1", 1, "F1", scale=2.0)
+voronoi_variant("voronoi1d-f1-detail", 1, "F1", scale=2.0, detail=2.5, roughness=0.6,
+                randomness=0.7, normalize=True)
+voronoi_variant("voronoi1d-f2", 1, "F2", scale=2.0, normalize=True)
+voronoi_variant("voronoi1d-smooth-f1", 1, "SMOOTH_F1", scale=2.0, smoothness=0.7)
+voronoi_variant("voronoi1d-edge", 1, "DISTANCE_TO_EDGE", scale=2.0, detail=1.5, normalize=True)
+voronoi_variant("voronoi1d-nsphere", 1, "N_SPHERE_RADIUS", scale=2.0, randomness=0.8)
 
 # Cycles' NodeMathType order: textures/blender/math.cl's operation numbers.
 MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "SINE", "COSINE", "TANGENT", "ARCSINE",
@@ -219,8 +233,20 @@ for name, ctype, lo, hi in (("clamp-minmax", "MINMAX", 0.1, 1.2),
 
 variant("combine-xyz", "ShaderNodeCombineXYZ", {}, {}, {"X": "P.y", "Y": "P.z", "Z": "P.x"},
         "converter.cl", [("Vector", "blCombineXYZ", 3)], {"x": "P.y", "y": "P.z", "z": "P.x"})
-variant("geometry-position", "ShaderNodeNewGeometry", {}, {}, {}, "converter.cl",
+variant("geometry-position", "ShaderNodeNewGeometry", {}, {}, {}, "input.cl",
         [("Position", "blGeometryPosition", 3)], {})
+# Texture Coordinate at the plane's points (texcc-eval sets ObjectPos to the point; the plane's
+# object transform is the identity). Generated takes the mesh's bounding box, as the exporter
+# passes it. UV and Normal read TexCoord0 and Normal, which texcc-eval does not set from the
+# points: they have no fixture.
+_CORNERS = [[ORIGIN[k] + i * AXIS_U[k] + j * AXIS_V[k] for k in range(3)]
+            for i in (0, 1) for j in (0, 1)]
+variant("texcoord-object", "ShaderNodeTexCoord", {}, {}, {}, "input.cl",
+        [("Object", "blTexCoordObject", 3)], {})
+variant("texcoord-generated", "ShaderNodeTexCoord", {}, {}, {}, "input.cl",
+        [("Generated", "blTexCoordGenerated", 3)],
+        {"bboxMin": [min(c[k] for c in _CORNERS) for k in range(3)],
+         "bboxMax": [max(c[k] for c in _CORNERS) for k in range(3)]})
 
 RAMP_STOPS = [(0.15, (0.9, 0.2, 0.1, 1.0)), (0.4, (0.1, 0.8, 0.3, 0.5)),
               (0.65, (0.2, 0.3, 0.9, 0.8)), (0.9, (1.0, 1.0, 0.2, 0.2))]

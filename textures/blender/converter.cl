@@ -1,12 +1,10 @@
-/* blender/converter.cl: Blender's Separate XYZ and Combine XYZ nodes, and the shading point's
- * Position (Geometry node), one texture function per output.
+/* blender/converter.cl: Blender's Separate XYZ and Combine XYZ nodes, one texture function per
+ * output (the Geometry node is in input.cl).
  *
  *   float  blSeparateXYZX(float3 vector)     the X output of Separate XYZ
  *   float  blSeparateXYZY(float3 vector)     Y
  *   float  blSeparateXYZZ(float3 vector)     Z
  *   float3 blCombineXYZ(float x, float y, float z)
- *   float3 blGeometryPosition()              the shading point (world space), as Cycles' Geometry
- *                                            node's Position
  *
  * Parameters:
  *
@@ -23,5 +21,3 @@ float blSeparateXYZY(float3 vector) { return vector.y; }
 float blSeparateXYZZ(float3 vector) { return vector.z; }
 
 float3 blCombineXYZ(float x, float y, float z) { return (float3)(x, y, z); }
-
-float3 blGeometryPosition() { return readAttr("WorldPos"); }

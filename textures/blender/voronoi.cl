@@ -1,4 +1,5 @@
-/* blender/voronoi.cl: Blender's Voronoi Texture node (Cycles, Blender 5.0), value for value.
+/* blender/voronoi.cl: Blender's Voronoi Texture node (Cycles, Blender 5.0), 1D to 4D, value for
+ * value.
  *
  * Worley noise: one feature point per integer cell of Vector * Scale, jittered by the cell's
  * PCG hash times Randomness. F1 is the distance to the closest point, F2 to the second
@@ -19,6 +20,12 @@
  *   blVoronoi3DDistance, blVoronoi3DColor, blVoronoi3DPosition, blVoronoi3DRadius: the same in 3D
  *   blVoronoi4DDistance, ...Color, ...Position, ...W, ...Radius(float3 vector, float w, then as
  *                              above): 4D, W its fourth coordinate and output
+ *   float  blVoronoi1DDistance(float w, float scale, float detail, float roughness,
+ *                              float lacunarity, float smoothness, float randomness,
+ *                              int feature, int normalize)
+ *   float3 blVoronoi1DColor, float blVoronoi1DW, float blVoronoi1DRadius (same parameters):
+ *                              1D over W (Blender's W output is the feature point); a line has
+ *                              one metric, so 1D takes no metric or exponent
  *
  * An output the feature does not produce is 0, as in Blender (Distance of N-Sphere Radius, ...).
  *
@@ -26,7 +33,8 @@
  *
  *   | name       | type   | default | meaning                                                 |
  *   |------------|--------|---------|---------------------------------------------------------|
- *   | vector     | float3 | -       | lookup point (2D uses x, y)                             |
+ *   | vector     | float3 | -       | lookup point (2D uses x, y; 1D has none)                |
+ *   | w          | float  | 0.0     | fourth coordinate (4D), the lookup point (1D)           |
  *   | scale      | float  | 5.0     | cells per unit of vector                                |
  *   | detail     | float  | 0.0     | octaves beyond the first, clamped to [0, 15]            |
  *   | roughness  | float  | 0.5     | amplitude factor per octave, clamped to [0, 1]          |
@@ -42,6 +50,8 @@
 #include "hash.h"
 
 float blDot(float4 a, float4 b, int dims) {
+  if (dims == 1)
+    return a.x * b.x;
   if (dims == 2)
     return a.x * b.x + a.y * b.y;
   if (dims == 3)
@@ -55,6 +65,8 @@ float blEuclid(float4 d, int dims) { return sqrt(blDot(d, d, dims)); }
  * (Cycles' hash_int2_to_float2 / hash_int3_to_float3, colour hash_int2_to_float3 /
  * hash_int3_to_float3). c holds the cell's integer coordinates as floats. */
 float4 blVoronoiCellOffset(float4 c, int dims) {
+  if (dims == 1) /* 1D hashes the cell's float, not its integer (hash_float_to_float) */
+    return (float4)(blHashFloat1(c.x), 0.0f, 0.0f, 0.0f);
   if (dims == 2)
     return blHashInt2((int)c.x, (int)c.y);
   if (dims == 4)
@@ -63,6 +75,8 @@ float4 blVoronoiCellOffset(float4 c, int dims) {
 }
 
 float3 blVoronoiCellColor(float4 c, int dims) {
+  if (dims == 1)
+    return (float3)(blHashFloat1(c.x), blHashFloat2(c.x, 1.0f), blHashFloat2(c.x, 2.0f));
   if (dims == 4)
     return blHashInt4((int)c.x, (int)c.y, (int)c.z, (int)c.w).xyz;
   return blHashInt3((int)c.x, (int)c.y, dims == 2 ? 0 : (int)c.z).xyz;
@@ -71,6 +85,8 @@ float3 blVoronoiCellColor(float4 c, int dims) {
 /* The metric over the first dims components. */
 float blVoronoiMetric(float4 a, float4 b, int dims, int metric, float exponent) {
   float dx = fabs(a.x - b.x), dy = fabs(a.y - b.y), dz = fabs(a.z - b.z), dw = fabs(a.w - b.w);
+  if (dims == 1) /* every metric is the absolute difference on a line */
+    return dx;
   if (metric == 1)
     return dims == 2 ? dx + dy : (dims == 3 ? dx + dy + dz : dx + dy + dz + dw);
   if (metric == 2)
@@ -102,7 +118,8 @@ float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exp
   float4 cell = floor(coord);
   float4 rel = coord - cell;
   int reach = feature == 2 ? 2 : 1;
-  int kreach = dims == 2 ? 0 : reach, ureach = dims == 4 ? reach : 0;
+  int jreach = dims == 1 ? 0 : reach, kreach = dims <= 2 ? 0 : reach;
+  int ureach = dims == 4 ? reach : 0;
   float d1 = 3.402823466e+38f, d2 = 3.402823466e+38f;
   float4 o1 = (float4)(0.0f), o2 = (float4)(0.0f), p1 = (float4)(0.0f), p2 = (float4)(0.0f);
   float sd = 0.0f, h = -1.0f;
@@ -110,7 +127,7 @@ float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exp
   float4 sp = (float4)(0.0f);
   for (int u = -ureach; u <= ureach; u++)
     for (int k = -kreach; k <= kreach; k++)
-      for (int j = -reach; j <= reach; j++)
+      for (int j = -jreach; j <= jreach; j++)
         for (int i = -reach; i <= reach; i++) {
           float4 off = (float4)((float)i, (float)j, (float)k, (float)u);
           float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
@@ -138,7 +155,9 @@ float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exp
         }
   if (feature == 2) {
     /* The correction above is subtracted from every component; 2D has no z, 2D and 3D no w. */
-    if (dims == 2)
+    if (dims == 1)
+      sp.y = 0.0f;
+    if (dims <= 2)
       sp.z = 0.0f;
     if (dims <= 3)
       sp.w = 0.0f;
@@ -192,16 +211,27 @@ float blVoronoiEdgeOctave(float4 coord, int dims, float randomness) {
   return best;
 }
 
+/* Distance to Edge of one octave in 1D: Cycles measures from the midpoints between this cell's
+ * point and its two neighbours' (not from the closest point's bisectors, as in 2D-4D). */
+float blVoronoiEdgeOctave1D(float coord, float randomness) {
+  float cell = floor(coord);
+  float rel = coord - cell;
+  float mid = blHashFloat1(cell) * randomness;
+  float left = -1.0f + blHashFloat1(cell - 1.0f) * randomness;
+  float right = 1.0f + blHashFloat1(cell + 1.0f) * randomness;
+  return fmin(fabs((mid + left) / 2.0f - rel), fabs((mid + right) / 2.0f - rel));
+}
+
 /* N-Sphere Radius: half the distance from the closest point to the point closest to it. */
 float blVoronoiRadius(float4 coord, int dims, float randomness) {
   float4 cell = floor(coord);
   float4 rel = coord - cell;
-  int kreach = dims == 2 ? 0 : 1, ureach = dims == 4 ? 1 : 0;
+  int jreach = dims == 1 ? 0 : 1, kreach = dims <= 2 ? 0 : 1, ureach = dims == 4 ? 1 : 0;
   float4 closest = (float4)(0.0f), closestOff = (float4)(0.0f);
   float best = 3.402823466e+38f;
   for (int u = -ureach; u <= ureach; u++)
     for (int k = -kreach; k <= kreach; k++)
-      for (int j = -1; j <= 1; j++)
+      for (int j = -jreach; j <= jreach; j++)
         for (int i = -1; i <= 1; i++) {
           float4 off = (float4)((float)i, (float)j, (float)k, (float)u);
           float4 point = off + blVoronoiCellOffset(cell + off, dims) * randomness;
@@ -216,7 +246,7 @@ float blVoronoiRadius(float4 coord, int dims, float randomness) {
   float4 neighbour = (float4)(0.0f);
   for (int u = -ureach; u <= ureach; u++)
     for (int k = -kreach; k <= kreach; k++)
-      for (int j = -1; j <= 1; j++)
+      for (int j = -jreach; j <= jreach; j++)
         for (int i = -1; i <= 1; i++) {
           if (i == 0 && j == 0 && k == 0 && u == 0)
             continue;
@@ -241,6 +271,8 @@ float4 blVoronoiTexture(float3 vector, float w, int dims, float scale, float det
   randomness = clamp(randomness, 0.0f, 1.0f);
   smoothness = clamp(smoothness / 2.0f, 0.0f, 0.5f);
   float4 coord = (float4)(vector * scale, dims == 4 ? w * scale : 0.0f);
+  if (dims == 1)
+    coord = (float4)(w * scale, 0.0f, 0.0f, 0.0f);
   if (dims == 2)
     coord.z = 0.0f;
   if (feature == 4)
@@ -254,7 +286,8 @@ float4 blVoronoiTexture(float3 vector, float w, int dims, float scale, float det
     float maxDistance = 0.5f + 0.5f * randomness;
     float maxAmplitude = maxDistance, distance = 8.0f;
     for (int i = 0; i <= ceil(detail); ++i) {
-      float d = blVoronoiEdgeOctave(coord * octaveScale, dims, randomness);
+      float d = dims == 1 ? blVoronoiEdgeOctave1D(coord.x * octaveScale, randomness)
+                          : blVoronoiEdgeOctave(coord * octaveScale, dims, randomness);
       if (zeroInput) {
         distance = d;
         break;
@@ -420,4 +453,30 @@ float blVoronoi4DRadius(float3 vector, float w, float scale, float detail, float
                         int feature, int metric, int normalize) {
   return blVoronoiTexture(vector, w, 4, scale, detail, roughness, lacunarity, smoothness,
                           exponent, randomness, feature, metric, normalize, 3).x;
+}
+
+/* 1D: the W input only; every metric is |a - b| on a line, so there is no metric or exponent.
+ * Position is the W output. */
+float blVoronoi1DDistance(float w, float scale, float detail, float roughness, float lacunarity,
+                          float smoothness, float randomness, int feature, int normalize) {
+  return blVoronoiTexture((float3)(0.0f), w, 1, scale, detail, roughness, lacunarity, smoothness,
+                          1.0f, randomness, feature, 0, normalize, 0).x;
+}
+
+float3 blVoronoi1DColor(float w, float scale, float detail, float roughness, float lacunarity,
+                        float smoothness, float randomness, int feature, int normalize) {
+  return blVoronoiTexture((float3)(0.0f), w, 1, scale, detail, roughness, lacunarity, smoothness,
+                          1.0f, randomness, feature, 0, normalize, 1).xyz;
+}
+
+float blVoronoi1DW(float w, float scale, float detail, float roughness, float lacunarity,
+                   float smoothness, float randomness, int feature, int normalize) {
+  return blVoronoiTexture((float3)(0.0f), w, 1, scale, detail, roughness, lacunarity, smoothness,
+                          1.0f, randomness, feature, 0, normalize, 2).x;
+}
+
+float blVoronoi1DRadius(float w, float scale, float detail, float roughness, float lacunarity,
+                        float smoothness, float randomness, int feature, int normalize) {
+  return blVoronoiTexture((float3)(0.0f), w, 1, scale, detail, roughness, lacunarity, smoothness,
+                          1.0f, randomness, feature, 0, normalize, 3).x;
 }
