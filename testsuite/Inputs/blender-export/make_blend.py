@@ -1,0 +1,147 @@
+"""make_blend.py: small .blend files for the exporter's tests (bpy; run with .venv's Python).
+
+    make_blend.py OUT.blend [CASE]
+
+CASE "scene" (default): a camera, a sun, a uniform world, a ground plane with a grey diffuse, a
+subdivided cube (a Subdivision Surface modifier: the exporter applies it) whose material mixes a
+diffuse coloured by Noise -> Color Ramp with a glossy by the noise's Fac (Mix Shader), and an
+emissive quad. The other cases break one thing each, for the error tests:
+"no-camera", "empty" (a camera and nothing to render), "unsupported-node" (a Sky Texture feeds the
+cube's colour), "loop" (two Math nodes feed each other), "point-light".
+"""
+import sys
+
+import bpy
+
+
+def material_rust(name):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    t = m.node_tree
+    t.nodes.clear()
+    out = t.nodes.new("ShaderNodeOutputMaterial")
+    noise = t.nodes.new("ShaderNodeTexNoise")
+    noise.name = "Noise"
+    noise.inputs["Scale"].default_value = 3.0
+    noise.inputs["Detail"].default_value = 4.0
+    ramp = t.nodes.new("ShaderNodeValToRGB")
+    ramp.name = "Ramp"
+    ramp.color_ramp.elements[0].position = 0.35
+    ramp.color_ramp.elements[0].color = (0.6, 0.25, 0.08, 1.0)
+    ramp.color_ramp.elements[1].position = 0.65
+    ramp.color_ramp.elements[1].color = (0.3, 0.3, 0.32, 1.0)
+    diffuse = t.nodes.new("ShaderNodeBsdfDiffuse")
+    glossy = t.nodes.new("ShaderNodeBsdfGlossy")
+    glossy.inputs["Roughness"].default_value = 0.3
+    glossy.inputs["Color"].default_value = (0.9, 0.9, 0.9, 1.0)
+    mix = t.nodes.new("ShaderNodeMixShader")
+    t.links.new(noise.outputs["Fac"], ramp.inputs["Fac"])
+    t.links.new(ramp.outputs["Color"], diffuse.inputs["Color"])
+    t.links.new(noise.outputs["Fac"], mix.inputs["Fac"])
+    t.links.new(diffuse.outputs["BSDF"], mix.inputs[1])
+    t.links.new(glossy.outputs["BSDF"], mix.inputs[2])
+    t.links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    return m, t, ramp, diffuse
+
+
+def simple(name, bl_idname, color, strength=None):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    t = m.node_tree
+    t.nodes.clear()
+    out = t.nodes.new("ShaderNodeOutputMaterial")
+    node = t.nodes.new(bl_idname)
+    node.inputs["Color"].default_value = color
+    if strength is not None:
+        node.inputs["Strength"].default_value = strength
+    t.links.new(node.outputs[0], out.inputs["Surface"])
+    return m
+
+
+def add_mesh(name, mesh, material):
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    mesh.materials.append(material)
+    return obj
+
+
+def quad(name, size, z, flip=False):
+    s = size / 2.0
+    mesh = bpy.data.meshes.new(name)
+    face = (0, 1, 2, 3) if not flip else (3, 2, 1, 0)
+    mesh.from_pydata([(-s, -s, z), (s, -s, z), (s, s, z), (-s, s, z)], [], [face])
+    uv = mesh.uv_layers.new(name="UV")
+    for loop, coord in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)]):
+        uv.data[loop].uv = coord
+    return mesh
+
+
+def cube_mesh():
+    mesh = bpy.data.meshes.new("cube")
+    v = [(x, y, z) for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (0.0, 1.0)]
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    mesh.from_pydata(v, [], faces)
+    return mesh
+
+
+def main():
+    out = sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else sys.argv[1]
+    args = sys.argv[sys.argv.index(out) + 1:]
+    case = args[0] if args else "scene"
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    scene.render.resolution_x, scene.render.resolution_y = 64, 48
+    scene.render.resolution_percentage = 100
+    scene.cycles.samples = 16
+    scene.cycles.max_bounces = 6
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = True
+    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.2, 0.25, 0.3, 1.0)
+    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+    scene.world = world
+    if case != "no-camera":
+        cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
+        cam.data.lens = 35.0
+        cam.location = (3.0, -3.0, 2.2)
+        cam.rotation_euler = (1.15, 0.0, 0.785398)
+        scene.collection.objects.link(cam)
+        scene.camera = cam
+    if case == "empty":
+        bpy.ops.wm.save_as_mainfile(filepath=out)
+        return
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.data.angle = 0.00918
+    sun.rotation_euler = (0.6, 0.2, 0.4)
+    scene.collection.objects.link(sun)
+    if case == "point-light":
+        lamp = bpy.data.objects.new("Lamp", bpy.data.lights.new("Lamp", "POINT"))
+        scene.collection.objects.link(lamp)
+    rust, tree, ramp, diffuse = material_rust("Rust")
+    if case == "unsupported-node":
+        sky = tree.nodes.new("ShaderNodeTexSky")
+        sky.name = "Sky"
+        tree.links.new(sky.outputs["Color"], diffuse.inputs["Color"])
+    if case == "loop":
+        a = tree.nodes.new("ShaderNodeMath")
+        a.name = "MathA"
+        b = tree.nodes.new("ShaderNodeMath")
+        b.name = "MathB"
+        tree.links.new(a.outputs[0], b.inputs[0])
+        tree.links.new(b.outputs[0], a.inputs[0])
+        tree.links.new(a.outputs[0], ramp.inputs["Fac"])
+    add_mesh("Ground", quad("ground", 6.0, 0.0), simple("Grey", "ShaderNodeBsdfDiffuse",
+                                                        (0.5, 0.5, 0.5, 1.0)))
+    cube = add_mesh("Cube", cube_mesh(), rust)
+    cube.location = (0.2, 0.1, 0.0)
+    cube.rotation_euler = (0.0, 0.0, 0.5)
+    sub = cube.modifiers.new("Subdivision", "SUBSURF")
+    sub.levels = sub.render_levels = 1
+    lamp = add_mesh("Panel", quad("panel", 1.0, 2.5, flip=True),
+                    simple("Light", "ShaderNodeEmission", (1.0, 0.9, 0.8, 1.0), 5.0))
+    lamp.location = (-1.0, 0.5, 0.0)
+    bpy.ops.wm.save_as_mainfile(filepath=out)
+
+
+main()
