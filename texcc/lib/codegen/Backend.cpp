@@ -1,0 +1,150 @@
+// The backends of the evaluation modes and their registry: the one table that spells the mode
+// names. Each backend states its policy here (hoisting, the interpreter's opcode tables, extra
+// files); its code generator lives in its own file (Interp.cpp, Inline.cpp, Wavefront.cpp,
+// Shape.cpp, Host.cpp).
+#include "texcc/Codegen/Backend.h"
+
+#include "Emit.h"
+
+namespace texcc::codegen {
+namespace {
+
+class InterpBackend final : public Backend {
+public:
+  const char *name() const override { return "interp"; }
+  bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
+  void configureGraph(graph::CompileOptions &C, const BackendOptions &O) const override {
+    C.MaxSuperinstructions = O.MaxSuperinstructions;
+    C.LightCost = O.LightCost;
+    C.MaxQuickened = O.MaxQuickened;
+  }
+  void configureCodegen(CodegenOptions &C, const BackendOptions &O) const override {
+    C.InterpHoists = !O.NoHoist;
+  }
+  bool interprets() const override { return true; }
+  const char *summary() const override {
+    return "the interpreter: kernel texcc_proctex runs the material's program from fakeStack,\n"
+           " *      one switch case per texture function (and per superinstruction)";
+  }
+  void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
+            const CodegenOptions &Opts) const override {
+    emitInterp(OS, CG, Opts.InterpHoists);
+  }
+};
+
+class InlineBackend final : public Backend {
+public:
+  const char *name() const override { return "inline"; }
+  const char *summary() const override {
+    return "per material a straight-line function (constants as literals), and kernel\n"
+           " *      texcc_proctex, which switches on the material";
+  }
+  void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
+            const CodegenOptions &) const override {
+    emitInline(OS, CG);
+  }
+};
+
+class WavefrontBackend final : public Backend {
+public:
+  const char *name() const override { return "wavefront"; }
+  const char *summary() const override {
+    return "one kernel texcc_wf_<node> per live node (launch order: layout.json kernel.launches),\n"
+           " *      then texcc_wf_outputs";
+  }
+  void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
+            const CodegenOptions &) const override {
+    emitWavefront(OS, CG);
+  }
+};
+
+/// Shape code, plus the interp kernel of the same graph that the runtime runs while a new
+/// shape's kernel builds (without hoisting: texcc_uniforms is the shape kernel's).
+class ShapeBackend final : public Backend {
+public:
+  const char *name() const override { return "shape"; }
+  bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
+  void configureGraph(graph::CompileOptions &C, const BackendOptions &O) const override {
+    C.MaxSuperinstructions = O.MaxSuperinstructions;
+    C.LightCost = O.LightCost;
+  }
+  bool writesInterpreter() const override { return true; }
+  std::set<std::string> hoistedInUserCode(const graph::CompiledGraph &CG) const override {
+    return hoistingFunctions(CG);
+  }
+  const char *summary() const override {
+    return "per material shape a straight-line body reading its constants from fakeStack\n"
+           " *      (layout.json kernel.shapes), and kernel texcc_proctex, which switches on the\n"
+           " *      material";
+  }
+  void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
+            const CodegenOptions &) const override {
+    emitShape(OS, CG);
+  }
+  void addOutputs(std::vector<OutputFile> &Files, const graph::CompiledGraph &CG,
+                  const CodegenOptions &Opts) const override {
+    CodegenOptions Interp = Opts;
+    Interp.EvalMode = Mode::Interp;
+    Files.push_back({InterpFallbackFile, generateKernel(CG, Interp)});
+  }
+};
+
+/// C++ for the host, whatever the mode: per material a straight-line function.
+class HostBackend final : public Backend {
+public:
+  const char *name() const override { return "host"; }
+  const char *summary() const override {
+    return "per material a straight-line C++ function (constants as literals), and the extern \"C\"\n"
+           " *      entry texcc_host_evaluate(material, hit, settings, texels, images, outputs)";
+  }
+  void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
+            const CodegenOptions &) const override {
+    emitHost(OS, CG);
+  }
+};
+
+const InterpBackend Interp;
+const InlineBackend Inline;
+const WavefrontBackend Wavefront;
+const ShapeBackend Shape;
+const HostBackend Host;
+
+struct ModeEntry {
+  Mode M;
+  const Backend *B;
+};
+/// The registry: every mode, in the order diagnostics list them.
+const ModeEntry Modes[] = {{Mode::Interp, &Interp},
+                           {Mode::Inline, &Inline},
+                           {Mode::Wavefront, &Wavefront},
+                           {Mode::Shape, &Shape}};
+
+} // namespace
+
+const Backend &backendFor(Mode M, Target T) {
+  if (T == Target::Host)
+    return Host;
+  for (const ModeEntry &E : Modes)
+    if (E.M == M)
+      return *E.B;
+  return Interp;
+}
+
+std::optional<Mode> parseMode(const std::string &S) {
+  for (const ModeEntry &E : Modes)
+    if (S == E.B->name())
+      return E.M;
+  return std::nullopt;
+}
+
+const char *modeName(Mode M) { return backendFor(M, Target::OpenCL).name(); }
+
+std::string modeNameList() {
+  std::string S;
+  const size_t N = std::size(Modes);
+  for (size_t I = 0; I < N; ++I)
+    S += std::string(I == 0 ? "" : I + 1 == N ? " or " : ", ") + Modes[I].B->name();
+  return S;
+}
+
+} // namespace texcc::codegen
