@@ -718,7 +718,7 @@ class Export:
                 and not isinstance(bsdf["strength"], dict):
             # A constant Emission is an area light: the mesh emits, the surface is black.
             color = bsdf["color"] if isinstance(bsdf["color"], list) else [bsdf["color"]] * 3
-            emission = [c * bsdf["strength"] for c in color]
+            emission = [to_f32(c * bsdf["strength"]) for c in color]  # as Cycles multiplies
             bsdf = {"bsdf": "diffuse", "color": [0.0, 0.0, 0.0]}
         return {"bsdf": bsdf, "emission": emission, "nodes": nodes}
 
@@ -952,6 +952,11 @@ class Export:
             text = re.sub(r"\[\s+([-+0-9.eE,\s]+?)\s+\]", lambda m: "[%s]" % ", ".join(
                 x.strip() for x in m.group(1).split(",")), text)
             f.write(text + "\n")
+
+
+def to_f32(value):
+    import struct
+    return struct.unpack("<f", struct.pack("<f", value))[0]
 
 
 def short_floats(value):

@@ -69,3 +69,12 @@ if glob.glob(os.path.join(config.texcc_src_root, ".venv", "lib", "python3*", "si
 else:
     lit_config.note("Ray is not installed in .venv/ (pip install -r scripts/requirements-farm.txt): "
                     "tests that REQUIRE ray are skipped")
+
+# REQUIRES: bpy — the Blender exporter's tests (scripts/blender_export.py) need the bpy wheel in
+# .venv/ (the exporter installs it on first use: about 370 MB).
+if glob.glob(os.path.join(config.texcc_src_root, ".venv", "lib", "python3*", "site-packages",
+                          "bpy-*.dist-info")):
+    config.available_features.add("bpy")
+else:
+    lit_config.note("bpy is not installed in .venv/ (pip install bpy==5.0.1): tests that REQUIRE "
+                    "bpy (the Blender exporter on .blend files) are skipped")
