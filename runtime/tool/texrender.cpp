@@ -5,6 +5,7 @@
 // Exit 0 on success, 1 on any error, with a one-line reason first.
 #include "texcc/OutOfMemory.h"
 #include "texcc/StackGuard.h"
+#include "texcc/Version.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
 #include "texrender/LiveEdit.h"
@@ -165,7 +166,7 @@ Options parseArgs(int Argc, char **Argv) {
       std::cout << Usage;
       std::exit(0);
     } else if (A == "--version") {
-      std::cout << "texrender 0.1.0\n";
+      std::cout << "texrender " << texcc::versionString() << "\n";
       std::exit(0);
     } else if (A == "-o" || A == "--output") {
       O.Output = Next();
