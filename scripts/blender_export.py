@@ -305,8 +305,14 @@ def check_table(signatures):
 
 
 def supported_nodes_text():
-    names = sorted(set(k.replace("ShaderNode", "") for k in list(NODES) + list(SHADERS)))
-    return ", ".join(names + ["Bump", "RGB", "Value", "Reroute"])
+    """Blender's names of the nodes the exporter translates ("Noise Texture", ...)."""
+    import bpy
+    names = set()
+    for idname in list(NODES) + list(SHADERS) + ["ShaderNodeBump", "ShaderNodeRGB",
+                                                  "ShaderNodeValue", "NodeReroute"]:
+        kind = getattr(bpy.types, idname, None)
+        names.add(kind.bl_rna.name if kind is not None else idname)
+    return ", ".join(sorted(names))
 
 
 # --- Material translation -------------------------------------------------------------------
