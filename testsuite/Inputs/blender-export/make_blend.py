@@ -7,7 +7,9 @@ subdivided cube (a Subdivision Surface modifier: the exporter applies it) whose 
 diffuse coloured by Noise -> Color Ramp with a glossy by the noise's Fac (Mix Shader), and an
 emissive quad. The other cases break one thing each, for the error tests:
 "no-camera", "empty" (a camera and nothing to render), "unsupported-node" (a Sky Texture feeds the
-cube's colour), "loop" (two Math nodes feed each other), "point-light".
+cube's colour), "loop" (two Math nodes feed each other), "point-light". CASE "ao": an Ambient
+Occlusion node (4 samples, distance 0.7) times the noise drives the Mix Shader; "ao-conflict":
+also the ground's colour through a second AO node with another distance.
 """
 import sys
 
@@ -56,6 +58,14 @@ def simple(name, bl_idname, color, strength=None):
         node.inputs["Strength"].default_value = strength
     t.links.new(node.outputs[0], out.inputs["Surface"])
     return m
+
+
+def ambient_occlusion(tree, name, samples, distance):
+    ao = tree.nodes.new("ShaderNodeAmbientOcclusion")
+    ao.name = name
+    ao.samples = samples
+    ao.inputs["Distance"].default_value = distance
+    return ao
 
 
 def add_mesh(name, mesh, material):
@@ -131,8 +141,21 @@ def main():
         tree.links.new(a.outputs[0], b.inputs[0])
         tree.links.new(b.outputs[0], a.inputs[0])
         tree.links.new(a.outputs[0], ramp.inputs["Fac"])
-    add_mesh("Ground", quad("ground", 6.0, 0.0), simple("Grey", "ShaderNodeBsdfDiffuse",
-                                                        (0.5, 0.5, 0.5, 1.0)))
+    if case in ("ao", "ao-conflict"):
+        ao = ambient_occlusion(tree, "AO", 4, 0.7)
+        times = tree.nodes.new("ShaderNodeMath")
+        times.name = "Times"
+        times.operation = "MULTIPLY"
+        tree.links.new(ao.outputs["AO"], times.inputs[0])
+        tree.links.new(tree.nodes["Noise"].outputs["Fac"], times.inputs[1])
+        mix = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeMixShader")
+        tree.links.new(times.outputs[0], mix.inputs["Fac"])
+    grey = simple("Grey", "ShaderNodeBsdfDiffuse", (0.5, 0.5, 0.5, 1.0))
+    if case == "ao-conflict":
+        ao = ambient_occlusion(grey.node_tree, "Ground AO", 4, 1.5)
+        bsdf = next(n for n in grey.node_tree.nodes if n.bl_idname == "ShaderNodeBsdfDiffuse")
+        grey.node_tree.links.new(ao.outputs["Color"], bsdf.inputs["Color"])
+    add_mesh("Ground", quad("ground", 6.0, 0.0), grey)
     cube = add_mesh("Cube", cube_mesh(), rust)
     cube.location = (0.2, 0.1, 0.0)
     cube.rotation_euler = (0.0, 0.0, 0.5)
