@@ -1045,7 +1045,9 @@ def replace_dir(staging, final_dir):
 
 
 def main():
-    inside_blender = "--" in sys.argv and not sys.argv[0].endswith("blender_export.py")
+    # Inside Blender (`blender -b FILE --python blender_export.py -- ARGS`) bpy is loaded already
+    # and our arguments follow "--".
+    inside_blender = "bpy" in sys.modules and "--" in sys.argv
     argv = sys.argv[sys.argv.index("--") + 1:] if inside_blender else sys.argv[1:]
     options = parse_args(argv, inside_blender)
     final_dir = os.path.abspath(options.outdir)
