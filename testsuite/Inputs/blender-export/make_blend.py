@@ -9,7 +9,8 @@ emissive quad. The other cases break one thing each, for the error tests:
 "no-camera", "empty" (a camera and nothing to render), "unsupported-node" (a Sky Texture feeds the
 cube's colour), "loop" (two Math nodes feed each other), "point-light". CASE "ao": an Ambient
 Occlusion node (4 samples, distance 0.7) times the noise drives the Mix Shader; "ao-conflict":
-also the ground's colour through a second AO node with another distance.
+also the ground's colour through a second AO node with another distance; "principled-coat": the
+ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not have).
 """
 import sys
 
@@ -155,6 +156,11 @@ def main():
         ao = ambient_occlusion(grey.node_tree, "Ground AO", 4, 1.5)
         bsdf = next(n for n in grey.node_tree.nodes if n.bl_idname == "ShaderNodeBsdfDiffuse")
         grey.node_tree.links.new(ao.outputs["Color"], bsdf.inputs["Color"])
+    if case == "principled-coat":
+        grey = bpy.data.materials.new("Coated")
+        tree = grey.node_tree
+        principled = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeBsdfPrincipled")
+        principled.inputs["Coat Weight"].default_value = 0.5
     add_mesh("Ground", quad("ground", 6.0, 0.0), grey)
     cube = add_mesh("Cube", cube_mesh(), rust)
     cube.location = (0.2, 0.1, 0.0)
