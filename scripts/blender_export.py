@@ -877,11 +877,23 @@ class Export:
         return {"type": "sky", "radiance": color}
 
     # --- The whole scene ---
+    @staticmethod
+    def use_render_settings(scene):
+        """The bpy module evaluates the viewport's depsgraph; Cycles renders with the render
+        settings. The file is never saved, so the viewport takes them: each object's and
+        modifier's render visibility, and subdivision's render levels."""
+        for obj in scene.objects:
+            obj.hide_viewport = obj.hide_render
+            for modifier in obj.modifiers:
+                modifier.show_viewport = modifier.show_render
+                if hasattr(modifier, "render_levels") and hasattr(modifier, "levels"):
+                    modifier.levels = modifier.render_levels
+
     def run(self, scene, staging, final_dir):
-        bpy = self.bpy
+        self.use_render_settings(scene)
         if self.options.frame is not None:
             scene.frame_set(self.options.frame)
-        view_layer = scene.view_layers[0]
+        view_layer = next((v for v in scene.view_layers if v.use), scene.view_layers[0])
         depsgraph = view_layer.depsgraph
         depsgraph.update()
         camera, film = self.camera(scene, depsgraph)

@@ -10,7 +10,9 @@ emissive quad. The other cases break one thing each, for the error tests:
 cube's colour), "loop" (two Math nodes feed each other), "point-light". CASE "ao": an Ambient
 Occlusion node (4 samples, distance 0.7) times the noise drives the Mix Shader; "ao-conflict":
 also the ground's colour through a second AO node with another distance; "principled-coat": the
-ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not have).
+ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not have);
+"render-settings": the cube's Subdivision renders at level 2 (viewport 1), the panel is hidden in
+renders only.
 """
 import sys
 
@@ -170,6 +172,9 @@ def main():
     lamp = add_mesh("Panel", quad("panel", 1.0, 2.5, flip=True),
                     simple("Light", "ShaderNodeEmission", (1.0, 0.9, 0.8, 1.0), 5.0))
     lamp.location = (-1.0, 0.5, 0.0)
+    if case == "render-settings":
+        sub.render_levels = 2
+        lamp.hide_render = True
     bpy.ops.wm.save_as_mainfile(filepath=out)
 
 
