@@ -1,0 +1,279 @@
+"""blender_nodes.py: which library function and which arguments each Blender node becomes.
+
+The one table of the Blender exporter (scripts/blender_export.py, docs/blender.md): per Blender
+node type, the textures/blender/ function of each output socket and what feeds each of its
+parameters; the shaders the exporter translates; the library's signatures, read from its .cl
+files, against which the table is checked when the exporter starts.
+"""
+
+import os
+import re
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+LIBRARY = os.path.join(ROOT, "textures", "blender")
+
+# --- The library's signatures ---------------------------------------------------------------
+
+_SIGNATURE = re.compile(r"^(float[234]?) (bl\w+)\(([^)]*)\)\s*\{", re.M)
+
+
+def library_signatures():
+    """{function: (file, return type, [(type, name)])}, read from textures/blender/*.cl."""
+    signatures = {}
+    for name in sorted(os.listdir(LIBRARY)):
+        if not name.endswith(".cl"):
+            continue
+        with open(os.path.join(LIBRARY, name)) as f:
+            text = f.read()
+        for m in _SIGNATURE.finditer(text):
+            params = []
+            for p in m.group(3).split(","):
+                words = p.split()
+                if words:
+                    params.append((" ".join(words[:-1]).replace(" *", "*"), words[-1].lstrip("*")))
+            signatures[m.group(2)] = (name, m.group(1), params)
+    return signatures
+
+
+# --- The node table -------------------------------------------------------------------------
+# Per Blender node type: `fn` maps an output socket's identifier to a library function (a
+# callable of the node when a setting picks the variant); `sockets` maps a function parameter to
+# the input socket (identifier) that feeds it, or a callable of the node returning one; `props`
+# maps a parameter to a callable of the node returning its constant (settings, ramps). A
+# parameter the function takes and the table does not name is an error in the table itself
+# (checked against the library's signatures when the exporter starts).
+
+MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "SINE", "COSINE", "TANGENT", "ARCSINE",
+            "ARCCOSINE", "ARCTANGENT", "POWER", "LOGARITHM", "MINIMUM", "MAXIMUM", "ROUND",
+            "LESS_THAN", "GREATER_THAN", "MODULO", "ABSOLUTE", "ARCTAN2", "FLOOR", "CEIL",
+            "FRACT", "SQRT", "INVERSE_SQRT", "SIGN", "EXPONENT", "RADIANS", "DEGREES", "SINH",
+            "COSH", "TANH", "TRUNC", "SNAP", "WRAP", "COMPARE", "MULTIPLY_ADD", "PINGPONG",
+            "SMOOTH_MIN", "SMOOTH_MAX", "FLOORED_MODULO"]
+VECTOR_MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "CROSS_PRODUCT", "PROJECT", "REFLECT",
+                   "DOT_PRODUCT", "DISTANCE", "LENGTH", "SCALE", "NORMALIZE", "SNAP", "FLOOR",
+                   "CEIL", "MODULO", "FRACTION", "ABSOLUTE", "MINIMUM", "MAXIMUM", "WRAP", "SINE",
+                   "COSINE", "TANGENT", "REFRACT", "FACEFORWARD", "MULTIPLY_ADD", "POWER", "SIGN"]
+BLEND_TYPES = ["MIX", "DARKEN", "MULTIPLY", "BURN", "LIGHTEN", "SCREEN", "DODGE", "ADD",
+               "OVERLAY", "SOFT_LIGHT", "LINEAR_LIGHT", "DIFFERENCE", "EXCLUSION", "SUBTRACT",
+               "DIVIDE", "HUE", "SATURATION", "COLOR", "VALUE"]
+NOISE_TYPES = ["MULTIFRACTAL", "FBM", "HYBRID_MULTIFRACTAL", "RIDGED_MULTIFRACTAL",
+               "HETERO_TERRAIN"]
+VORONOI_FEATURES = ["F1", "F2", "SMOOTH_F1", "DISTANCE_TO_EDGE", "N_SPHERE_RADIUS"]
+VORONOI_METRICS = ["EUCLIDEAN", "MANHATTAN", "CHEBYCHEV", "MINKOWSKI"]
+RAMP_MODES = ["LINEAR", "EASE", "B_SPLINE", "CARDINAL", "CONSTANT"]
+MAP_RANGE_TYPES = ["LINEAR", "STEPPED", "SMOOTHSTEP", "SMOOTHERSTEP"]
+GRADIENT_TYPES = ["LINEAR", "QUADRATIC", "EASING", "DIAGONAL", "RADIAL", "QUADRATIC_SPHERE",
+                  "SPHERICAL"]
+COLOR_MODES = ["RGB", "HSV", "HSL"]
+
+
+def _index(table, prop):
+    return lambda node: table.index(getattr(node, prop))
+
+
+def _flag(prop):
+    return lambda node: 1 if getattr(node, prop) else 0
+
+
+def _dims(node, prop):
+    return getattr(node, prop)[0]  # "3D" -> "3"
+
+
+def _same(names):
+    """Parameters fed by the socket of the same name, capitalised (scale <- Scale)."""
+    return {n: n[0].upper() + n[1:] for n in names}
+
+
+NOISE_SOCKETS = dict(_same(["scale", "detail", "roughness", "lacunarity", "offset", "gain",
+                            "distortion"]), vector="Vector", w="W")
+VORONOI_SOCKETS = dict(_same(["scale", "detail", "roughness", "lacunarity", "smoothness",
+                              "exponent", "randomness"]), vector="Vector", w="W")
+
+
+def _voronoi_fn(output):
+    return lambda node: "blVoronoi%sD%s" % (_dims(node, "voronoi_dimensions"), output)
+
+
+def _mix_fn(node):
+    if node.data_type == "FLOAT":
+        return "blMixFloat"
+    if node.data_type == "VECTOR":
+        return "blMixVector" if node.factor_mode == "UNIFORM" else "blMixVectorNonUniform"
+    return "blMixColor"
+
+
+def _mix_socket(kind):
+    def pick(node):
+        if kind == "Factor":
+            return "Factor_Vector" if node.data_type == "VECTOR" and \
+                node.factor_mode == "NON_UNIFORM" else "Factor_Float"
+        return kind + {"FLOAT": "_Float", "VECTOR": "_Vector", "RGBA": "_Color"}[node.data_type]
+    return pick
+
+
+def _ramp_colors(node):
+    return [list(e.color) for e in node.color_ramp.elements]
+
+
+def _map_range_socket(name):
+    return lambda node: name if node.data_type == "FLOAT" else \
+        name.replace(" ", "_") + "_FLOAT3"
+
+
+NODES = {
+    "ShaderNodeTexNoise": dict(
+        fn={"Fac": lambda n: "blNoise%sDFac" % _dims(n, "noise_dimensions"),
+            "Color": lambda n: "blNoise%sDColor" % _dims(n, "noise_dimensions")},
+        sockets=NOISE_SOCKETS, texture=True,
+        props={"type": _index(NOISE_TYPES, "noise_type"), "normalize": _flag("normalize")}),
+    "ShaderNodeTexVoronoi": dict(
+        fn={o: _voronoi_fn(o) for o in ("Distance", "Color", "Position", "W", "Radius")},
+        sockets=VORONOI_SOCKETS, texture=True,
+        props={"feature": _index(VORONOI_FEATURES, "feature"),
+               "metric": _index(VORONOI_METRICS, "distance"), "normalize": _flag("normalize")}),
+    "ShaderNodeTexWave": dict(
+        fn={"Color": "blWaveColor", "Fac": "blWaveFac"}, texture=True,
+        sockets=dict(_same(["scale", "distortion", "detail"]), vector="Vector",
+                     detailScale="Detail Scale", detailRoughness="Detail Roughness",
+                     phaseOffset="Phase Offset"),
+        props={"waveType": lambda n: ["BANDS", "RINGS"].index(n.wave_type),
+               "direction": lambda n: (["X", "Y", "Z", "DIAGONAL"].index(n.bands_direction)
+                                       if n.wave_type == "BANDS" else
+                                       ["X", "Y", "Z", "SPHERICAL"].index(n.rings_direction)),
+               "profile": _index(["SIN", "SAW", "TRI"], "wave_profile")}),
+    "ShaderNodeTexGradient": dict(
+        fn={"Color": "blGradientColor", "Fac": "blGradientFac"}, texture=True,
+        sockets={"vector": "Vector"}, props={"gradientType": _index(GRADIENT_TYPES,
+                                                                    "gradient_type")}),
+    "ShaderNodeTexChecker": dict(
+        fn={"Color": "blCheckerColor", "Fac": "blCheckerFac"}, texture=True,
+        sockets={"vector": "Vector", "color1": "Color1", "color2": "Color2", "scale": "Scale"}),
+    "ShaderNodeTexMagic": dict(
+        fn={"Color": "blMagicColor", "Fac": "blMagicFac"}, texture=True,
+        sockets=dict(_same(["scale", "distortion"]), vector="Vector"),
+        props={"depth": lambda n: n.turbulence_depth}),
+    "ShaderNodeTexWhiteNoise": dict(
+        fn={"Value": lambda n: "blWhiteNoise%sDValue" % _dims(n, "noise_dimensions"),
+            "Color": lambda n: "blWhiteNoise%sDColor" % _dims(n, "noise_dimensions")},
+        texture=True, sockets={"vector": "Vector", "w": "W"}),
+    "ShaderNodeTexBrick": dict(
+        fn={"Color": "blBrickColor", "Fac": "blBrickFac"}, texture=True,
+        sockets={"vector": "Vector", "color1": "Color1", "color2": "Color2", "mortar": "Mortar",
+                 "scale": "Scale", "mortarSize": "Mortar Size", "mortarSmooth": "Mortar Smooth",
+                 "bias": "Bias", "brickWidth": "Brick Width", "rowHeight": "Row Height"},
+        props={"offsetAmount": lambda n: n.offset, "offsetFrequency": lambda n: n.offset_frequency,
+               "squashAmount": lambda n: n.squash,
+               "squashFrequency": lambda n: n.squash_frequency}),
+    "ShaderNodeValToRGB": dict(
+        fn={"Color": "blColorRampColor", "Alpha": "blColorRampAlpha"}, sockets={"fac": "Fac"},
+        props={"colors": _ramp_colors,
+               "positions": lambda n: [e.position for e in n.color_ramp.elements],
+               "count": lambda n: len(n.color_ramp.elements),
+               "interpolation": lambda n: RAMP_MODES.index(n.color_ramp.interpolation)}),
+    "ShaderNodeMath": dict(
+        fn={"Value": "blMath"}, sockets={"a": "Value", "b": "Value_001", "c": "Value_002"},
+        props={"operation": _index(MATH_OPS, "operation"), "useClamp": _flag("use_clamp")}),
+    "ShaderNodeVectorMath": dict(
+        fn={"Vector": "blVectorMath", "Value": "blVectorMathValue"},
+        sockets={"a": "Vector", "b": "Vector_001", "c": "Vector_002", "scale": "Scale"},
+        props={"operation": _index(VECTOR_MATH_OPS, "operation")}),
+    "ShaderNodeMapRange": dict(
+        fn={"Result": "blMapRange", "Vector": "blMapRangeVector"},
+        sockets={"value": "Value", "vector": "Vector", "fromMin": _map_range_socket("From Min"),
+                 "fromMax": _map_range_socket("From Max"), "toMin": _map_range_socket("To Min"),
+                 "toMax": _map_range_socket("To Max"), "steps": _map_range_socket("Steps")},
+        props={"interpolation": _index(MAP_RANGE_TYPES, "interpolation_type"),
+               "useClamp": _flag("clamp")}),
+    "ShaderNodeClamp": dict(
+        fn={"Result": "blClamp"}, sockets={"value": "Value", "minimum": "Min", "maximum": "Max"},
+        props={"clampType": _index(["MINMAX", "RANGE"], "clamp_type")}),
+    "ShaderNodeMix": dict(
+        fn={"Result_Float": _mix_fn, "Result_Vector": _mix_fn, "Result_Color": _mix_fn},
+        sockets={"factor": _mix_socket("Factor"), "a": _mix_socket("A"), "b": _mix_socket("B")},
+        props={"blendType": _index(BLEND_TYPES, "blend_type"),
+               "clampFactor": _flag("clamp_factor"), "clampResult": _flag("clamp_result")}),
+    "ShaderNodeMapping": dict(
+        fn={"Vector": "blMapping"},
+        sockets={"vector": "Vector", "location": "Location", "rotation": "Rotation",
+                 "scale": "Scale"},
+        props={"mappingType": _index(["POINT", "TEXTURE", "VECTOR", "NORMAL"], "vector_type")}),
+    "ShaderNodeCombineXYZ": dict(fn={"Vector": "blCombineXYZ"}, sockets=_same(["x", "y", "z"])),
+    "ShaderNodeSeparateXYZ": dict(
+        fn={"X": "blSeparateXYZX", "Y": "blSeparateXYZY", "Z": "blSeparateXYZZ"},
+        sockets={"vector": "Vector"}),
+    "ShaderNodeInvert": dict(fn={"Color": "blInvertColor"},
+                             sockets={"fac": "Fac", "color": "Color"}),
+    "ShaderNodeGamma": dict(fn={"Color": "blGamma"}, sockets={"color": "Color",
+                                                             "gamma": "Gamma"}),
+    "ShaderNodeBrightContrast": dict(
+        fn={"Color": "blBrightContrast"},
+        sockets={"color": "Color", "bright": "Bright", "contrast": "Contrast"}),
+    "ShaderNodeHueSaturation": dict(
+        fn={"Color": "blHueSaturationValue"},
+        sockets=dict(_same(["hue", "saturation", "value", "fac", "color"]))),
+    "ShaderNodeRGBToBW": dict(fn={"Val": "blRgbToBw"}, sockets={"color": "Color"}),
+    "ShaderNodeSeparateColor": dict(
+        fn={"Red": "blSeparateColorR", "Green": "blSeparateColorG", "Blue": "blSeparateColorB"},
+        sockets={"color": "Color"}, props={"mode": _index(COLOR_MODES, "mode")}),
+    "ShaderNodeCombineColor": dict(
+        fn={"Color": "blCombineColor"}, sockets={"r": "Red", "g": "Green", "b": "Blue"},
+        props={"mode": _index(COLOR_MODES, "mode")}),
+    "ShaderNodeTexCoord": dict(
+        fn={"Generated": "blTexCoordGenerated", "Object": "blTexCoordObject",
+            "UV": "blTexCoordUV", "Normal": "blTexCoordNormal"},
+        object_props=True),
+    "ShaderNodeNewGeometry": dict(
+        fn={"Position": "blGeometryPosition", "Normal": "blGeometryNormal",
+            "True Normal": "blGeometryTrueNormal", "Tangent": "blGeometryTangent",
+            "Incoming": "blGeometryIncoming"}),
+    "ShaderNodeAmbientOcclusion": dict(
+        fn={"AO": "blAmbientOcclusionAO", "Color": "blAmbientOcclusionColor"},
+        sockets={"color": "Color"}),
+}
+
+# Shader nodes: what each becomes in graph.json's material tree (docs/graph.md's BSDFs).
+SHADERS = {
+    "ShaderNodeBsdfDiffuse": "diffuse", "ShaderNodeBsdfAnisotropic": "glossy",
+    "ShaderNodeEmission": "emission", "ShaderNodeMixShader": "blend",
+    "ShaderNodeBsdfPrincipled": "principled",
+}
+# Principled BSDF inputs the renderer has (socket -> graph input); every other input must stay
+# unlinked at its default.
+PRINCIPLED_INPUTS = {"Base Color": "baseColor", "Metallic": "metallic", "Roughness": "roughness",
+                     "Specular IOR Level": "specular", "Emission Color": "emissionColor",
+                     "Emission Strength": "emissionStrength"}
+PRINCIPLED_IGNORED = {"Weight"}
+# Cycles' surface for a mesh without a material (and --lenient's fallback for a shader).
+DEFAULT_SURFACE = {"bsdf": "diffuse", "color": [0.8, 0.8, 0.8]}
+PASS_THROUGH = {"NodeReroute"}
+
+
+def check_table(signatures):
+    """Every function the table names exists, and the table feeds each of its parameters."""
+    for idname, spec in NODES.items():
+        names = set()
+        for fn in spec["fn"].values():
+            if isinstance(fn, str):
+                names.add(fn)
+        for name in names:
+            if name not in signatures:
+                raise SystemExit("blender_export: internal: %s names unknown function %s"
+                                 % (idname, name))
+            for _, param in signatures[name][2]:
+                known = set(spec.get("sockets", {})) | set(spec.get("props", {}))
+                if spec.get("object_props"):
+                    known |= {"bboxMin", "bboxMax", "axisX", "axisY", "axisZ"}
+                if param not in known:
+                    raise SystemExit("blender_export: internal: %s: %s(%s) is not fed"
+                                     % (idname, name, param))
+
+
+def supported_nodes_text():
+    """Blender's names of the nodes the exporter translates ("Noise Texture", ...)."""
+    import bpy
+    names = set()
+    for idname in list(NODES) + list(SHADERS) + ["ShaderNodeBump", "ShaderNodeRGB",
+                                                  "ShaderNodeValue", "NodeReroute"]:
+        kind = getattr(bpy.types, idname, None)
+        names.add(kind.bl_rna.name if kind is not None else idname)
+    return ", ".join(sorted(names))
