@@ -7,8 +7,8 @@
 
 Then `texcc --graph OUTDIR/graph.json -o T && texrender OUTDIR/scene.json --textures T -o img.exr`
 renders the scene. Each material's node tree goes through the Blender-conformant library
-(textures/blender/, one texture function per node output); NODES in blender_nodes.py is the one table of which
-function and which arguments a Blender node becomes. World coordinates stay Blender's (Z up):
+(textures/blender/, one texture function per node output); NODES in blender_nodes.py is the one
+table of which function and which arguments a Blender node becomes. World coordinates stay Blender's (Z up):
 texrender has no preferred up axis except the camera's, which is the Blender camera's +Y. So
 WorldPos, Normal and ObjectPos read by the textures are Cycles' Position, Normal and Object.
 
