@@ -12,7 +12,8 @@ Occlusion node (4 samples, distance 0.7) times the noise drives the Mix Shader; 
 also the ground's colour through a second AO node with another distance; "principled-coat": the
 ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not have);
 "render-settings": the cube's Subdivision renders at level 2 (viewport 1), the panel is hidden in
-renders only.
+renders only; "texture-only": the cube alone, its ramp's colour through an Emission shader, no
+lights, a black world, 128x96, a 100 mm lens (the texture's values, compared with Cycles per 8x8 block).
 """
 import sys
 
@@ -172,6 +173,16 @@ def main():
     lamp = add_mesh("Panel", quad("panel", 1.0, 2.5, flip=True),
                     simple("Light", "ShaderNodeEmission", (1.0, 0.9, 0.8, 1.0), 5.0))
     lamp.location = (-1.0, 0.5, 0.0)
+    if case == "texture-only":
+        for obj in (lamp, sun, scene.objects["Ground"]):
+            bpy.data.objects.remove(obj)
+        scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+        scene.render.resolution_x, scene.render.resolution_y = 128, 96
+        scene.camera.data.lens = 100.0  # the cube fills most of the frame
+        emission = tree.nodes.new("ShaderNodeEmission")
+        tree.links.new(ramp.outputs["Color"], emission.inputs["Color"])
+        output = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeOutputMaterial")
+        tree.links.new(emission.outputs["Emission"], output.inputs["Surface"])
     if case == "render-settings":
         sub.render_levels = 2
         lamp.hide_render = True

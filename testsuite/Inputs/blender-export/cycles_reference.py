@@ -1,0 +1,64 @@
+"""cycles_reference.py: regenerates the Cycles block means the exported scenes are tested against.
+
+    .venv/bin/python testsuite/Inputs/blender-export/cycles_reference.py [--spp 4096]
+
+For each case (make_blend.py's "scene" and "texture-only"): builds the .blend, renders it with
+Cycles (bpy 5.0.1, CPU, no denoising, no adaptive sampling, box pixel filter of 1 px, a
+transparent film for texture-only so that alpha is the coverage) and writes the block means into
+cycles-means.json / cycles-texture-only.json (region_means.py --write; texture-only also marks
+the silhouette blocks). Then re-export the committed scenes with scripts/blender_export.py.
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASES = {"scene": ("cycles-means.json", []), "texture-only": ("cycles-texture-only.json",
+                                                              ["--edges"])}
+
+
+def render(blend, exr, spp, transparent):
+    import bpy
+    import numpy as np
+    bpy.ops.wm.open_mainfile(filepath=blend)
+    scene = bpy.context.scene
+    scene.cycles.device = "CPU"
+    scene.cycles.samples = spp
+    scene.cycles.use_denoising = False
+    scene.cycles.use_adaptive_sampling = False
+    scene.cycles.pixel_filter_type = "BOX"
+    scene.cycles.filter_width = 1.0
+    scene.render.film_transparent = transparent
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.filepath = exr
+    bpy.ops.render.render(write_still=True)
+    image = bpy.data.images.load(exr)
+    pixels = np.empty(len(image.pixels), np.float32)
+    image.pixels.foreach_get(pixels)
+    np.save(exr + ".npy", pixels.reshape(image.size[1], image.size[0], 4)[::-1])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--spp", type=int, default=4096)
+    args = ap.parse_args()
+    work = tempfile.mkdtemp()
+    for case, (expected, flags) in CASES.items():
+        blend = os.path.join(work, case + ".blend")
+        subprocess.check_call([sys.executable, os.path.join(HERE, "make_blend.py"), blend, case])
+        subprocess.check_call([sys.executable, __file__, "--render", blend, str(args.spp),
+                               "1" if flags else "0"])
+        subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"),
+                               blend + ".exr.npy", os.path.join(HERE, expected), "--write"] +
+                              flags)
+        print("cycles_reference: %s: %s (%d spp)" % (case, expected, args.spp))
+
+
+if __name__ == "__main__":
+    if sys.argv[1:2] == ["--render"]:
+        render(sys.argv[2], sys.argv[2] + ".exr", int(sys.argv[3]), sys.argv[4] == "1")
+    else:
+        main()
