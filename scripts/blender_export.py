@@ -365,6 +365,7 @@ class Export:
         self.functions = set()
         self.graph_nodes, self.materials, self.material_names = [], {}, {}
         self.ao = None
+        self.files = set()
         self._principled = None
         self._constants = {}
 
@@ -468,6 +469,15 @@ class Export:
         return {"bsdf": bsdf, "emission": emission, "nodes": nodes}
 
     # --- Geometry ---
+    def unique_file(self, stem, ext):
+        """Object names that differ only in characters a file name cannot keep stay apart."""
+        name, n = stem + ext, 1
+        while name.lower() in self.files:
+            n += 1
+            name = "%s-%d%s" % (stem, n, ext)
+        self.files.add(name.lower())
+        return name
+
     def write_mesh(self, obj_eval, directory):
         """The evaluated mesh in object space, triangulated, one OBJ per material slot used:
         [(file, slot index)]."""
@@ -502,7 +512,7 @@ class Export:
                 verts, vinv = np.unique(tv[pick], return_inverse=True)
                 loops, linv = np.unique(tl[pick], return_inverse=True)
                 vinv, linv = vinv.reshape(-1, 3) + 1, linv.reshape(-1, 3) + 1
-                name = "%s.%d.obj" % (file_name(obj_eval.name), slot)
+                name = self.unique_file("%s.%d" % (file_name(obj_eval.name), slot), ".obj")
                 with open(os.path.join(directory, name), "w") as f:
                     f.write("# %s, material slot %d (blender_export.py)\n" % (obj_eval.name,
                                                                             slot))

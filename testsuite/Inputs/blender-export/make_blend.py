@@ -13,7 +13,9 @@ also the ground's colour through a second AO node with another distance; "princi
 ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not have);
 "render-settings": the cube's Subdivision renders at level 2 (viewport 1), the panel is hidden in
 renders only; "texture-only": the cube alone, its ramp's colour through an Emission shader, no
-lights, a black world, 128x96, a 100 mm lens (the texture's values, compared with Cycles per 8x8 block).
+lights, a black world, 128x96, a 100 mm lens (the texture's values, compared with Cycles per
+8x8 block); "name-clash": the cube is named "a b" and the ground "a_b" (one file name for both
+once sanitised).
 """
 import sys
 
@@ -173,6 +175,8 @@ def main():
     lamp = add_mesh("Panel", quad("panel", 1.0, 2.5, flip=True),
                     simple("Light", "ShaderNodeEmission", (1.0, 0.9, 0.8, 1.0), 5.0))
     lamp.location = (-1.0, 0.5, 0.0)
+    if case == "name-clash":
+        cube.name, scene.objects["Ground"].name = "a b", "a_b"
     if case == "texture-only":
         for obj in (lamp, sun, scene.objects["Ground"]):
             bpy.data.objects.remove(obj)
