@@ -21,16 +21,21 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# Nodes the issue lists that textures/blender/ does not implement yet, and why.
+# Outputs of the issue's nodes that textures/blender/ implements without a fixture, and why.
 NOT_YET = [
-    ("Voronoi Texture 1D", "not implemented (time); 2D, 3D and 4D are"),
-    ("Texture Coordinate (Generated, Object, UV, Normal)",
-     "not implemented: Generated needs the object's bounding box and Object its inverse "
-     "transform, which texrender does not pass to textures; UV and Normal are the attributes "
-     "TexCoord0 and Normal"),
-    ("Geometry (Normal)", "not implemented as a node: the attribute Normal is it; Position is"),
-    ("Ambient Occlusion", "not implemented: needs texrender's AO attribute with the node's "
-     "samples and distance; a bake at points cannot isolate it"),
+    ("Texture Coordinate UV and Normal (`blTexCoordUV`, `blTexCoordNormal`)",
+     "implemented (TexCoord0; the shading normal through the object's axes, passed as "
+     "arguments), no fixture: compare.py evaluates at points with texcc-eval, which sets "
+     "ObjectPos and WorldPos from a point but draws TexCoord0 and Normal at random"),
+    ("Geometry Normal, True Normal, Tangent, Incoming (`blGeometry*`)",
+     "implemented as the attributes Normal, GeomNormal, Tangent and ViewDir; no fixture, for the "
+     "same reason. Tangent is texrender's dP/du of the mesh's UVs; Cycles' Geometry Tangent is "
+     "radial about Z when the mesh has no UV map, so they agree only with one. Backfacing, "
+     "Parametric, Pointiness and Random Per Island have no texrender attribute"),
+    ("Ambient Occlusion (`blAmbientOcclusionAO`, `blAmbientOcclusionColor`)",
+     "implemented through texrender's AO attribute; Samples and Distance are the scene's "
+     "render.aoSamples and render.aoDistance (the Blender exporter sets them from the node). "
+     "Not comparable point by point: both renderers estimate AO with their own random rays"),
 ]
 
 
