@@ -19,6 +19,7 @@ installed into .venv/ on first use (as scripts/blender_conformance.py does).
 """
 
 import argparse
+import contextlib
 import math
 import os
 import re
@@ -65,17 +66,39 @@ def sanitize_id(text):
     return "".join(c if c.isprintable() else "?" for c in text).replace("*/", "*|")
 
 
+class Source:
+    """What feeds a socket: an output `out` of `node` inside the node groups `path` (outermost
+    first); node None: an unlinked socket `out` across a group boundary, whose value counts."""
+
+    def __init__(self, node, out, path):
+        self.node, self.out, self.path = node, out, path
+
+
 class MaterialTranslator:
     """One material's node tree, on one object (Generated and Normal coordinates read the
-    object's bounds and axes), into graph nodes (appended to `nodes`) and a BSDF tree."""
+    object's bounds and axes), into graph nodes (appended to `nodes`) and a BSDF tree. Node
+    groups are inlined: a node inside groups is named by the path, 'Group/Node'."""
 
     def __init__(self, export, material, name, obj, nodes):
         self.export, self.material, self.name, self.obj = export, material, name, obj
         self.nodes, self.done, self.done_fn, self.stack, self.ids = nodes, {}, {}, [], set()
+        self.path = []
         self.where = "material '%s'" % material.name
 
+    def qual(self, node):
+        """The node's name, with the groups it sits in."""
+        return "/".join([g.name for g in self.path] + [node.name])
+
+    @contextlib.contextmanager
+    def inside(self, path):
+        outer, self.path = self.path, path
+        try:
+            yield
+        finally:
+            self.path = outer
+
     def node_where(self, node):
-        return "%s: node '%s' (%s)" % (self.where, node.name, node.bl_idname)
+        return "%s: node '%s' (%s)" % (self.where, self.qual(node), node.bl_idname)
 
     def refuse(self, message, fallback_text):
         self.export.problems.refuse(message, fallback_text)
@@ -90,32 +113,45 @@ class MaterialTranslator:
 
     # A value is ("const", number or list) or ("node", id, "float" | "float3").
     def link_source(self, socket):
-        """The (node, output socket) feeding `socket`, through reroutes; None if unlinked."""
-        links = [l for l in socket.links if not l.is_muted]
-        if not links:
-            return None
-        link = links[0]
-        node, out = link.from_node, link.from_socket
-        while node.bl_idname in PASS_THROUGH:
-            inner = [l for l in node.inputs[0].links if not l.is_muted]
-            if not inner:
-                return None
-            node, out = inner[0].from_node, inner[0].from_socket
-        return node, out
+        """The Source feeding `socket` (in the current groups), through reroutes and into and
+        out of node groups; None if unlinked."""
+        path, crossed = list(self.path), False
+        while True:
+            links = [l for l in socket.links if not l.is_muted]
+            if not links:
+                return Source(None, socket, path) if crossed else None
+            node, out = links[0].from_node, links[0].from_socket
+            if node.bl_idname in PASS_THROUGH:
+                socket = node.inputs[0]
+            elif node.bl_idname == "NodeGroupInput" and path:
+                group = path.pop()
+                socket = next(s for s in group.inputs if s.identifier == out.identifier)
+                crossed = True
+            elif node.bl_idname == "ShaderNodeGroup" and not node.mute and node.node_tree:
+                outputs = [n for n in node.node_tree.nodes if n.bl_idname == "NodeGroupOutput"]
+                active = [n for n in outputs if n.is_active_output] or outputs
+                inner = [s for s in active[0].inputs if s.identifier == out.identifier] \
+                    if active else []
+                if not inner:
+                    return Source(node, out, path)
+                path.append(node)
+                socket, crossed = inner[0], True
+            else:
+                return Source(node, out, path)
 
     def socket_value(self, node, socket, want):
         """The value of an input socket, as `want` ("float" or "float3")."""
         source = self.link_source(socket)
         if source is None:
-            value = socket.default_value
-            if isinstance(value, (int, float)):
-                return ("const", float(value))
-            return ("const", [float(v) for v in value][:3])
-        from_node, out = source
-        value = self.output_value(from_node, out, node, socket)
-        if value is None:  # --lenient fallback: the socket's own value
             return self.socket_value_unlinked(socket)
-        return self.convert(value, out.type, want, from_node, out)
+        if source.node is None:  # an unlinked socket of a group: its value
+            return self.convert(self.socket_value_unlinked(source.out), source.out.type, want,
+                                None, None)
+        with self.inside(source.path):
+            value = self.output_value(source.node, source.out, node, socket)
+            if value is None:  # --lenient fallback: the socket's own value
+                return self.socket_value_unlinked(socket)
+            return self.convert(value, source.out.type, want, source.node, source.out)
 
     def socket_value_unlinked(self, socket):
         value = socket.default_value
@@ -135,7 +171,7 @@ class MaterialTranslator:
             return ("const", luminance(v) if from_type == "RGBA" else sum(v) / 3.0)
         if value[2] == "float":
             return value
-        key = "%s.%s>float" % (from_node.name, out.identifier)
+        key = "%s.%s>float" % (self.qual(from_node), out.identifier)
         if from_type == "RGBA":
             return ("node", self.add_node(key, "blRgbToBw", {"color": {"node": value[1]}}),
                     "float")
@@ -167,21 +203,25 @@ class MaterialTranslator:
                         % (self.node_where(node), out.name, ", ".join(spec["fn"])),
                         "using input '%s''s own value" % user_socket.name)
             return None
-        key = (node.name, out.identifier)
+        key = (self.qual(node), out.identifier)
         if key in self.done:
             return ("node", self.done[key], self.export.signatures[self.done_fn[key]][1])
-        if node.name in self.stack:
-            cycle = self.stack[self.stack.index(node.name):] + [node.name]
-            raise ExportError("%s: node loop: %s" % (self.where, " -> ".join(
-                "'%s'" % n for n in cycle)))
-        self.stack.append(node.name)
+        self.enter(node)
         fn = fn(node) if callable(fn) else fn
         args = self.node_args(node, spec, fn)
         self.stack.pop()
-        node_id = self.add_node("%s.%s" % (node.name, out.identifier), fn, args)
+        node_id = self.add_node("%s.%s" % (self.qual(node), out.identifier), fn, args)
         self.done[key] = node_id
         self.done_fn[key] = fn
         return ("node", node_id, self.export.signatures[fn][1])
+
+    def enter(self, node):
+        """Pushes `node` on the path being translated; a node already on it is a loop."""
+        name = self.qual(node)
+        if name in self.stack:
+            raise ExportError("%s: node loop: %s" % (self.where, " -> ".join(
+                "'%s'" % n for n in self.stack[self.stack.index(name):] + [name])))
+        self.stack.append(name)
 
     def node_args(self, node, spec, fn):
         self.node_checks(node)
@@ -222,22 +262,20 @@ class MaterialTranslator:
     # --- Shaders ---
     def shader(self, socket, where_text):
         source = self.link_source(socket)
-        if source is None:
+        if source is None or source.node is None:
             return None
-        node, out = source
-        kind = SHADERS.get(node.bl_idname)
-        if kind is None or node.mute:
-            self.refuse("%s is not supported as a shader; supported shaders: Diffuse BSDF, "
-                        "Glossy BSDF, Emission, Mix Shader, Principled BSDF"
-                        % self.node_where(node), "using a grey diffuse (0.8)")
-            return dict(DEFAULT_SURFACE)
-        if node.name in self.stack:
-            raise ExportError("%s: node loop: %s" % (self.where, " -> ".join(
-                "'%s'" % n for n in self.stack[self.stack.index(node.name):] + [node.name])))
-        self.stack.append(node.name)
-        bsdf = getattr(self, "shader_" + kind)(node)
-        self.stack.pop()
-        return bsdf
+        node = source.node
+        with self.inside(source.path):
+            kind = SHADERS.get(node.bl_idname)
+            if kind is None or node.mute:
+                self.refuse("%s is not supported as a shader; supported shaders: Diffuse BSDF, "
+                            "Glossy BSDF, Emission, Mix Shader, Principled BSDF"
+                            % self.node_where(node), "using a grey diffuse (0.8)")
+                return dict(DEFAULT_SURFACE)
+            self.enter(node)
+            bsdf = getattr(self, "shader_" + kind)(node)
+            self.stack.pop()
+            return bsdf
 
     def input(self, node, ident, want):
         socket = next(s for s in node.inputs if s.identifier == ident)
@@ -249,22 +287,20 @@ class MaterialTranslator:
         source = self.link_source(socket)
         if source is None:
             return
-        from_node, out = source
-        if from_node.bl_idname != "ShaderNodeBump":
+        if source.node is None or source.node.bl_idname != "ShaderNodeBump":
+            fed = source.node or source.out.node
             self.refuse("%s: input '%s' is fed by '%s' (%s); supported: a Bump node"
-                        % (self.node_where(node), socket.name, from_node.name,
-                           from_node.bl_idname), "using the surface's normal")
+                        % (self.node_where(node), socket.name, fed.name, fed.bl_idname),
+                        "using the surface's normal")
             return
-        bsdf["normal"] = {"node": self.bump(from_node)}
+        with self.inside(source.path):
+            bsdf["normal"] = {"node": self.bump(source.node)}
 
     def bump(self, node):
-        key = (node.name, "Normal")
+        key = (self.qual(node), "Normal")
         if key in self.done:
             return self.done[key]
-        if node.name in self.stack:
-            raise ExportError("%s: node loop: %s" % (self.where, " -> ".join(
-                "'%s'" % n for n in self.stack[self.stack.index(node.name):] + [node.name])))
-        self.stack.append(node.name)
+        self.enter(node)
         if node.invert:
             self.refuse("%s: 'Invert' is not supported" % self.node_where(node),
                         "bumping outwards")
@@ -272,14 +308,17 @@ class MaterialTranslator:
                 "strength": self.input(node, "Strength", "float"),
                 "distance": self.input(node, "Distance", "float"), "normal": {"attr": "Normal"}}
         inner = self.link_source(next(s for s in node.inputs if s.identifier == "Normal"))
-        if inner is not None and inner[0].bl_idname == "ShaderNodeBump":
-            args["normal"] = {"node": self.bump(inner[0])}
+        if inner is not None and inner.node is not None and \
+                inner.node.bl_idname == "ShaderNodeBump":
+            with self.inside(inner.path):
+                args["normal"] = {"node": self.bump(inner.node)}
         elif inner is not None:
+            fed = inner.node or inner.out.node
             self.refuse("%s: input 'Normal' is fed by '%s' (%s); supported: a Bump node"
-                        % (self.node_where(node), inner[0].name, inner[0].bl_idname),
+                        % (self.node_where(node), fed.name, fed.bl_idname),
                         "using the surface's normal")
         self.stack.pop()
-        node_id = sanitize_id("%s/%s.Normal" % (self.name, node.name))
+        node_id = sanitize_id("%s/%s.Normal" % (self.name, self.qual(node)))
         self.nodes.append({"id": node_id, "fn": "bump", "args": args})
         self.done[key] = node_id
         return node_id

@@ -15,7 +15,9 @@ ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not
 renders only; "texture-only": the cube alone, its ramp's colour through an Emission shader, no
 lights, a black world, 128x96, a 100 mm lens (the texture's values, compared with Cycles per
 8x8 block); "name-clash": the cube is named "a b" and the ground "a_b" (one file name for both
-once sanitised).
+once sanitised); "group": the cube's Noise and Color Ramp sit in a node group "NoiseRamp"
+whose Scale input (3.0 on the group node) feeds the Noise's Scale, and whose Color and Fac outputs
+feed the Diffuse BSDF and the Mix Shader.
 """
 import sys
 
@@ -100,6 +102,38 @@ def cube_mesh():
     return mesh
 
 
+def group_noise_ramp(tree, ramp):
+    """Moves the Noise and the Ramp into a node group; returns the group node."""
+    group = bpy.data.node_groups.new("NoiseRamp", "ShaderNodeTree")
+    group.interface.new_socket("Scale", in_out="INPUT", socket_type="NodeSocketFloat")
+    group.interface.new_socket("Color", in_out="OUTPUT", socket_type="NodeSocketColor")
+    group.interface.new_socket("Fac", in_out="OUTPUT", socket_type="NodeSocketFloat")
+    g_in = group.nodes.new("NodeGroupInput")
+    g_out = group.nodes.new("NodeGroupOutput")
+    noise = group.nodes.new("ShaderNodeTexNoise")
+    noise.name = "Noise"
+    noise.inputs["Detail"].default_value = 4.0
+    inner = group.nodes.new("ShaderNodeValToRGB")
+    inner.name = "Ramp"
+    for a, b in zip(inner.color_ramp.elements, ramp.color_ramp.elements):
+        a.position, a.color = b.position, b.color
+    group.links.new(g_in.outputs["Scale"], noise.inputs["Scale"])
+    group.links.new(noise.outputs["Fac"], inner.inputs["Fac"])
+    group.links.new(inner.outputs["Color"], g_out.inputs["Color"])
+    group.links.new(noise.outputs["Fac"], g_out.inputs["Fac"])
+    node = tree.nodes.new("ShaderNodeGroup")
+    node.node_tree = group
+    node.name = "NoiseRamp"
+    node.inputs["Scale"].default_value = 3.0
+    diffuse = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeBsdfDiffuse")
+    mix = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeMixShader")
+    tree.links.new(node.outputs["Color"], diffuse.inputs["Color"])
+    tree.links.new(node.outputs["Fac"], mix.inputs["Fac"])
+    tree.nodes.remove(tree.nodes["Noise"])
+    tree.nodes.remove(ramp)
+    return node
+
+
 def main():
     out = sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else sys.argv[1]
     args = sys.argv[sys.argv.index(out) + 1:]
@@ -135,6 +169,8 @@ def main():
         lamp = bpy.data.objects.new("Lamp", bpy.data.lights.new("Lamp", "POINT"))
         scene.collection.objects.link(lamp)
     rust, tree, ramp, diffuse = material_rust("Rust")
+    if case == "group":
+        group_noise_ramp(tree, ramp)
     if case == "unsupported-node":
         sky = tree.nodes.new("ShaderNodeTexSky")
         sky.name = "Sky"
