@@ -2,6 +2,7 @@
 // driver::compile (texcc/lib/driver), where the pipeline and every mode's policy live.
 #include "texcc/Config.h"
 #include "texcc/Driver/Driver.h"
+#include "texcc/Frontend/Library.h"
 #include "texcc/OutOfMemory.h"
 #include "texcc/StackGuard.h"
 #include "texcc/Version.h"
@@ -91,6 +92,12 @@ static cl::list<std::string> Dump("dump",
                                   cl::desc("Also write OUTDIR/graph.dot (Graphviz) for 'graph'"),
                                   cl::value_desc("graph"), cl::CommaSeparated,
                                   cl::cat(TexccCategory));
+static cl::opt<bool> ListNodes(
+    "list-nodes",
+    cl::desc("Print every texture function of the library (textures/), or of the given files, "
+             "with its parameters' types and defaults, and exit"),
+    cl::cat(TexccCategory));
+
 static void printVersion(raw_ostream &OS) {
   OS << "texcc version " << texcc::versionString() << " (LLVM " << TEXCC_LLVM_VERSION << ")\n";
 }
@@ -101,6 +108,8 @@ static int fail(const std::string &Message) {
 }
 
 static int run() {
+  if (ListNodes)
+    return texcc::frontend::listNodesCommand({Sources.begin(), Sources.end()});
   if (GraphPath.empty())
     return fail("no graph given (--graph graph.json)");
   texcc::driver::Options Opts;

@@ -9,8 +9,9 @@
  *   float  blMagicFac(float3 vector, float scale, float distortion, int depth)   mean of Color
  *   float  blWhiteNoise3DValue(float3 vector)                      hash of the bits, in [0, 1]
  *   float3 blWhiteNoise3DColor(float3 vector)
- *   blWhiteNoise1DValue/Color(float w), blWhiteNoise2DValue/Color(float3 vector) (x, y),
- *   blWhiteNoise4DValue/Color(float3 vector, float w): the other dimensions
+ *   blWhiteNoise1DValue, blWhiteNoise1DColor (float w),
+ *   blWhiteNoise2DValue, blWhiteNoise2DColor (float3 vector; x, y),
+ *   blWhiteNoise4DValue, blWhiteNoise4DColor (float3 vector, float w): the other dimensions
  *   float3 blBrickColor(float3 vector, float3 color1, float3 color2, float3 mortar, float scale,
  *                       float mortarSize, float mortarSmooth, float bias, float brickWidth,
  *                       float rowHeight, float offsetAmount, int offsetFrequency,

@@ -18,8 +18,9 @@
  *   float3 blVoronoi2DPosition(same parameters)             F1, F2, Smooth F1 (z = 0)
  *   float  blVoronoi2DRadius  (same parameters)             N-Sphere Radius
  *   blVoronoi3DDistance, blVoronoi3DColor, blVoronoi3DPosition, blVoronoi3DRadius: the same in 3D
- *   blVoronoi4DDistance, ...Color, ...Position, ...W, ...Radius(float3 vector, float w, then as
- *                              above): 4D, W its fourth coordinate and output
+ *   blVoronoi4DDistance, blVoronoi4DColor, blVoronoi4DPosition, blVoronoi4DW, blVoronoi4DRadius
+ *                              (float3 vector, float w, then as above): 4D, W its fourth
+ *                              coordinate and output
  *   float  blVoronoi1DDistance(float w, float scale, float detail, float roughness,
  *                              float lacunarity, float smoothness, float randomness,
  *                              int feature, int normalize)
