@@ -679,11 +679,12 @@ class Export:
 
     def run(self, scene, staging, final_dir):
         self.use_render_settings(scene)
-        if self.options.frame is not None:
-            scene.frame_set(self.options.frame)
         view_layer = next((v for v in scene.view_layers if v.use), scene.view_layers[0])
-        depsgraph = view_layer.depsgraph
-        depsgraph.update()
+        # A scene other than the context's has no depsgraph until one is asked for in its context.
+        with self.bpy.context.temp_override(scene=scene, view_layer=view_layer):
+            if self.options.frame is not None:
+                scene.frame_set(self.options.frame)
+            depsgraph = self.bpy.context.evaluated_depsgraph_get()
         camera, film = self.camera(scene, depsgraph)
         lights, meshes, written = [], [], {}
         sky = self.world(scene)

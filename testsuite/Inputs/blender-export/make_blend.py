@@ -17,7 +17,9 @@ lights, a black world, 128x96, a 100 mm lens (the texture's values, compared wit
 8x8 block); "name-clash": the cube is named "a b" and the ground "a_b" (one file name for both
 once sanitised); "group": the cube's Noise and Color Ramp sit in a node group "NoiseRamp"
 whose Scale input (3.0 on the group node) feeds the Noise's Scale, and whose Color and Fac outputs
-feed the Diffuse BSDF and the Mix Shader.
+feed the Diffuse BSDF and the Mix Shader; "options": the cube moves from z 0 (frame 1) to z 1
+(frame 10), a second camera "Side" looks along +Y, and a second scene "Other" (32x32) holds
+"Side", the sun and the ground.
 """
 import sys
 
@@ -211,6 +213,21 @@ def main():
     lamp = add_mesh("Panel", quad("panel", 1.0, 2.5, flip=True),
                     simple("Light", "ShaderNodeEmission", (1.0, 0.9, 0.8, 1.0), 5.0))
     lamp.location = (-1.0, 0.5, 0.0)
+    if case == "options":
+        cube.keyframe_insert("location", frame=1)
+        cube.location.z = 1.0
+        cube.keyframe_insert("location", frame=10)
+        scene.frame_set(1)
+        side = bpy.data.objects.new("Side", bpy.data.cameras.new("Side"))
+        side.location = (0.0, -6.0, 1.0)
+        side.rotation_euler = (1.5707963, 0.0, 0.0)
+        scene.collection.objects.link(side)
+        other = bpy.data.scenes.new("Other")
+        other.render.resolution_x = other.render.resolution_y = 32
+        other.world = scene.world
+        for obj in (side, sun, scene.objects["Ground"]):
+            other.collection.objects.link(obj)
+        other.camera = side
     if case == "name-clash":
         cube.name, scene.objects["Ground"].name = "a b", "a_b"
     if case == "texture-only":
