@@ -3,6 +3,7 @@
 #include "texcc/Driver/Driver.h"
 
 #include "texcc/Frontend/Frontend.h"
+#include "texcc/Frontend/Library.h"
 #include "texcc/Graph/Compile.h"
 #include "texcc/Graph/Graph.h"
 #include "texcc/OutOfMemory.h"
@@ -140,6 +141,11 @@ int compile(const Options &Opts) {
   for (const fe::TranslatedSource &S : FR->Sources)
     for (const auto &Fn : S.Functions)
       CompileOpts.KnownFunctions.push_back(Fn.first);
+  for (const gr::Node &N : G->Nodes)
+    if (!FR->Textures.count(N.Fn)) { // unknown or not a texture: the library may define it
+      CompileOpts.LibraryFunctions = fe::libraryTextureFiles(fe::libraryDir());
+      break;
+    }
   CompileOpts.Log = Opts.Log;
   gr::DiagnosticSink CompileDiags;
   std::optional<gr::CompiledGraph> CG =

@@ -89,7 +89,10 @@ private:
     } else {
       Msg = "node '" + N.Id + "': unknown function '" + N.Fn + "'";
       std::string Near = json::closestMatch(N.Fn, Candidates);
-      if (!Near.empty())
+      auto Library = Opts.LibraryFunctions.find(N.Fn);
+      if (Library != Opts.LibraryFunctions.end())
+        Msg += " (defined in " + Library->second + ": add it to \"sources\")";
+      else if (!Near.empty())
         Msg += "; did you mean '" + Near + "'?";
     }
     error(N.FnLoc, Msg, N.JsonPath + "/fn");

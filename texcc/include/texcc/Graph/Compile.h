@@ -69,6 +69,10 @@ struct CompileOptions {
   std::map<std::string, unsigned> FixedFunctionIds;
   /// Every user function name the sources define (for "did you mean" on an unknown "fn").
   std::vector<std::string> KnownFunctions;
+  /// Texture functions of the library (texcc/Frontend/Library.h) -> the file that documents
+  /// them ("textures/blender/noise.cl"): an unknown function found here is named with its
+  /// file. The driver fills it only when a node names a function no source defines.
+  std::map<std::string, std::string> LibraryFunctions;
   /// Where the passes log what they did (texcc -v); null for silence.
   std::ostream *Log = nullptr;
   /// Superinstructions: choose at most this many fused pairs from the programs (0: none), most
