@@ -19,7 +19,7 @@ once sanitised); "group": the cube's Noise and Color Ramp sit in a node group "N
 whose Scale input (3.0 on the group node) feeds the Noise's Scale, and whose Color and Fac outputs
 feed the Diffuse BSDF and the Mix Shader; "options": the cube moves from z 0 (frame 1) to z 1
 (frame 10), a second camera "Side" looks along +Y, and a second scene "Other" (32x32) holds
-"Side", the sun and the ground.
+"Side", the sun and the ground; "world-texture": a Sky Texture feeds the world's Background.
 """
 import sys
 
@@ -152,6 +152,10 @@ def main():
     world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.2, 0.25, 0.3, 1.0)
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
     scene.world = world
+    if case == "world-texture":
+        sky = world.node_tree.nodes.new("ShaderNodeTexSky")
+        world.node_tree.links.new(sky.outputs["Color"],
+                                  world.node_tree.nodes["Background"].inputs["Color"])
     if case != "no-camera":
         cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
         cam.data.lens = 35.0
