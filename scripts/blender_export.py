@@ -614,7 +614,18 @@ class Export:
 
     def sun(self, obj):
         light = obj.data
-        strength = float(light.energy)
+        where = "light '%s'" % obj.name
+        # Settings texrender's sun has no counterpart for, each at Blender's default or refused.
+        for attr, default, fallback in (("use_temperature", False, "using its Color"),
+                                        ("use_nodes", False, "using its Color and Strength"),
+                                        ("use_shadow", True, "casting shadows"),
+                                        ("diffuse_factor", 1.0, "using 1"),
+                                        ("specular_factor", 1.0, "using 1")):
+            if getattr(light, attr, default) != default:
+                self.problems.refuse("%s: '%s' is %s; supported: %s" % (
+                    where, attr, getattr(light, attr), default), fallback)
+        # Strength x 2^Exposure is what Cycles uses (Exposure is 0 by default).
+        strength = float(light.energy) * 2.0 ** float(getattr(light, "exposure", 0.0))
         radius = max(float(light.angle) / 2.0, math.radians(0.01))
         if light.angle / 2.0 < radius:
             sys.stderr.write("blender_export: note: sun '%s': angle %g deg is below texrender's "
