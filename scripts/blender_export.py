@@ -540,9 +540,11 @@ class Export:
             mesh.corner_normals.foreach_get("vector", normals)
             normals = normals.reshape(-1, 3)
             uv = None
-            if mesh.uv_layers.active is not None:
+            # Cycles' default UV map (Texture Coordinate's UV) is the one active for rendering.
+            layer = next((l for l in mesh.uv_layers if l.active_render), mesh.uv_layers.active)
+            if layer is not None:
                 uv = np.empty(len(mesh.loops) * 2, np.float32)
-                mesh.uv_layers.active.data.foreach_get("uv", uv)
+                layer.data.foreach_get("uv", uv)
                 uv = uv.reshape(-1, 2)
             tv, tl = tv.reshape(-1, 3), tl.reshape(-1, 3)
             files = []
