@@ -19,7 +19,8 @@ once sanitised); "group": the cube's Noise and Color Ramp sit in a node group "N
 whose Scale input (3.0 on the group node) feeds the Noise's Scale, and whose Color and Fac outputs
 feed the Diffuse BSDF and the Mix Shader; "options": the cube moves from z 0 (frame 1) to z 1
 (frame 10), a second camera "Side" looks along +Y, and a second scene "Other" (32x32) holds
-"Side", the sun and the ground; "world-texture": a Sky Texture feeds the world's Background.
+"Side", the sun and the ground; "world-texture": a Sky Texture feeds the world's Background; "instances": the cube is
+also instanced twice through a collection, at x -1.5 and +1.5, y +1.
 """
 import sys
 
@@ -232,6 +233,16 @@ def main():
         for obj in (side, sun, scene.objects["Ground"]):
             other.collection.objects.link(obj)
         other.camera = side
+    if case == "instances":
+        props = bpy.data.collections.new("Props")
+        props.objects.link(cube)
+        scene.collection.children.link(props)
+        for i, x in enumerate((-1.5, 1.5)):
+            empty = bpy.data.objects.new("Instance%d" % i, None)
+            empty.instance_type = "COLLECTION"
+            empty.instance_collection = props
+            empty.location = (x, 1.0, 0.0)
+            scene.collection.objects.link(empty)
     if case == "name-clash":
         cube.name, scene.objects["Ground"].name = "a b", "a_b"
     if case == "texture-only":
