@@ -20,13 +20,12 @@ import per_hit
 import report
 import resources
 import stability
-import superinstructions
 import table1
 import value_stack
 
 # The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
-           ("superinstructions", superinstructions), ("instructions", instructions),
+           ("instructions", instructions),
            ("per_hit", per_hit),
            ("resources", resources),
            ("value_stack", value_stack), ("accuracy", accuracy), ("ao", ao),

@@ -8,8 +8,7 @@ PoCL for `POCL_LLVM_CPU_NAME=haswell` (AVX2: valgrind runs no AVX-512). The coun
 callgrind's inclusive Ir of PoCL's work-group functions (`--toggle-collect=_pocl_kernel_*`:
 the kernel and every library call it makes, no runtime, no compilation; a first, uncounted run
 fills PoCL's kernel cache), over the textured hits (N times the materials with outputs).
-Configurations: interp (superinstructions on, hoisting on: texcc_uniforms counted as for shape),
-interp --no-superinstructions, interp --no-hoist, interp --max-quickened=0, inline, wavefront
+Configurations: interp (hoisting on: texcc_uniforms counted as for shape), interp --no-hoist, interp --max-quickened=0, inline, wavefront
 (its per-node kernels and the output copy), shape (with its hoisting, texcc_uniforms counted once
 per run: over N hits it is an upper bound of a frame's share), shape --no-hoist, shape+bake (every int argument baked, as in
 section 3), shape with every constant baked (what inline sees, through shape's code), and for
@@ -99,7 +98,6 @@ def measure(tools, quick):
         common.texcc(tools, graph_path, folder0, "shape")
         ints = resources.int_arguments(os.path.join(folder0, "layout.json"))
         configs = [("interp", "interp", []),
-                   ("interp-unfused", "interp", ["--no-superinstructions"]),
                    ("interp --no-hoist", "interp", ["--no-hoist"]),
                    ("interp --max-quickened=0", "interp", ["--max-quickened=0"]),
                    ("inline", "inline", []), ("wavefront", "wavefront", []),

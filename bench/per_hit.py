@@ -3,7 +3,7 @@
 paper's Table 1 (examples/rust and examples/scratches), with shape mode's hoisting
 (docs/frontend.md, "Hoisting") on and off.
 
-Configurations: inline (first: the ratios are to it), interp (superinstructions on; its value
+Configurations: inline (first: the ratios are to it), interp (its value
 stack in local memory, texcc's default for these graphs' 2 and 3 slots), interp-private (the value
 stack a private array, --local-stack-limit=0), interp-unhoisted (interp --no-hoist),
 interp-unquickened (interp --max-quickened=0), wavefront,

@@ -253,6 +253,9 @@ def superinstructions_section(d):
         return ["## 2c. Interpreter superinstructions", "", "Not measured yet.", ""]
     w = d["workloads"]
     lines = ["## 2c. Interpreter superinstructions", "",
+             "Removed from texcc in 2026-12: they did not pay on the examples (per hit, "
+             "interp without them against with them: 0.99 to 1.01; callgrind: 0.995 to 1.013; "
+             "docs/modes.md). The last measurement, by the removed "
              "`bench/superinstructions.py`: interp (with its fused pairs of light nodes, "
              "docs/modes.md) against `interp --no-superinstructions` and inline. Depth chains of "
              "`mathColor` (bench/stability.py) on the sweep quad, rust and scratches on the "

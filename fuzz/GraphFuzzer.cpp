@@ -1,8 +1,8 @@
 // fuzz-graph: graph.json text through the whole graph library: parseGraph, then
 // compileGraph (validation, passes, stack slots, argument layout, args.bin), layoutJson and
 // readLayoutSignatures (the runtime's live-edit path), which must accept what layoutJson wrote.
-// Superinstructions are on (every signature counts as light), and the live editor's invariant
-// is checked: compiling again with the table read back from layout.json gives the same args.bin.
+// Quickened opcodes are on, and the live editor's invariant is checked: compiling again with
+// the table read back from layout.json gives the same args.bin.
 // Validation needs function signatures; a fixed set (the graph tests' sigs.json: the rust
 // example's functions plus helpers of every parameter kind) lets inputs that name them get
 // past validation into the passes. Diagnostics are printed to exercise their line:col code.
@@ -31,8 +31,6 @@ static const gr::SignatureMap &signatures() {
       std::fprintf(stderr, "fuzz-graph: cannot read the signatures in %s\n", Path);
       std::abort();
     }
-    for (auto &KV : Map)
-      KV.second.Cost = 1; // light: every fusable pair can become a superinstruction
     return Map;
   }();
   return Sigs;
@@ -47,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *Data, size_t Size) {
     gr::CompileOptions Opts;
     // A small cap so that spilling to the global slice is reached too.
     Opts.StackLimit = 4;
-    Opts.MaxSuperinstructions = 8;
+    Opts.MaxQuickened = 8;
     for (const auto &[Name, Sig] : signatures())
       Opts.KnownFunctions.push_back(Name);
     if (std::optional<gr::CompiledGraph> CG = gr::compileGraph(*G, signatures(), Opts, Diags)) {
@@ -62,9 +60,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *Data, size_t Size) {
       }
       // A live edit compiles with the kernel's table: unedited, it must encode the same bytes.
       gr::CompileOptions Edit = Opts;
-      if (!gr::readLayoutSuperinstructions(Layout, Edit.Superinstructions, Error) ||
-          Edit.Superinstructions != CG->Superinstructions) {
-        std::fprintf(stderr, "fuzz-graph: the superinstructions do not read back: %s\n",
+      if (!gr::readLayoutQuickened(Layout, Edit.Quickened, Error) ||
+          Edit.Quickened != CG->Quickened) {
+        std::fprintf(stderr, "fuzz-graph: the quickened opcodes do not read back: %s\n",
                      Error.c_str());
         std::abort();
       }

@@ -187,10 +187,9 @@ LiveEditor::makeEditor(const std::string &GraphText) const {
   texcc::graph::SignatureMap Sigs;
   texcc::graph::CompileOptions Opts;
   std::string Why;
-  // The kernel's superinstructions: an edit re-encodes a fused opcode only where its pair
-  // still occurs, the plain opcodes elsewhere (docs/modes.md).
+  // The kernel's quickened opcodes: an edit re-encodes one only where its pattern still
+  // occurs, the plain opcodes elsewhere (docs/modes.md).
   if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why) ||
-      !texcc::graph::readLayoutSuperinstructions(Lay.Text, Opts.Superinstructions, Why) ||
       !texcc::graph::readLayoutQuickened(Lay.Text, Opts.Quickened, Why))
     throw Error(Lay.Dir + "/layout.json: " + Why);
   // layout.json lists the function of every node, dead ones included, and the interp kernel

@@ -50,21 +50,11 @@ static cl::opt<bool> NoHoist(
              "once per material (docs/frontend.md, Hoisting), for A/B measurement and debugging"),
     cl::cat(TexccCategory));
 
-static cl::opt<bool> NoSuperinstructions(
-    "no-superinstructions",
-    cl::desc("interp: no fused pairs of light nodes (one switch case and one value-stack store "
-             "per node), for A/B measurement and debugging"),
-    cl::cat(TexccCategory));
-static cl::opt<unsigned> MaxSuperinstructions(
-    "max-superinstructions",
-    cl::desc("interp: at most N fused pairs of light functions in the kernel (default 8)"),
-    cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
 static cl::opt<unsigned> MaxQuickened(
     "max-quickened",
     cl::desc("interp: at most N quickened opcodes, cases for the most frequent (function, "
-             "argument sources, int values) patterns, fused pairs included, that read their "
-             "arguments without decoding and have int constants as literals (default 8; 0: "
-             "none)"),
+             "argument sources, int values) patterns, that read their arguments without "
+             "decoding and have int constants as literals (default 8; 0: none)"),
     cl::value_desc("N"), cl::init(8), cl::cat(TexccCategory));
 static cl::opt<uint64_t> LoopBudget(
     "loop-budget",
@@ -133,7 +123,6 @@ static int run() {
   Opts.EvalMode = *Mode;
   Opts.Tgt = *Target;
   Opts.Backend.NoHoist = NoHoist;
-  Opts.Backend.MaxSuperinstructions = NoSuperinstructions ? 0 : MaxSuperinstructions;
   Opts.Backend.MaxQuickened = MaxQuickened;
   Opts.StackLimit = StackLimit;
   Opts.LocalStackLimit = LocalStackLimit;

@@ -3,9 +3,7 @@
 (the oracle) and for interp, inline, wavefront and shape, evaluates each with texcc-eval over the
 same grid of hits, and compares every mode with the host (compare.py, max abs diff <= --tol).
 Shape mode must also agree bit for bit (--tol 0) with its interp fallback, proctex.interp.cl,
-which the tiered runtime swaps in while a new shape's kernel builds, and interp (with its
-superinstructions, the default) bit for bit with interp --no-superinstructions (one case per
-node); the line says how many instructions the superinstructions fused. An interp kernel whose
+which the tiered runtime swaps in while a new shape's kernel builds. An interp kernel whose
 value stack is a __local array (layout.json valueStack) must equal the same graph with a private
 one (--local-stack-limit=0) bit for bit, and a private one a local one; an interp kernel that
 hoists values (layout.json kernel.uniforms) interp --no-hoist, and one with quickened opcodes
@@ -97,39 +95,6 @@ def check_fallback(out, dump, graph, args, lines):
                         lines))
 
 
-def fused_count(out):
-    """(superinstructions in the kernel's table, instructions fused into one) of an interp
-    output folder: the programs in args.bin whose fnId word is a superinstruction's opcode or
-    a quickened superinstruction's."""
-    import json
-    import struct
-    with open(os.path.join(out, "layout.json")) as f:
-        layout = json.load(f)
-    with open(os.path.join(out, "args.bin"), "rb") as f:
-        words = struct.unpack("<%dI" % layout["argsBin"]["programWords"],
-                              f.read(4 * layout["argsBin"]["programWords"]))
-    table = {s["opcode"] for s in layout.get("superinstructions", [])}
-    opcodes = table | {q["opcode"] for q in layout.get("quickened", []) if "second" in q}
-    fused = 0
-    for m in layout["materials"]:
-        at = m["program"]["wordOffset"]
-        fused += sum(1 for i in range(words[at]) if words[at + 2 + 3 * i] in opcodes)
-    return len(table), fused
-
-
-def check_unfused(out, dump, graph, args, extra, lines):
-    """interp with superinstructions (out) against interp --no-superinstructions, bit for bit."""
-    plain = out + "-unfused"
-    plain_dump = plain + ".txt"
-    if not (run([args.texcc, "--mode=interp", "--no-superinstructions", "--graph", graph, "-o",
-                 plain] + extra, lines)
-            and run([args.eval, plain, "--grid", str(args.grid)], lines, plain_dump)):
-        return False
-    table, fused = fused_count(out)
-    return compare(dump, plain_dump, 0.0, "%s interp = interp --no-superinstructions "
-                   "(superinstructions %d, fused pairs %d)" % (graph, table, fused), lines)
-
-
 def check_stack(out, dump, graph, args, extra, lines):
     """interp (out) against the same graph with its value stack in the other kind of memory,
     bit for bit: a __local array (layout.json valueStack "local") against a private one
@@ -206,8 +171,7 @@ def check_graph(g, graph, args, modes, extra):
         if ok and mode == "shape":
             ok = check_fallback(out, dump, graph, args, lines)
         if ok and mode == "interp":
-            ok = check_unfused(out, dump, graph, args, extra, lines)
-            ok = ok and check_stack(out, dump, graph, args, extra, lines)
+            ok = check_stack(out, dump, graph, args, extra, lines)
             ok = ok and check_unhoisted(out, dump, graph, args, extra, lines)
             ok = ok and check_unquickened(out, dump, graph, args, extra, lines)
             interp_dump = dump

@@ -14,8 +14,6 @@ public:
   const char *name() const override { return "interp"; }
   bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
   void configureGraph(graph::CompileOptions &C, const BackendOptions &O) const override {
-    C.MaxSuperinstructions = O.MaxSuperinstructions;
-    C.LightCost = O.LightCost;
     C.MaxQuickened = O.MaxQuickened;
   }
   void configureCodegen(CodegenOptions &C, const BackendOptions &O) const override {
@@ -24,7 +22,7 @@ public:
   bool interprets() const override { return true; }
   const char *summary() const override {
     return "the interpreter: kernel texcc_proctex runs the material's program from fakeStack,\n"
-           " *      one switch case per texture function (and per superinstruction)";
+           " *      one switch case per texture function (and per quickened opcode)";
   }
   void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
             const CodegenOptions &Opts) const override {
@@ -64,10 +62,6 @@ class ShapeBackend final : public Backend {
 public:
   const char *name() const override { return "shape"; }
   bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
-  void configureGraph(graph::CompileOptions &C, const BackendOptions &O) const override {
-    C.MaxSuperinstructions = O.MaxSuperinstructions;
-    C.LightCost = O.LightCost;
-  }
   bool writesInterpreter() const override { return true; }
   std::set<std::string> hoistedInUserCode(const graph::CompiledGraph &CG) const override {
     return hoistingFunctions(CG);

@@ -59,13 +59,6 @@ static void emitHeaderComment(std::ostringstream &OS, const CompiledGraph &CG,
   if (Interprets && Dead)
     OS << " *   dead:   " << Dead << " texture function" << (Dead == 1 ? "" : "s")
        << " only unused nodes name, in the switch too (a rewiring may wire them in)\n";
-  if (Interprets && !CG.Superinstructions.empty()) {
-    OS << " *   superinstructions (fused pairs, docs/modes.md):";
-    for (const Superinstruction &S : CG.Superinstructions)
-      OS << (&S == &CG.Superinstructions.front() ? " " : "; ") << S.Opcode << " = " << S.First
-         << " -> " << S.Second << "." << fedParamName(CG, S);
-    OS << "\n";
-  }
   for (const CompiledMaterial &M : CG.Materials)
     OS << " *   material " << M.Index << " '" << M.Name << "': " << M.Program.size()
        << " instructions; " << describeOutputs(CG, M) << "\n";

@@ -73,13 +73,7 @@ std::string generateGraphDot(const CompiledGraph &CG) {
        << M.StackSlots << " slots\"];\n";
     for (size_t Step = 0; Step < M.Program.size(); ++Step)
       OS << "  m" << M.Index << " -> n" << M.Program[Step].Node << " [style=dashed, label=\"#"
-         << Step << " -> slot " << M.Program[Step].ResultSlot
-         << (M.Program[Step].Super >= 0
-                 ? ", superinstruction " +
-                       std::to_string(CG.Superinstructions[M.Program[Step].Super].Opcode) +
-                       " with #" + std::to_string(Step + 1)
-                 : std::string())
-         << "\"];\n";
+         << Step << " -> slot " << M.Program[Step].ResultSlot << "\"];\n";
     for (size_t K = 0; K < M.Outputs.size(); ++K)
       OS << "  n" << M.Outputs[K].Node << " -> m" << M.Index << " [color=blue, label=\"out"
          << K << " (slot " << M.Outputs[K].Slot << ")\"];\n";

@@ -100,11 +100,6 @@ static void emitDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
         "}\n\n";
 }
 
-/// The call of one texture function with every argument decoded from the record at word Rec.
-/// Parameter block offsets are per function, from its signature (every node of it shares the
-/// layout, and a function that only dead nodes name has no node to take them from): the graph
-/// library's, never recomputed here. A superinstruction's second call gets parameter Fed as the
-/// expression FedExpr instead.
 static bool interpHoists(const FunctionSignature &Sig) {
   return !Sig.Hoisted.empty() && !Sig.HoistedFrom.empty();
 }
@@ -112,14 +107,14 @@ static bool interpHoists(const FunctionSignature &Sig) {
 /// A float..float4 argument read the way a quickened opcode's pattern says (QuickenedOp::Sources):
 /// from the block at word At, from the slot in source word P, or the attribute; widened to
 /// float4 like texcc_arg's result.
-static std::string quickArgument(const std::string &Source, const std::string &Rec, size_t P,
-                                 const std::string &At, BaseType B) {
+static std::string quickArgument(const std::string &Source, size_t P, const std::string &At,
+                                 BaseType B) {
   if (Source == "const")
     return widenToFloat4(B, fakeStackRead(B, At), Target::OpenCL);
   const bool Broadcast = Source.size() > 2 && Source.compare(Source.size() - 2, 2, ".x") == 0;
   std::string V;
   if (Source.rfind("slot", 0) == 0) {
-    V = "TEXCC_SLOT(fakeStack[" + Rec + " + " + std::to_string(P) + "u] & 0xFFFFu)";
+    V = "TEXCC_SLOT(fakeStack[rec + " + std::to_string(P) + "u] & 0xFFFFu)";
   } else {
     const std::string Name = Source.substr(5, Source.size() - 5 - (Broadcast ? 2 : 0));
     V = "texcc_interp_attr(hits + gid, " + std::to_string(attributeId(Name)) + "u)";
@@ -136,9 +131,12 @@ static std::string patternComment(const FunctionSignature &Sig,
   return S;
 }
 
+/// The call of one texture function with every argument decoded from the record at word rec,
+/// or, for a quickened opcode, read as its pattern Sources says. Parameter block offsets are
+/// per function, from its signature (every node of it shares the layout, and a function that
+/// only dead nodes name has no node to take them from): the graph library's, never recomputed
+/// here.
 static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
-                              const std::string &Rec = "rec", int Fed = -1,
-                              const std::string &FedExpr = "",
                               const std::vector<std::string> *Sources = nullptr) {
   uint32_t BlockSize = 0;
   const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
@@ -149,69 +147,26 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
   std::string S = (Hoisted ? "texcc_hoisted_" : "") + Sig.RenamedName + "(texcc_ctx";
   for (size_t P = 0; P < Sig.Params.size(); ++P) {
     const ValueType &T = Sig.Params[P].Type;
-    std::string At = Rec + " + " + std::to_string(SourceWords + Offsets[P] / 4) + "u";
+    std::string At = "rec + " + std::to_string(SourceWords + Offsets[P] / 4) + "u";
     S += ",\n          ";
-    if (static_cast<int>(P) == Fed)
-      S += FedExpr;
-    else if (T.IsGlobalArray)
+    if (T.IsGlobalArray)
       S += "(__global const " + spelling(T.Base) +
-           " *)((__global const uchar *)fakeStack + fakeStack[" + At + "])";
+           " *)((__global const uchar *)fakeStack + fakeStack[" + At + "]), fakeStack[" + At +
+           " + 1u]"; // the length: the hidden parameter of the bounds checks
     else if (Sources && Sources->at(P).rfind("int:", 0) == 0)
       S += "(" + Sources->at(P).substr(4) + ")"; // the value the pattern names
     else if (T.Base == BaseType::Int || T.Base == BaseType::Sampler)
       S += "as_int(fakeStack[" + At + "])";
     else if (Sources)
-      S += quickArgument(Sources->at(P), Rec, P, At, T.Base) + narrowSwizzle(T.Base);
-    else if (Rec == "rec")
-      S += "TEXCC_ARG(" + std::to_string(P) + "u, " + At + ", " +
-           std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
+      S += quickArgument(Sources->at(P), P, At, T.Base) + narrowSwizzle(T.Base);
     else
-      S += "TEXCC_ARG_IN(" + Rec + ", " + std::to_string(P) + "u, " + At + ", " +
+      S += "TEXCC_ARG(" + std::to_string(P) + "u, " + At + ", " +
            std::to_string(componentCount(T.Base)) + "u)" + narrowSwizzle(T.Base);
   }
   if (Hoisted)
-    for (const std::string &V : hoistedValueReads(Sig, Rec))
+    for (const std::string &V : hoistedValueReads(Sig, "rec"))
       S += ",\n          " + V;
   return S + ")";
-}
-
-/// The case of a superinstruction: First into a register, fed to Second's parameter (a float
-/// feeding a float2..4 parameter is broadcast, as the source word's broadcast bit says: the bit
-/// is set exactly then), Second's record and result slot from the next instruction, which the
-/// loop then skips. First's value never touches the value stack. With Quick, the case of a
-/// quickened superinstruction: both calls read their arguments as its pattern says.
-static void emitSuperinstructionCase(std::ostringstream &OS, const CompiledGraph &CG,
-                                     const Superinstruction &Sup, bool Hoists,
-                                     const QuickenedOp *Quick = nullptr) {
-  const FunctionSignature &F = CG.Signatures.at(Sup.First);
-  const FunctionSignature &G = CG.Signatures.at(Sup.Second);
-  const BaseType Fed = G.Params.at(Sup.Param).Type.Base;
-  std::string Value = "texcc_first";
-  if (F.Return != Fed)
-    Value = "(" + spelling(Fed) + ")(" + Value + ")";
-  OS << "    case " << (Quick ? Quick->Opcode : Sup.Opcode) << "u: { /* "
-     << (Quick ? "quickened " : "") << "superinstruction: " << F.Name;
-  if (Quick)
-    OS << " (" << patternComment(F, Quick->Sources) << ")";
-  OS << " -> " << G.Name << "." << G.Params[Sup.Param].Name;
-  if (Quick)
-    OS << " (" << patternComment(G, Quick->SecondSources) << ")";
-  OS << ", the next instruction; " << F.File << (G.File == F.File ? "" : ", " + G.File)
-     << " */\n"
-     << "      const " << spelling(F.Return) << " texcc_first = "
-     << interpCall(F, Hoists, "rec", -1, "", Quick ? &Quick->Sources : nullptr) << ";\n"
-     << "      skipNext = true;\n"
-     << "      resultSlot = fakeStack[prog + 6u + 3u * i];\n"
-     << "      const uint rec2 = fakeStack[prog + 7u + 3u * i] / 4u;\n"
-     << "      guard.at = i + 1u;\n"
-     << "      r = "
-     << widenToFloat4(G.Return,
-                      interpCall(G, Hoists, "rec2", static_cast<int>(Sup.Param), Value,
-                                 Quick ? &Quick->SecondSources : nullptr),
-                      Target::OpenCL)
-     << ";\n"
-     << "      break;\n"
-     << "    }\n";
 }
 
 static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoists) {
@@ -227,23 +182,12 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
   emitKernelPrologue(OS, "");
   if (!CG.Spill && !CG.LocalStack)
     OS << "  float4 stack[TEXCC_STACK_SLOTS];\n";
-  if (!CG.Superinstructions.empty())
-    OS << "  bool skipNext = false; /* set by a superinstruction: its second instruction ran */\n";
   OS << "  const uint prog = texcc_program(fakeStack, mat);\n"
         "  const uint numInstructions = fakeStack[prog];\n"
         "  const uint numOutputs = fakeStack[prog + 1u];\n"
         "  for (uint i = 0u; i < numInstructions; ++i) {\n";
-  // The next instruction of a superinstruction already ran. A flag, not ++i in its case: a
-  // loop with one increment keeps gfx90a's register use as without superinstructions (66
-  // VGPRs for rust, 74 with ++i in the case).
-  if (!CG.Superinstructions.empty())
-    OS << "    if (skipNext) {\n"
-          "      skipNext = false;\n"
-          "      continue;\n"
-          "    }\n";
   OS << "    const uint fnId = fakeStack[prog + 2u + 3u * i];\n";
-  OS << "    " << (CG.Superinstructions.empty() ? "const " : "")
-     << "uint resultSlot = fakeStack[prog + 3u + 3u * i];\n";
+  OS << "    const uint resultSlot = fakeStack[prog + 3u + 3u * i];\n";
   OS << "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
         "    guard.at = i;\n"
         "    float4 r;\n"
@@ -262,25 +206,15 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
        << ";\n"
        << "      break;\n";
   }
-  for (const Superinstruction &Sup : CG.Superinstructions)
-    emitSuperinstructionCase(OS, CG, Sup, Hoists);
   for (const QuickenedOp &Q : CG.Quickened) {
     auto It = CG.Signatures.find(Q.Fn);
-    if (It == CG.Signatures.end() || (!Q.Second.empty() && !CG.Signatures.count(Q.Second)))
+    if (It == CG.Signatures.end())
       continue;
-    if (!Q.Second.empty()) {
-      Superinstruction Sup;
-      Sup.First = Q.Fn;
-      Sup.Second = Q.Second;
-      Sup.Param = Q.Param;
-      emitSuperinstructionCase(OS, CG, Sup, Hoists, &Q);
-      continue;
-    }
     const FunctionSignature &Sig = It->second;
     OS << "    case " << Q.Opcode << "u: /* quickened " << Sig.Name << " ("
        << patternComment(Sig, Q.Sources) << ") */\n"
        << "      r = "
-       << widenToFloat4(Sig.Return, interpCall(Sig, Hoists, "rec", -1, "", &Q.Sources),
+       << widenToFloat4(Sig.Return, interpCall(Sig, Hoists, &Q.Sources),
                         Target::OpenCL)
        << ";\n"
        << "      break;\n";
@@ -298,8 +232,7 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
 }
 
 /// texcc_uniforms for the interp kernel: one work-item walks every material's program and, for
-/// each instruction whose function hoists (its opcode, or a superinstruction whose first
-/// function it is; the second is the next instruction, with its own opcode), computes the
+/// each instruction whose function hoists (its opcode, or a quickened opcode of it), computes the
 /// hoisted values from the record's constants into the record, after the parameters. Driven by
 /// the programs in args.bin, so a live edit's re-encoding needs no new kernel.
 static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) {
@@ -316,15 +249,9 @@ static void emitInterpUniforms(std::ostringstream &OS, const CompiledGraph &CG) 
       continue;
     const FunctionSignature &Sig = It->second;
     OS << "      case " << Id << "u: /* " << Sig.Name << " */\n";
-    for (const Superinstruction &Sup : CG.Superinstructions)
-      if (Sup.First == Sig.Name)
-        OS << "      case " << Sup.Opcode << "u: /* superinstruction " << Sup.First << " -> "
-           << Sup.Second << " */\n";
     for (const QuickenedOp &Q : CG.Quickened)
       if (Q.Fn == Sig.Name)
-        OS << "      case " << Q.Opcode << "u: /* quickened "
-           << (Q.Second.empty() ? Q.Fn : "superinstruction " + Q.Fn + " -> " + Q.Second)
-           << " */\n";
+        OS << "      case " << Q.Opcode << "u: /* quickened " << Q.Fn << " */\n";
     uint32_t BlockSize = 0;
     const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
     const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
@@ -365,11 +292,6 @@ void emitInterp(std::ostringstream &OS, const CompiledGraph &CG, bool Hoists) {
   OS << "#define TEXCC_ARG(p, at, n) \\\n"
         "  texcc_arg(hits + gid, fakeStack, fakeStack[rec + (p)], (at), (n), "
      << Stack << ")\n\n";
-  if (!CG.Superinstructions.empty())
-    OS << "/* The same, from the record at word r (a superinstruction's second instruction). */\n"
-          "#define TEXCC_ARG_IN(r, p, at, n) \\\n"
-          "  texcc_arg(hits + gid, fakeStack, fakeStack[(r) + (p)], (at), (n), "
-       << Stack << ")\n\n";
   Hoists = Hoists && !interpHoistingFunctions(CG).empty();
   if (Hoists)
     emitInterpUniforms(OS, CG);

@@ -41,10 +41,7 @@ std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Si
     computeWavefrontOrder(*CG, Opts.Log);
   });
   whileAllocating("laying out the arguments", [&] { layoutArguments(*CG, Opts.Log); });
-  whileAllocating("selecting superinstructions", [&] {
-    selectSuperinstructions(*CG, Opts, Opts.Log);
-    selectQuickened(*CG, Opts, Opts.Log);
-  });
+  whileAllocating("selecting quickened opcodes", [&] { selectQuickened(*CG, Opts, Opts.Log); });
   whileAllocating("encoding args.bin", [&] { encodeArgsBin(*CG); });
   return CG;
 }

@@ -57,10 +57,8 @@ bool GraphEditor::init(DiagnosticSink &Diags) {
     for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id)
       if (!CG.FunctionsById[Id].empty())
         Opts.FixedFunctionIds[CG.FunctionsById[Id]] = static_cast<unsigned>(Id);
-  // Likewise its superinstructions and quickened opcodes (the tables given, or those chosen
-  // now): later compiles apply them and never choose others, whose cases the kernel lacks.
-  Opts.Superinstructions = CG.Superinstructions;
-  Opts.MaxSuperinstructions = 0;
+  // Likewise its quickened opcodes (the table given, or the one chosen now): later compiles
+  // apply them and never choose others, whose cases the kernel lacks.
   Opts.Quickened = CG.Quickened;
   Opts.MaxQuickened = 0;
   NeedsRebuild = NeedsCode = NeedsAttributeCase = false;

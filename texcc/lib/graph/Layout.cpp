@@ -248,9 +248,7 @@ void encodeArgsBin(CompiledGraph &CG) {
     put32(Bin, W + 4, static_cast<uint32_t>(M.Outputs.size()));
     W += 8;
     for (const Instruction &In : M.Program) {
-      put32(Bin, W, In.Quick >= 0   ? CG.Quickened[In.Quick].Opcode
-                    : In.Super >= 0 ? CG.Superinstructions[In.Super].Opcode
-                                    : CG.Nodes[In.Node].FnId);
+      put32(Bin, W, In.Quick >= 0 ? CG.Quickened[In.Quick].Opcode : CG.Nodes[In.Node].FnId);
       put32(Bin, W + 4, In.ResultSlot);
       put32(Bin, W + 8, In.RecordOffset);
       W += 12;

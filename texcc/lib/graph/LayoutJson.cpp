@@ -78,14 +78,6 @@ OJson functionJson(unsigned Id, const FunctionSignature &Sig) {
   return F;
 }
 
-OJson superinstructionJson(const CompiledGraph &CG, const Superinstruction &S) {
-  return {{"opcode", S.Opcode},
-          {"first", S.First},
-          {"second", S.Second},
-          {"param", fedParamName(CG, S)},
-          {"paramIndex", S.Param}};
-}
-
 OJson argJson(const CompiledGraph &CG, const CompiledArg &A) {
   OJson J = {{"name", A.Name}};
   switch (A.Src) {
@@ -166,17 +158,9 @@ std::string layoutJson(const CompiledGraph &CG) {
       Functions.push_back(functionJson(static_cast<unsigned>(Id), It->second));
   }
   J["functions"] = Functions;
-  OJson Supers = OJson::array();
-  for (const Superinstruction &S : CG.Superinstructions)
-    Supers.push_back(superinstructionJson(CG, S));
-  J["superinstructions"] = Supers;
   OJson Quick = OJson::array();
-  for (const QuickenedOp &Q : CG.Quickened) {
-    OJson E = {{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Q.Sources}};
-    if (!Q.Second.empty())
-      E["second"] = {{"function", Q.Second}, {"paramIndex", Q.Param}, {"sources", Q.SecondSources}};
-    Quick.push_back(E);
-  }
+  for (const QuickenedOp &Q : CG.Quickened)
+    Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Q.Sources}});
   J["quickened"] = Quick;
   OJson Nodes = OJson::array();
   for (size_t I = 0; I < CG.Nodes.size(); ++I) {
@@ -230,17 +214,16 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
         Types.push_back(P.at("type").get<std::string>());
       Taken.insert(F.at("id").get<unsigned>());
     }
-    std::set<std::tuple<std::string, std::string, unsigned>> Pairs;
+    // A layout of texcc before 2026-12 may list superinstructions, and quickened pairs of them
+    // ("second"): their opcodes stay the kernel's, but edits encode plain and single quickened
+    // opcodes only, which that kernel has too.
     if (J.contains("superinstructions"))
-      for (const auto &S : J.at("superinstructions")) {
+      for (const auto &S : J.at("superinstructions"))
         Taken.insert(S.at("opcode").get<unsigned>());
-        Pairs.insert({S.at("first").get<std::string>(), S.at("second").get<std::string>(),
-                      S.at("paramIndex").get<unsigned>()});
-      }
     // One function's sources: one per parameter, each a kind the kernel has a case for; "int:N"
-    // only for an int parameter, "fed" only for the fed parameter of a pair's second.
+    // only for an int parameter.
     auto CheckSources = [&](const std::string &Where, const std::string &Fn,
-                            const std::vector<std::string> &Sources, int Fed) {
+                            const std::vector<std::string> &Sources) {
       auto It = ParamTypes.find(Fn);
       if (It == ParamTypes.end()) {
         Error = Where + "function '" + Fn + "' is not in /functions";
@@ -266,14 +249,10 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
           } catch (const std::exception &) {
           }
         }
-        if ((static_cast<int>(P) == Fed) != (S == "fed") || (!Known && S != "fed")) {
+        if (!Known) {
           Error = Where + "source '" + S + "' of parameter " + std::to_string(P) + " of '" + Fn +
-                  "' (expected " +
-                  (static_cast<int>(P) == Fed
-                       ? std::string("fed")
-                       : std::string("const, slot, slot.x, attr:Name, attr:Name.x") +
-                             (It->second[P] == "int" ? " or int:N" : "")) +
-                  ")";
+                  "' (expected const, slot, slot.x, attr:Name, attr:Name.x" +
+                  (It->second[P] == "int" ? " or int:N" : "") + ")";
           return false;
         }
       }
@@ -285,50 +264,19 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
       QuickenedOp Q;
       Q.Opcode = E.at("opcode").get<unsigned>();
       Q.Fn = E.at("function").get<std::string>();
-      Q.Sources = E.at("sources").get<std::vector<std::string>>();
-      if (!CheckSources(Where, Q.Fn, Q.Sources, -1))
-        return false;
-      if (E.contains("second")) {
-        const auto &S = E.at("second");
-        Q.Second = S.at("function").get<std::string>();
-        Q.Param = S.at("paramIndex").get<unsigned>();
-        Q.SecondSources = S.at("sources").get<std::vector<std::string>>();
-        if (!Pairs.count({Q.Fn, Q.Second, Q.Param})) {
-          Error = Where + "no superinstruction '" + Q.Fn + "' -> '" + Q.Second + "' (parameter " +
-                  std::to_string(Q.Param) + ") in /superinstructions";
-          return false;
-        }
-        if (!CheckSources(Where + "second: ", Q.Second, Q.SecondSources,
-                          static_cast<int>(Q.Param)))
-          return false;
+      if (E.contains("second")) { // a quickened superinstruction of an older texcc (above)
+        Taken.insert(Q.Opcode);
+        continue;
       }
+      Q.Sources = E.at("sources").get<std::vector<std::string>>();
+      if (!CheckSources(Where, Q.Fn, Q.Sources))
+        return false;
       if (!Taken.insert(Q.Opcode).second) {
         Error = Where + "opcode " + std::to_string(Q.Opcode) +
                 " is already a function id, a superinstruction's or another entry's";
         return false;
       }
       Table.push_back(Q);
-    }
-  } catch (const nlohmann::json::exception &E) {
-    Error = std::string("malformed layout.json: ") + E.what();
-    return false;
-  }
-  return true;
-}
-
-bool readLayoutSuperinstructions(const std::string &LayoutJsonText,
-                                 std::vector<Superinstruction> &Table, std::string &Error) {
-  try {
-    nlohmann::json J = nlohmann::json::parse(LayoutJsonText);
-    if (!J.contains("superinstructions"))
-      return true; // a kernel without them (older texcc, or --no-superinstructions)
-    for (const auto &E : J.at("superinstructions")) {
-      Superinstruction S;
-      S.Opcode = E.at("opcode").get<unsigned>();
-      S.First = E.at("first").get<std::string>();
-      S.Second = E.at("second").get<std::string>();
-      S.Param = E.at("paramIndex").get<unsigned>();
-      Table.push_back(S);
     }
   } catch (const nlohmann::json::exception &E) {
     Error = std::string("malformed layout.json: ") + E.what();

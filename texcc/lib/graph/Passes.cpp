@@ -189,9 +189,7 @@ void assignFunctionIds(CompiledGraph &CG, const SignatureMap &Sigs, const Compil
   }
   for (const auto &KV : Opts.FixedFunctionIds)
     Used.insert(KV.second);
-  for (const Superinstruction &S : Opts.Superinstructions) // the kernel's fused opcodes
-    Used.insert(S.Opcode);
-  for (const QuickenedOp &Q : Opts.Quickened) // and its quickened ones
+  for (const QuickenedOp &Q : Opts.Quickened) // the kernel's quickened opcodes
     Used.insert(Q.Opcode);
   CG.Signatures.clear();
   std::set<std::string> Attributes, Settings;

@@ -1,5 +1,4 @@
-// Quickened opcodes of the interp kernel (docs/modes.md): an instruction (or a superinstruction
-// pair) whose function and argument sources (constant, int value, value-stack slot, which
+// Quickened opcodes of the interp kernel (docs/modes.md): an instruction whose function and argument sources (constant, int value, value-stack slot, which
 // attribute, broadcast or not) match an entry of the table runs that entry's case, which reads
 // every argument straight from where the pattern says instead of decoding the kind of each
 // source word, and has int constants as literals. Chosen from the patterns
@@ -10,7 +9,7 @@
 
 #include <algorithm>
 #include <map>
-#include <tuple>
+#include <utility>
 
 namespace texcc::graph {
 
@@ -37,47 +36,24 @@ std::vector<std::string> sourcesOf(const CompiledNode &N) {
   return S;
 }
 
-/// The pattern instruction J of M runs: its function and sources, and for the first of a
-/// superinstruction the second's too (its fed parameter "fed"). Opcode unset.
+/// The pattern instruction J of M runs: its function and sources. Opcode unset.
 QuickenedOp patternAt(const CompiledGraph &CG, const CompiledMaterial &M, size_t J) {
   QuickenedOp P;
   const CompiledNode &N = CG.Nodes[M.Program[J].Node];
   P.Fn = N.Fn;
   P.Sources = sourcesOf(N);
-  if (M.Program[J].Super >= 0) {
-    const Superinstruction &S = CG.Superinstructions[M.Program[J].Super];
-    P.Second = S.Second;
-    P.Param = S.Param;
-    P.SecondSources = sourcesOf(CG.Nodes[M.Program[J + 1].Node]);
-    P.SecondSources.at(S.Param) = "fed";
-  }
   return P;
 }
 
 /// A pattern without its opcode, as a map key: patterns are looked up once per instruction (a
 /// scan of the patterns seen so far was quadratic in the number of distinct functions).
-using PatternKey = std::tuple<std::string, std::vector<std::string>, std::string, unsigned,
-                              std::vector<std::string>>;
-PatternKey keyOf(const QuickenedOp &Q) {
-  return {Q.Fn, Q.Sources, Q.Second, Q.Param, Q.SecondSources};
-}
-
-/// Whether instruction J is the second half of a superinstruction (skipped: the
-/// superinstruction's case runs it).
-bool secondOfSuperinstruction(const CompiledMaterial &M, size_t J) {
-  return J > 0 && M.Program[J - 1].Super >= 0;
-}
+using PatternKey = std::pair<std::string, std::vector<std::string>>;
+PatternKey keyOf(const QuickenedOp &Q) { return {Q.Fn, Q.Sources}; }
 
 std::string describe(const QuickenedOp &Q) {
   std::string S = "'" + Q.Fn + "' (";
   for (size_t P = 0; P < Q.Sources.size(); ++P)
     S += (P ? ", " : "") + Q.Sources[P];
-  S += ")";
-  if (Q.Second.empty())
-    return S;
-  S += " -> '" + Q.Second + "' (";
-  for (size_t P = 0; P < Q.SecondSources.size(); ++P)
-    S += (P ? ", " : "") + Q.SecondSources[P];
   return S + ")";
 }
 
@@ -86,15 +62,13 @@ std::string describe(const QuickenedOp &Q) {
 void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log) {
   std::vector<QuickenedOp> Table = Opts.Quickened;
   if (Table.empty() && Opts.MaxQuickened > 0) {
-    // Every pattern of an instruction that runs its own case or a superinstruction's, counted
-    // over all programs; ties in order of first occurrence.
+    // Every instruction's pattern, counted over all programs; ties in order of first
+    // occurrence.
     std::vector<QuickenedOp> Order;
     std::vector<unsigned> Count;
     std::map<PatternKey, size_t> IndexOf;
     for (const CompiledMaterial &M : CG.Materials)
       for (size_t J = 0; J < M.Program.size(); ++J) {
-        if (secondOfSuperinstruction(M, J))
-          continue;
         QuickenedOp P = patternAt(CG, M, J);
         auto [It, New] = IndexOf.emplace(keyOf(P), Order.size());
         if (New) {
@@ -111,8 +85,7 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
                      [&](size_t A, size_t B) { return Count[A] > Count[B]; });
     if (Rank.size() > Opts.MaxQuickened)
       Rank.resize(Opts.MaxQuickened);
-    const unsigned First =
-        static_cast<unsigned>(CG.FunctionsById.size() + CG.Superinstructions.size());
+    const unsigned First = static_cast<unsigned>(CG.FunctionsById.size());
     for (size_t K : Rank) {
       QuickenedOp Q = Order[K];
       Q.Opcode = First + static_cast<unsigned>(Table.size());
@@ -127,8 +100,6 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
     for (size_t J = 0; J < M.Program.size(); ++J) {
       Instruction &In = M.Program[J];
       In.Quick = -1;
-      if (secondOfSuperinstruction(M, J))
-        continue;
       auto It = TableIndex.find(keyOf(patternAt(CG, M, J)));
       if (It != TableIndex.end()) {
         In.Quick = static_cast<int>(It->second);
@@ -140,8 +111,7 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
     return;
   for (size_t K = 0; K < Table.size(); ++K)
     *Log << "quickened: opcode " << Table[K].Opcode << ": " << describe(Table[K]) << ", "
-         << Uses[K] << " instruction" << (Table[K].Second.empty() ? "" : " pair")
-         << (Uses[K] == 1 ? "" : "s") << "\n";
+         << Uses[K] << " instruction" << (Uses[K] == 1 ? "" : "s") << "\n";
 }
 
 } // namespace texcc::graph

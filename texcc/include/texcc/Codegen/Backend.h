@@ -21,9 +21,6 @@ namespace texcc::codegen {
 struct BackendOptions {
   /// --no-hoist: no declaration of the user's functions computed once per material.
   bool NoHoist = false;
-  /// interp (and shape's interp fallback): the superinstructions' budget (0: none).
-  unsigned MaxSuperinstructions = 8;
-  unsigned LightCost = 1200;
   /// interp: the quickened opcodes' budget (--max-quickened).
   unsigned MaxQuickened = 8;
 };

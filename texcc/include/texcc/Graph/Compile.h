@@ -19,37 +19,18 @@
 
 namespace texcc::graph {
 
-/// A superinstruction of the interp kernel (docs/modes.md): where instruction j runs First and
-/// instruction j+1 runs Second, whose parameter Param is the only reader of j's result (no other
-/// instruction, no material output), the first instruction's fnId word is Opcode and one switch
-/// case runs both, First's value passed to Second in a register.
-struct Superinstruction {
-  unsigned Opcode = 0;        // kernel case: (number of function ids at texcc time) + index
-  std::string First, Second;  // function names
-  unsigned Param = 0;         // index of Second's parameter that reads First's result
-  bool operator==(const Superinstruction &O) const {
-    return Opcode == O.Opcode && First == O.First && Second == O.Second && Param == O.Param;
-  }
-};
-
 /// A quickened opcode of the interp kernel (docs/modes.md): function Fn with every argument's
 /// source fixed (Sources[p], argumentSource()): its case reads each argument straight from where
 /// the pattern says (the record's parameter block, the value-stack slot in the source word, an
 /// attribute, or, for an int constant, the literal the pattern names: "int:6" makes the case
 /// code for that value, which the compiler folds), with no decoding of the source word's kind.
-/// With Second set, the opcode is a quickened superinstruction: the pair (Fn -> Second.Param)
-/// of a superinstruction with both halves' sources fixed (SecondSources[Param] is "fed").
 struct QuickenedOp {
-  unsigned Opcode = 0;               // kernel case, after the superinstructions' opcodes
+  unsigned Opcode = 0;               // kernel case, after the function ids
   std::string Fn;
   /// Per parameter: "const", "int:N", "slot", "slot.x", "attr:Name", "attr:Name.x".
   std::vector<std::string> Sources;
-  std::string Second;                // a quickened superinstruction's second function, or ""
-  unsigned Param = 0;                // Second's parameter that Fn's result feeds
-  std::vector<std::string> SecondSources;
   bool operator==(const QuickenedOp &O) const {
-    return Opcode == O.Opcode && Fn == O.Fn && Sources == O.Sources && Second == O.Second &&
-           Param == O.Param && SecondSources == O.SecondSources;
+    return Opcode == O.Opcode && Fn == O.Fn && Sources == O.Sources;
   }
 };
 
@@ -75,16 +56,8 @@ struct CompileOptions {
   std::map<std::string, std::string> LibraryFunctions;
   /// Where the passes log what they did (texcc -v); null for silence.
   std::ostream *Log = nullptr;
-  /// Superinstructions: choose at most this many fused pairs from the programs (0: none), most
-  /// frequent first, both functions light (signature Cost in 1..LightCost). Ignored when
-  /// Superinstructions is not empty.
-  unsigned MaxSuperinstructions = 0;
-  unsigned LightCost = 1200;
-  /// The kernel's superinstruction table (live edits: layout.json "superinstructions"): applied
-  /// wherever its pairs occur after the edit, nothing else chosen.
-  std::vector<Superinstruction> Superinstructions;
   /// Quickened opcodes: choose at most this many (function, argument sources) patterns, the
-  /// most frequent among the instructions and superinstruction pairs (0: none). Ignored when
+  /// most frequent among the instructions (0: none). Ignored when
   /// Quickened is not empty.
   unsigned MaxQuickened = 0;
   /// The kernel's quickened opcodes (live edits: layout.json "quickened"): used wherever an
@@ -132,12 +105,8 @@ struct Instruction {
   unsigned ResultSlot = 0;    // value-stack slot that receives the result; may be a slot the
                               // instruction's own arguments read (they are read first)
   uint32_t RecordOffset = 0;  // the argument record it uses (the node's, or one of its copies)
-  /// Index into CompiledGraph::Superinstructions when this instruction and the next run as one
-  /// (the fnId word is then its Opcode); -1 otherwise.
-  int Super = -1;
-  /// Index into CompiledGraph::Quickened when this instruction runs a quickened opcode (a
-  /// superinstruction's first instruction: a quickened superinstruction, its opcode written
-  /// instead of the superinstruction's); -1 otherwise.
+  /// Index into CompiledGraph::Quickened when this instruction runs a quickened opcode (the
+  /// fnId word is then its Opcode); -1 otherwise.
   int Quick = -1;
 };
 
@@ -183,8 +152,7 @@ struct CompiledGraph {
   /// FnId -> name, the same functions: the live ones first (in node order), then those only
   /// dead nodes name (in graph.json order). Empty names are gaps (ids pinned by live edits).
   std::vector<std::string> FunctionsById;
-  std::vector<Superinstruction> Superinstructions;  // the interp kernel's table, opcode order
-  std::vector<QuickenedOp> Quickened;               // likewise, after the superinstructions
+  std::vector<QuickenedOp> Quickened;  // the interp kernel's table, opcode order, after the ids
   std::vector<CompiledNode> Nodes;         // live nodes
   /// Every function a node of the graph names (live or dead), in graph.json order of first
   /// use; and the attribute ids that node arguments read (live or dead nodes), sorted: the
@@ -249,10 +217,6 @@ std::string layoutJson(const CompiledGraph &CG);
 /// Reads layout.json's "quickened" (absent: none) for the runtime's live edits.
 bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<QuickenedOp> &Table,
                          std::string &Error);
-
-/// Reads layout.json's "superinstructions" (absent: none) for the runtime's live edits.
-bool readLayoutSuperinstructions(const std::string &LayoutJsonText,
-                                 std::vector<Superinstruction> &Table, std::string &Error);
 
 /// Reads the signatures back from a layout.json (for the runtime's live edits), keyed by name,
 /// and the function ids in use.

@@ -43,17 +43,10 @@ void computeWavefrontOrder(CompiledGraph &CG, std::ostream *Log);
 /// Parameter blocks (OpenCL alignment), records (16-aligned), record copies, array data,
 /// program word offsets.
 void layoutArguments(CompiledGraph &CG, std::ostream *Log);
-/// Superinstructions (interp): Opts.Superinstructions when given (live edits), else at most
-/// Opts.MaxSuperinstructions pairs of light functions, most frequent first, numbered from
-/// FunctionsById.size(); then marks the pairs greedily along each program (Instruction::Super).
-/// Sets CG.Superinstructions to the table (only the entries that fused, when chosen here).
-void selectSuperinstructions(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
-/// The name of the parameter of S.Second that S feeds ("" when the signature is unknown).
-std::string fedParamName(const CompiledGraph &CG, const Superinstruction &S);
 /// Quickened opcodes (interp): Opts.Quickened when given (live edits), else at most
-/// Opts.MaxQuickened patterns (function and argument sources; for a superinstruction's first
-/// instruction, the pair's) of the programs' instructions, most frequent first, numbered after
-/// the superinstructions' opcodes; marks the instructions (Instruction::Quick). Sets
+/// Opts.MaxQuickened patterns (function and argument sources) of the programs' instructions,
+/// most frequent first, numbered after the function ids; marks the instructions
+/// (Instruction::Quick). Sets
 /// CG.Quickened.
 void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
 /// Where argument A of a node comes from, as QuickenedOp::Sources spells it: "int:N" for an

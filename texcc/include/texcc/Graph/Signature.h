@@ -39,7 +39,7 @@ struct FunctionSignature {
   std::vector<std::string> Settings;    // likewise ("Time")
   /// The size of the code a call inlines to (the front end: statements and expressions of the
   /// body, plus, per call of another user function, that function's Cost); 0 when unknown.
-  /// Superinstructions fuse only light functions (Cost in 1..CompileOptions::LightCost).
+  /// Reported in layout.json (functions[].cost) as a measure of a function's size.
   unsigned Cost = 0;
   /// Locals computed once per material in shape mode, in declaration order (empty in every
   /// other mode: texcc drops them there), and the indices of the parameters they read.
