@@ -27,14 +27,22 @@ Node *Graph::findNode(const std::string &Id) {
 }
 
 const std::vector<std::string> &bsdfTypes() {
-  static const std::vector<std::string> Types = {"diffuse", "glossy", "mirror", "emission",
-                                                 "blend"};
+  static const std::vector<std::string> Types = {"diffuse", "glossy",   "mirror",
+                                                 "emission", "principled", "blend"};
   return Types;
 }
 
+// The one table of BSDF inputs: canonical order, then which may be left out (the renderer
+// then uses the default that docs/graph.md lists). "normal" (a float3 shading normal, e.g. a
+// bump node's) is optional on every scattering BSDF.
 const std::vector<std::string> &bsdfInputs(const std::string &Type) {
-  static const std::vector<std::string> Diffuse = {"color"}, Glossy = {"color", "roughness"},
+  static const std::vector<std::string> Diffuse = {"color", "normal"},
+                                        Glossy = {"color", "roughness", "normal"},
                                         Emission = {"color", "strength"},
+                                        Principled = {"baseColor",     "metallic",
+                                                      "roughness",     "specular",
+                                                      "emissionColor", "emissionStrength",
+                                                      "normal"},
                                         Blend = {"mask", "a", "b"}, None;
   if (Type == "diffuse" || Type == "mirror")
     return Diffuse;
@@ -42,9 +50,20 @@ const std::vector<std::string> &bsdfInputs(const std::string &Type) {
     return Glossy;
   if (Type == "emission")
     return Emission;
+  if (Type == "principled")
+    return Principled;
   if (Type == "blend")
     return Blend;
   return None;
+}
+
+bool bsdfInputOptional(const std::string &Type, const std::string &Input) {
+  return Input == "normal" || Type == "principled";
+}
+
+bool bsdfInputIsVector(const std::string &Input) {
+  return Input == "color" || Input == "baseColor" || Input == "emissionColor" ||
+         Input == "normal";
 }
 
 namespace {
@@ -344,6 +363,8 @@ private:
       const json::Member *M = V.getMember(In);
       std::string InPath = JsonPath + "/" + In;
       if (!M) {
+        if (bsdfInputOptional(B.Type, In))
+          continue;
         error(V.Loc, JsonPath, "BSDF '" + B.Type + "' is missing input '" + In + "'");
         Ok = false;
         continue;

@@ -336,9 +336,19 @@ private:
   bool resolveBsdfInput(const std::string &MatName, const Bsdf &B, const std::string &Name,
                         const ArgValue &A, CompiledMaterial &M, CompiledBsdfInput &In) {
     In.Name = Name;
-    bool IsColor = Name == "color";
+    bool IsColor = bsdfInputIsVector(Name);
+    bool IsNormal = Name == "normal";
     std::string What = "material '" + MatName + "': " + B.Type + " input '" + Name + "'";
-    std::string Expects = IsColor ? "a color (float3, float4 or float)" : "float";
+    std::string Expects = IsNormal  ? "a normal (float3 or float4)"
+                          : IsColor ? "a color (float3, float4 or float)"
+                                    : "float";
+    if (IsNormal && A.K != ArgValue::Kind::NodeRef) {
+      error(A.Loc,
+            What + " expects a node computing a normal ({\"node\": id}), got " +
+                numberList(A.Numbers),
+            A.JsonPath);
+      return false;
+    }
     if (A.K == ArgValue::Kind::NodeRef) {
       unsigned Index;
       if (!resolveNodeRef(What, A, Index))
@@ -346,7 +356,9 @@ private:
       const FunctionSignature *S = signatureOf(Index);
       if (!S)
         return false;
-      bool Ok = IsColor ? S->Return != BaseType::Float2 : S->Return == BaseType::Float;
+      bool Ok = IsNormal  ? S->Return == BaseType::Float3 || S->Return == BaseType::Float4
+                : IsColor ? S->Return != BaseType::Float2
+                          : S->Return == BaseType::Float;
       if (!Ok) {
         error(A.Loc,
               What + " expects " + Expects + ", got node '" + A.Ref + "' of type " +

@@ -145,10 +145,11 @@ TEST(Parse, DuplicateNodeId) {
 TEST(Parse, BsdfErrors) {
   EXPECT_EQ(parseErrors(R"({"texcc": 1, "materials": {"m": {"bsdf": "difuse", "color": 1}}})"),
             "g.json:1:42: error: unknown BSDF 'difuse'; expected 'diffuse', 'glossy', "
-            "'mirror', 'emission' or 'blend'; did you mean 'diffuse'? [/materials/m/bsdf]\n");
+            "'mirror', 'emission', 'principled' or 'blend'; did you mean 'diffuse'? "
+            "[/materials/m/bsdf]\n");
   EXPECT_EQ(parseErrors(R"({"texcc": 1, "materials": {"m": {"bsdf": "diffuse", "colour": 1}}})"),
             "g.json:1:53: error: BSDF 'diffuse' has no input 'colour'; its inputs are "
-            "'color'; did you mean 'color'? [/materials/m/colour]\n"
+            "'color' or 'normal'; did you mean 'color'? [/materials/m/colour]\n"
             "g.json:1:33: error: BSDF 'diffuse' is missing input 'color' [/materials/m]\n");
   EXPECT_EQ(parseErrors(R"({"texcc": 1, "materials": {"m": {"color": 1}}})"),
             "g.json:1:33: error: material 'm' is missing required key 'bsdf' [/materials/m]\n");

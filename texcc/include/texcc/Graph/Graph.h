@@ -48,7 +48,9 @@ struct Node {
 };
 
 /// A BSDF tree node: "diffuse" {color}, "glossy" {color, roughness}, "mirror" {color},
-/// "emission" {color, strength}, "blend" {mask, a, b}. Inputs are constants or node refs.
+/// "emission" {color, strength}, "principled" {baseColor, metallic, roughness, specular,
+/// emissionColor, emissionStrength}, "blend" {mask, a, b}; every scattering one takes an
+/// optional "normal". Inputs are constants or node refs.
 struct Bsdf {
   std::string Type;
   std::vector<std::pair<std::string, ArgValue>> Inputs;  // color, roughness, mask, strength...
@@ -77,8 +79,12 @@ struct Graph {
 /// The inputs each BSDF type takes, in canonical order ("blend": mask, a, b). Empty for an
 /// unknown type.
 const std::vector<std::string> &bsdfInputs(const std::string &Type);
-/// Every BSDF type: diffuse, glossy, mirror, emission, blend.
+/// Every BSDF type: diffuse, glossy, mirror, emission, principled, blend.
 const std::vector<std::string> &bsdfTypes();
+/// Whether a BSDF may leave this input out ("normal" everywhere; every principled input).
+bool bsdfInputOptional(const std::string &Type, const std::string &Input);
+/// Whether the input is a float3 (color, baseColor, emissionColor, normal); the others: float.
+bool bsdfInputIsVector(const std::string &Input);
 
 /// Parses one argument value written as JSON text ("0.5", "[1,0,0]", "[[0,1],[1,2]]",
 /// "{\"node\": \"n\"}"), as the live-edit API receives it. Reports errors against File.
