@@ -26,7 +26,8 @@ NOT_YET = [
     ("Texture Coordinate UV and Normal (`blTexCoordUV`, `blTexCoordNormal`)",
      "implemented (TexCoord0; the shading normal through the object's axes, passed as "
      "arguments), no fixture: compare.py evaluates at points with texcc-eval, which sets "
-     "ObjectPos and WorldPos from a point but draws TexCoord0 and Normal at random"),
+     "ObjectPos and WorldPos from a point but draws TexCoord0 and Normal at random; "
+     "input-attributes-{host,device}.test check them against the same hit's attributes"),
     ("Geometry Normal, True Normal, Tangent, Incoming (`blGeometry*`)",
      "implemented as the attributes Normal, GeomNormal, Tangent and ViewDir; no fixture, for the "
      "same reason. Tangent is texrender's dP/du of the mesh's UVs; Cycles' Geometry Tangent is "
@@ -35,7 +36,8 @@ NOT_YET = [
     ("Ambient Occlusion (`blAmbientOcclusionAO`, `blAmbientOcclusionColor`)",
      "implemented through texrender's AO attribute; Samples and Distance are the scene's "
      "render.aoSamples and render.aoDistance (the Blender exporter sets them from the node). "
-     "Not comparable point by point: both renderers estimate AO with their own random rays"),
+     "Not comparable point by point: both renderers estimate AO with their own random rays "
+     "(input-attributes-*.test check AO in [0, 1] and Color = color * AO)"),
 ]
 
 
