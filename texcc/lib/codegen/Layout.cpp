@@ -63,6 +63,7 @@ std::string generateLayout(const CompiledGraph &CG, const CodegenOptions &Opts) 
   L["mode"] = modeName(Opts.EvalMode);
   L["target"] = targetName(Opts.Tgt);
   L["graph"] = Opts.GraphPath;
+  L["compileOptions"] = Opts.CompileOptions;
   L["kernel"] = kernelJson(CG, Opts);
   L["scratchFloat4PerHit"] = scratchFloat4PerHit(CG, Opts);
   for (auto It = Graph.begin(); It != Graph.end(); ++It)

@@ -114,6 +114,27 @@ static void renderUserCode(const cg::Backend &B, const fe::FrontendResult &FR,
       FR, CG, All, CO.InterpHoists ? cg::interpHoistingFunctions(CG) : std::set<std::string>{});
 }
 
+/// layout.json "compileOptions": the arguments that make the same kernel from an edited graph
+/// (its sources and --bake values are in the graph the runtime writes).
+static std::vector<std::string> replayArguments(const Options &Opts) {
+  std::vector<std::string> A{std::string("--mode=") + cg::modeName(Opts.EvalMode),
+                             std::string("--target=") + cg::targetName(Opts.Tgt)};
+  for (const std::string &I : Opts.IncludeDirs)
+    A.push_back("-I" + fs::absolute(fs::path(I)).lexically_normal().string());
+  for (const std::string &D : Opts.Defines)
+    A.push_back("-D" + D);
+  A.push_back("--stack-limit=" + std::to_string(Opts.StackLimit));
+  A.push_back("--local-stack-limit=" + std::to_string(Opts.LocalStackLimit));
+  A.push_back("--max-quickened=" + std::to_string(Opts.Backend.MaxQuickened));
+  if (Opts.Backend.NoHoist)
+    A.push_back("--no-hoist");
+  if (Opts.LoopBudget)
+    A.push_back("--loop-budget=" + std::to_string(Opts.LoopBudget));
+  if (!Opts.Checks)
+    A.push_back("--no-checks");
+  return A;
+}
+
 int compile(const Options &Opts) {
   const cg::Backend &B = cg::backendFor(Opts.EvalMode, Opts.Tgt);
   std::optional<gr::Graph> G = readGraph(Opts);
@@ -160,6 +181,7 @@ int compile(const Options &Opts) {
   CO.GraphPath = fs::absolute(fs::path(Opts.GraphPath)).lexically_normal().string();
   CO.LoopBudget = Opts.LoopBudget;
   CO.Checks = Opts.Checks;
+  CO.CompileOptions = replayArguments(Opts);
   B.configureCodegen(CO, Opts.Backend);
   renderUserCode(B, *FR, *CG, CO);
   std::string Error;

@@ -47,6 +47,10 @@ struct CodegenOptions {
   /// --no-checks (hidden, for A/B measurement: bench/per_hit.py): `#define TEXCC_CHECKS 0`,
   /// which makes the loop budget's test always true, so the device compiler drops the checks.
   bool Checks = true;
+  /// layout.json "compileOptions": texcc's arguments besides --graph, -o and the sources (the
+  /// mode, -I made absolute, -D, the limits, --no-hoist ...), which a live edit's regeneration
+  /// passes again so that the new kernel is made the way this one was (docs/abi.md).
+  std::vector<std::string> CompileOptions;
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).
