@@ -1,5 +1,5 @@
 /* shade.cl: one path vertex per active hit. Adds emission (area lights with MIS against light
- * sampling; sky and sun on a miss), picks a BSDF leaf of the material's tree (a blend chooses
+ * sampling; sky and sun on a miss; a principled leaf's emission), picks a BSDF leaf of the material's tree (a blend chooses
  * `b` with probability mask), makes one next-event-estimation shadow ray (light chosen by the
  * light CDF; MIS, power heuristic), samples the next direction, applies Russian roulette and
  * writes the next ray. Path length follows Mitsuba's max_depth. */
@@ -144,8 +144,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     node = rt_rand(&rng) < m ? bsdfs[node].b : bsdfs[node].a;
   }
   RtBsdfNode leaf = bsdfs[node];
-  float3 color = rt_input(leaf.in[0], outputs, base).xyz;
-  float param = rt_input(leaf.in[1], outputs, base).x;
+  float3 color = rt_input(leaf.in[RT_IN_COLOR], outputs, base).xyz;
+  float param = rt_input(leaf.in[RT_IN_ROUGHNESS], outputs, base).x;
   if (!rt_finite3(color) || !isfinite(param)) {
     rt_poison(paths, pid, p, rng);
     return;
@@ -157,6 +157,42 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     paths[pid] = p;
     return;
   }
+  RtPrincipled pr;
+  pr.base = color;
+  pr.roughness = param;
+  pr.metallic = pr.f0 = 0.0f;
+  if (leaf.type == RT_BSDF_PRINCIPLED) {
+    pr.metallic = rt_input(leaf.in[RT_IN_METALLIC], outputs, base).x;
+    float spec = rt_input(leaf.in[RT_IN_SPECULAR], outputs, base).x;
+    float3 ec = rt_input(leaf.in[RT_IN_EMISSION_COLOR], outputs, base).xyz;
+    float es = rt_input(leaf.in[RT_IN_EMISSION_STRENGTH], outputs, base).x;
+    if (!isfinite(pr.metallic) || !isfinite(spec) || !rt_finite3(ec) || !isfinite(es)) {
+      rt_poison(paths, pid, p, rng);
+      return;
+    }
+    pr.metallic = clamp(pr.metallic, 0.0f, 1.0f);
+    pr.f0 = clamp(0.08f * spec, 0.0f, 1.0f);
+    pr.base = fmin(color, (float3)(1.0f));
+    if (es > 0.0f)
+      p.radiance.xyz += thr * fmax(ec, (float3)(0.0f)) * es;
+  }
+  /* A shading normal from the material (a bump node): kept on the side of the geometric
+   * normal, and tilted towards it so that it is at least a little above the surface. */
+  if (leaf.in[RT_IN_NORMAL].output >= 0) {
+    float3 nb = rt_input(leaf.in[RT_IN_NORMAL], outputs, base).xyz;
+    if (!rt_finite3(nb)) {
+      rt_poison(paths, pid, p, rng);
+      return;
+    }
+    float len = length(nb);
+    if (len > 0.0f) {
+      nb /= len;
+      float c = dot(nb, s.ng);
+      if (c < 0.01f)
+        nb = normalize(nb + (0.01f - c) * s.ng);
+      s.ns = nb;
+    }
+  }
   float3 wo = -d;
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
 
@@ -167,7 +203,9 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, &rng, &wi, &tmax, &le);
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
-      float3 f = rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
+      float3 f = leaf.type == RT_BSDF_PRINCIPLED
+                     ? rt_principled_eval(pr, s.ns, wo, wi, &bp)
+                     : rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
       float cosI = dot(wi, s.ns);
       float3 c = thr * f * le * (cosI * rt_mis(lp, bp) / lp);
       if (!rt_finite3(c)) {
@@ -191,7 +229,13 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float pdf;
     int delta;
     float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
-    float3 wgt = rt_bsdf_sample(leaf.type, color, param, s.ns, wo, u1, u2, &wi, &pdf, &delta);
+    float3 wgt = (float3)(0.0f);
+    if (leaf.type == RT_BSDF_PRINCIPLED) {
+      delta = 0;
+      wgt = rt_principled_sample(pr, s.ns, wo, u1, u2, &wi, &pdf);
+    } else {
+      wgt = rt_bsdf_sample(leaf.type, color, param, s.ns, wo, u1, u2, &wi, &pdf, &delta);
+    }
     if (!rt_finite3(wgt)) {
       rt_poison(paths, pid, p, rng);
       return;

@@ -1,6 +1,6 @@
-/* rt_bsdf.h: the fixed BSDFs (diffuse, GGX glossy, mirror) in world space around the shading
- * normal n. eval returns f (without the cosine) and the solid-angle pdf of sampling wi;
- * sample returns wi and the weight f * cos / pdf. OpenCL C 1.2. */
+/* rt_bsdf.h: the fixed BSDFs (diffuse, GGX glossy, mirror, the Principled subset) in world
+ * space around the shading normal n. eval returns f (without the cosine) and the solid-angle
+ * pdf of sampling wi; sample returns wi and the weight f * cos / pdf. OpenCL C 1.2. */
 #ifndef RT_BSDF_H
 #define RT_BSDF_H
 
@@ -85,6 +85,89 @@ static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, flo
   }
   *pdf = 0.0f;
   return (float3)(0.0f);
+}
+
+/* The Principled subset (Blender's Principled BSDF without transmission, coat, sheen,
+ * subsurface, anisotropy; specular tint white). Two layers mixed by metallic m:
+ *   dielectric: a Lambertian base (baseColor) under a GGX specular layer of F0 = 0.08 *
+ *     specular (IOR level 0.5: IOR 1.5, F0 0.04), Schlick Fresnel; the base gets what the
+ *     specular layer does not reflect, approximated by 1 - F(cos wo);
+ *   metal: a GGX lobe with Schlick Fresnel of F0 = baseColor (F82 tint white = Schlick).
+ * Both specular lobes share one GGX distribution (alpha = roughness^2), so sampling picks the
+ * diffuse lobe or the GGX lobe by their estimated albedos at wo, and the pdf is the mixture's
+ * (one-sample MIS over the lobes). Single-scattering GGX: rough specular loses energy that
+ * Cycles' multiscatter GGX keeps (docs/runtime.md). */
+typedef struct RtPrincipled {
+  float3 base;
+  float roughness;
+  float metallic;
+  float f0; /* dielectric */
+} RtPrincipled;
+
+static inline float rt_schlick1(float f0, float cosD) {
+  float m = 1.0f - clamp(cosD, 0.0f, 1.0f);
+  float m5 = m * m * m * m * m;
+  return f0 + (1.0f - f0) * m5;
+}
+
+/* The probability of sampling the diffuse base at wo (the rest: the GGX lobe). */
+static inline float rt_principled_pdiffuse(RtPrincipled P, float cosO) {
+  float fo = rt_schlick1(P.f0, cosO);
+  float3 fm = rt_schlick(P.base, cosO);
+  float wd = (1.0f - P.metallic) * (1.0f - fo) * (P.base.x + P.base.y + P.base.z) / 3.0f;
+  float ws = (1.0f - P.metallic) * fo + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
+  return wd + ws > 0.0f ? wd / (wd + ws) : 0.5f;
+}
+
+static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, float3 wi,
+                                        float *pdf) {
+  float cosI = dot(wi, n), cosO = dot(wo, n);
+  *pdf = 0.0f;
+  if (cosI <= 0.0f || cosO <= 0.0f)
+    return (float3)(0.0f);
+  float pd = rt_principled_pdiffuse(P, cosO);
+  float dielectric = 1.0f - P.metallic;
+  float3 f = P.base * (dielectric * (1.0f - rt_schlick1(P.f0, cosO)) * RT_INV_PI);
+  float specPdf = 0.0f;
+  float a = rt_ggx_alpha(P.roughness);
+  float a2 = a * a;
+  float3 h = normalize(wi + wo);
+  float cosH = dot(h, n), cosD = dot(wi, h);
+  if (cosH > 0.0f && cosD > 0.0f) {
+    float d = rt_ggx_d(cosH, a2);
+    specPdf = d * cosH / (4.0f * cosD);
+    float dg = d * rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2) / (4.0f * cosI * cosO);
+    float3 fr = dielectric * rt_schlick1(P.f0, cosD) + P.metallic * rt_schlick(P.base, cosD);
+    f += fr * dg;
+  }
+  *pdf = pd * cosI * RT_INV_PI + (1.0f - pd) * specPdf;
+  return f;
+}
+
+static inline float3 rt_principled_sample(RtPrincipled P, float3 n, float3 wo, float u1,
+                                          float u2, float3 *wi, float *pdf) {
+  *pdf = 0.0f;
+  float cosO = dot(wo, n);
+  if (cosO <= 0.0f)
+    return (float3)(0.0f);
+  float pd = rt_principled_pdiffuse(P, cosO);
+  if (u1 < pd) {
+    u1 = u1 / pd;
+    *wi = rt_to_world(rt_sample_cosine(u1, u2), n);
+  } else {
+    u1 = (u1 - pd) / (1.0f - pd);
+    float a = rt_ggx_alpha(P.roughness);
+    float a2 = a * a;
+    float cos2 = (1.0f - u1) / (1.0f + u1 * (a2 - 1.0f));
+    float cosT = sqrt(fmax(cos2, 0.0f)), sinT = sqrt(fmax(0.0f, 1.0f - cos2));
+    float phi = 2.0f * RT_PI * u2;
+    float3 h = rt_to_world((float3)(sinT * cos(phi), sinT * sin(phi), cosT), n);
+    *wi = 2.0f * dot(wo, h) * h - wo;
+  }
+  float3 f = rt_principled_eval(P, n, wo, *wi, pdf);
+  if (*pdf <= 0.0f)
+    return (float3)(0.0f);
+  return f * (dot(*wi, n) / *pdf);
 }
 
 #endif

@@ -20,6 +20,19 @@
 #define RT_BSDF_MIRROR 2
 #define RT_BSDF_EMISSION 3
 #define RT_BSDF_BLEND 4
+#define RT_BSDF_PRINCIPLED 5
+
+/* RtBsdfNode inputs. Every type: 0 color (principled: baseColor; blend: mask), 1 roughness
+ * (emission: strength), 6 normal (output -1: the interpolated shading normal). Principled
+ * also: 2 metallic, 3 specular (IOR level), 4 emissionColor, 5 emissionStrength. */
+#define RT_IN_COLOR 0
+#define RT_IN_ROUGHNESS 1
+#define RT_IN_METALLIC 2
+#define RT_IN_SPECULAR 3
+#define RT_IN_EMISSION_COLOR 4
+#define RT_IN_EMISSION_STRENGTH 5
+#define RT_IN_NORMAL 6
+#define RT_BSDF_INPUTS 7
 
 /* Light types. */
 #define RT_LIGHT_TRIANGLE 0
@@ -87,14 +100,14 @@ typedef struct RtBsdfInput {
   int pad2;
 } RtBsdfInput;
 
-/* One node of a material's BSDF tree. in[0]: color (blend: mask); in[1]: roughness (glossy)
- * or strength (emission). Blend children are node indices a and b. */
+/* One node of a material's BSDF tree; in[] as RT_IN_* above. Blend children are node
+ * indices a and b. */
 typedef struct RtBsdfNode {
   int type;
   int a;
   int b;
   int pad;
-  RtBsdfInput in[2];
+  RtBsdfInput in[RT_BSDF_INPUTS];
 } RtBsdfNode;
 
 typedef struct RtMaterial {

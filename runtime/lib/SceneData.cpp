@@ -85,18 +85,30 @@ int flattenBsdf(const LayoutBsdf &B, const LayoutMaterial &M, std::vector<RtBsdf
   Nodes.push_back({});
   RtBsdfNode N{};
   N.a = N.b = -1;
+  for (RtBsdfInput &In : N.in)
+    In = makeInput(nullptr, M, 0.0f);
   if (B.Type == "diffuse" || B.Type == "glossy" || B.Type == "mirror" || B.Type == "emission") {
     N.type = B.Type == "diffuse"  ? RT_BSDF_DIFFUSE
              : B.Type == "glossy" ? RT_BSDF_GLOSSY
              : B.Type == "mirror" ? RT_BSDF_MIRROR
                                   : RT_BSDF_EMISSION;
-    N.in[0] = makeInput(B.input("color"), M, B.Type == "emission" ? 1.0f : 0.8f);
-    N.in[1] = makeInput(B.input(B.Type == "emission" ? "strength" : "roughness"), M,
-                        B.Type == "emission" ? 1.0f : 0.5f);
+    N.in[RT_IN_COLOR] = makeInput(B.input("color"), M, B.Type == "emission" ? 1.0f : 0.8f);
+    N.in[RT_IN_ROUGHNESS] = makeInput(B.input(B.Type == "emission" ? "strength" : "roughness"),
+                                      M, B.Type == "emission" ? 1.0f : 0.5f);
+    N.in[RT_IN_NORMAL] = makeInput(B.input("normal"), M, 0.0f);
+  } else if (B.Type == "principled") {
+    // Blender's Principled BSDF defaults for the inputs graph.json leaves out.
+    N.type = RT_BSDF_PRINCIPLED;
+    N.in[RT_IN_COLOR] = makeInput(B.input("baseColor"), M, 0.8f);
+    N.in[RT_IN_ROUGHNESS] = makeInput(B.input("roughness"), M, 0.5f);
+    N.in[RT_IN_METALLIC] = makeInput(B.input("metallic"), M, 0.0f);
+    N.in[RT_IN_SPECULAR] = makeInput(B.input("specular"), M, 0.5f);
+    N.in[RT_IN_EMISSION_COLOR] = makeInput(B.input("emissionColor"), M, 1.0f);
+    N.in[RT_IN_EMISSION_STRENGTH] = makeInput(B.input("emissionStrength"), M, 0.0f);
+    N.in[RT_IN_NORMAL] = makeInput(B.input("normal"), M, 0.0f);
   } else if (B.Type == "blend") {
     N.type = RT_BSDF_BLEND;
-    N.in[0] = makeInput(B.input("mask"), M, 0.5f);
-    N.in[1] = makeInput(nullptr, M, 0.0f);
+    N.in[RT_IN_COLOR] = makeInput(B.input("mask"), M, 0.5f);
     const LayoutBsdf *A = nullptr, *Bb = nullptr;
     for (auto &C : B.Children)
       (C.first == "a" ? A : Bb) = &C.second;
@@ -106,7 +118,7 @@ int flattenBsdf(const LayoutBsdf &B, const LayoutMaterial &M, std::vector<RtBsdf
     N.b = flattenBsdf(*Bb, M, Nodes);
   } else {
     throw Error("layout.json: material '" + M.Name + "': unknown BSDF type '" + B.Type +
-                "' (expected diffuse, glossy, mirror, emission or blend)");
+                "' (expected diffuse, glossy, mirror, emission, principled or blend)");
   }
   Nodes[Idx] = N;
   return Idx;
