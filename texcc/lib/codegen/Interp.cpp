@@ -107,27 +107,29 @@ static bool interpHoists(const FunctionSignature &Sig) {
 /// A float..float4 argument read the way a quickened opcode's pattern says (QuickenedOp::Sources):
 /// from the block at word At, from the slot in source word P, or the attribute; widened to
 /// float4 like texcc_arg's result.
-static std::string quickArgument(const std::string &Source, size_t P, const std::string &At,
+static std::string quickArgument(const ArgumentSource &Source, size_t P, const std::string &At,
                                  BaseType B) {
-  if (Source == "const")
-    return widenToFloat4(B, fakeStackRead(B, At), Target::OpenCL);
-  const bool Broadcast = Source.size() > 2 && Source.compare(Source.size() - 2, 2, ".x") == 0;
   std::string V;
-  if (Source.rfind("slot", 0) == 0) {
+  switch (Source.K) {
+  case ArgumentSource::Kind::Constant:
+  case ArgumentSource::Kind::IntValue: // never for a float parameter (argumentSource)
+    return widenToFloat4(B, fakeStackRead(B, At), Target::OpenCL);
+  case ArgumentSource::Kind::Slot:
     V = "TEXCC_SLOT(fakeStack[rec + " + std::to_string(P) + "u] & 0xFFFFu)";
-  } else {
-    const std::string Name = Source.substr(5, Source.size() - 5 - (Broadcast ? 2 : 0));
-    V = "texcc_interp_attr(hits + gid, " + std::to_string(attributeId(Name)) + "u)";
+    break;
+  case ArgumentSource::Kind::Attribute:
+    V = "texcc_interp_attr(hits + gid, " + std::to_string(Source.AttrId) + "u)";
+    break;
   }
-  return Broadcast ? "(" + V + ").xxxx" : V;
+  return Source.Broadcast ? "(" + V + ").xxxx" : V;
 }
 
 /// "name: source, ..." of a quickened pattern, for the case's comment.
 static std::string patternComment(const FunctionSignature &Sig,
-                                  const std::vector<std::string> &Sources) {
+                                  const std::vector<ArgumentSource> &Sources) {
   std::string S;
   for (size_t P = 0; P < Sources.size(); ++P)
-    S += (P ? ", " : "") + Sig.Params.at(P).Name + ": " + Sources[P];
+    S += (P ? ", " : "") + Sig.Params.at(P).Name + ": " + spellSource(Sources[P]);
   return S;
 }
 
@@ -137,7 +139,7 @@ static std::string patternComment(const FunctionSignature &Sig,
 /// only dead nodes name has no node to take them from): the graph library's, never recomputed
 /// here.
 static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
-                              const std::vector<std::string> *Sources = nullptr) {
+                              const std::vector<ArgumentSource> *Sources = nullptr) {
   uint32_t BlockSize = 0;
   const std::vector<uint32_t> Offsets = parameterOffsets(Sig, BlockSize);
   const uint32_t SourceWords = sourceWordsBytes(Sig.Params.size()) / 4;
@@ -153,8 +155,8 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
       S += "(__global const " + spelling(T.Base) +
            " *)((__global const uchar *)fakeStack + fakeStack[" + At + "]), fakeStack[" + At +
            " + 1u]"; // the length: the hidden parameter of the bounds checks
-    else if (Sources && Sources->at(P).rfind("int:", 0) == 0)
-      S += "(" + Sources->at(P).substr(4) + ")"; // the value the pattern names
+    else if (Sources && Sources->at(P).K == ArgumentSource::Kind::IntValue)
+      S += "(" + std::to_string(Sources->at(P).Value) + ")"; // the value the pattern names
     else if (T.Base == BaseType::Int || T.Base == BaseType::Sampler)
       S += "as_int(fakeStack[" + At + "])";
     else if (Sources)

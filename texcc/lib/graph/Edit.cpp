@@ -132,7 +132,7 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
       encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, CN.RecordOffset), Old);
       for (uint32_t Copy : CN.RecordCopies)
         encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
-      if (!CG.Quickened.empty() && argumentSource(Old).rfind("int:", 0) == 0) {
+      if (!CG.Quickened.empty() && argumentSource(Old).K == ArgumentSource::Kind::IntValue) {
         // An int value is part of a quickened pattern: the instruction now runs the entry of
         // the kernel's table (pinned by init) for its new value, or its plain case (a new
         // opcode word).

@@ -159,8 +159,12 @@ std::string layoutJson(const CompiledGraph &CG) {
   }
   J["functions"] = Functions;
   OJson Quick = OJson::array();
-  for (const QuickenedOp &Q : CG.Quickened)
-    Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Q.Sources}});
+  for (const QuickenedOp &Q : CG.Quickened) {
+    std::vector<std::string> Sources;
+    for (const ArgumentSource &S : Q.Sources)
+      Sources.push_back(spellSource(S));
+    Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Fn}, {"sources", Sources}});
+  }
   J["quickened"] = Quick;
   OJson Nodes = OJson::array();
   for (size_t I = 0; I < CG.Nodes.size(); ++I) {
@@ -222,8 +226,9 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
         Taken.insert(S.at("opcode").get<unsigned>());
     // One function's sources: one per parameter, each a kind the kernel has a case for; "int:N"
     // only for an int parameter.
-    auto CheckSources = [&](const std::string &Where, const std::string &Fn,
-                            const std::vector<std::string> &Sources) {
+    auto ReadSources = [&](const std::string &Where, const std::string &Fn,
+                           const std::vector<std::string> &Sources,
+                           std::vector<ArgumentSource> &Typed) {
       auto It = ParamTypes.find(Fn);
       if (It == ParamTypes.end()) {
         Error = Where + "function '" + Fn + "' is not in /functions";
@@ -236,25 +241,15 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
       }
       for (size_t P = 0; P < Sources.size(); ++P) {
         const std::string &S = Sources[P];
-        std::string Base = S.size() > 2 && S.compare(S.size() - 2, 2, ".x") == 0
-                               ? S.substr(0, S.size() - 2) : S;
-        bool Known = S == "const" || Base == "slot" ||
-                     (Base.rfind("attr:", 0) == 0 && attributeId(Base.substr(5)) >= 0);
-        if (S.rfind("int:", 0) == 0 && It->second[P] == "int") {
-          size_t End = 0;
-          try {
-            const long long V = std::stoll(S.substr(4), &End);
-            Known = End == S.size() - 4 && V >= std::numeric_limits<int32_t>::min() &&
-                    V <= std::numeric_limits<int32_t>::max();
-          } catch (const std::exception &) {
-          }
-        }
-        if (!Known) {
+        ArgumentSource T;
+        if (!parseSource(S, T) ||
+            (T.K == ArgumentSource::Kind::IntValue && It->second[P] != "int")) {
           Error = Where + "source '" + S + "' of parameter " + std::to_string(P) + " of '" + Fn +
                   "' (expected const, slot, slot.x, attr:Name, attr:Name.x" +
                   (It->second[P] == "int" ? " or int:N" : "") + ")";
           return false;
         }
+        Typed.push_back(T);
       }
       return true;
     };
@@ -268,8 +263,7 @@ bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<Quickene
         Taken.insert(Q.Opcode);
         continue;
       }
-      Q.Sources = E.at("sources").get<std::vector<std::string>>();
-      if (!CheckSources(Where, Q.Fn, Q.Sources))
+      if (!ReadSources(Where, Q.Fn, E.at("sources").get<std::vector<std::string>>(), Q.Sources))
         return false;
       if (!Taken.insert(Q.Opcode).second) {
         Error = Where + "opcode " + std::to_string(Q.Opcode) +

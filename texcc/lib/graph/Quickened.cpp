@@ -8,29 +8,86 @@
 #include "texcc/Graph/Passes.h"
 
 #include <algorithm>
+#include <limits>
+#include <stdexcept>
 #include <map>
 #include <utility>
 
 namespace texcc::graph {
 
-std::string argumentSource(const CompiledArg &A) {
+ArgumentSource argumentSource(const CompiledArg &A) {
+  ArgumentSource S;
   if (A.Type.Base == BaseType::Int && !A.Type.IsGlobalArray &&
-      A.Src == CompiledArg::Source::Constant && A.Values.size() == 1)
-    return "int:" + std::to_string(static_cast<long long>(A.Values[0]));
+      A.Src == CompiledArg::Source::Constant && A.Values.size() == 1) {
+    S.K = ArgumentSource::Kind::IntValue;
+    S.Value = static_cast<int32_t>(A.Values[0]);
+    return S;
+  }
   const bool Decoded = !A.Type.IsGlobalArray && A.Type.Base != BaseType::Int &&
                        A.Type.Base != BaseType::Sampler;
   if (!Decoded || A.Src == CompiledArg::Source::Constant)
+    return S;
+  S.Broadcast = A.Broadcast;
+  if (A.Src == CompiledArg::Source::Node) {
+    S.K = ArgumentSource::Kind::Slot;
+    return S;
+  }
+  S.K = ArgumentSource::Kind::Attribute;
+  S.AttrId = A.AttrId;
+  return S;
+}
+
+std::string spellSource(const ArgumentSource &S) {
+  const std::string Broadcast = S.Broadcast ? ".x" : "";
+  switch (S.K) {
+  case ArgumentSource::Kind::Constant:
     return "const";
-  const std::string Broadcast = A.Broadcast ? ".x" : "";
-  if (A.Src == CompiledArg::Source::Node)
+  case ArgumentSource::Kind::IntValue:
+    return "int:" + std::to_string(S.Value);
+  case ArgumentSource::Kind::Slot:
     return "slot" + Broadcast;
-  return "attr:" + attributeTable().at(A.AttrId).first + Broadcast;
+  case ArgumentSource::Kind::Attribute:
+    return "attr:" + attributeTable().at(S.AttrId).first + Broadcast;
+  }
+  return "const";
+}
+
+bool parseSource(const std::string &Text, ArgumentSource &S) {
+  S = ArgumentSource();
+  if (Text == "const")
+    return true;
+  if (Text.rfind("int:", 0) == 0) {
+    size_t End = 0;
+    try {
+      const long long V = std::stoll(Text.substr(4), &End);
+      if (End != Text.size() - 4 || V < std::numeric_limits<int32_t>::min() ||
+          V > std::numeric_limits<int32_t>::max())
+        return false;
+      S.K = ArgumentSource::Kind::IntValue;
+      S.Value = static_cast<int32_t>(V);
+      return true;
+    } catch (const std::exception &) {
+      return false;
+    }
+  }
+  S.Broadcast = Text.size() > 2 && Text.compare(Text.size() - 2, 2, ".x") == 0;
+  const std::string Base = S.Broadcast ? Text.substr(0, Text.size() - 2) : Text;
+  if (Base == "slot") {
+    S.K = ArgumentSource::Kind::Slot;
+    return true;
+  }
+  if (Base.rfind("attr:", 0) == 0 && attributeId(Base.substr(5)) >= 0) {
+    S.K = ArgumentSource::Kind::Attribute;
+    S.AttrId = attributeId(Base.substr(5));
+    return true;
+  }
+  return false;
 }
 
 namespace {
 
-std::vector<std::string> sourcesOf(const CompiledNode &N) {
-  std::vector<std::string> S;
+std::vector<ArgumentSource> sourcesOf(const CompiledNode &N) {
+  std::vector<ArgumentSource> S;
   for (const CompiledArg &A : N.Args)
     S.push_back(argumentSource(A));
   return S;
@@ -47,13 +104,13 @@ QuickenedOp patternAt(const CompiledGraph &CG, const CompiledMaterial &M, size_t
 
 /// A pattern without its opcode, as a map key: patterns are looked up once per instruction (a
 /// scan of the patterns seen so far was quadratic in the number of distinct functions).
-using PatternKey = std::pair<std::string, std::vector<std::string>>;
+using PatternKey = std::pair<std::string, std::vector<ArgumentSource>>;
 PatternKey keyOf(const QuickenedOp &Q) { return {Q.Fn, Q.Sources}; }
 
 std::string describe(const QuickenedOp &Q) {
   std::string S = "'" + Q.Fn + "' (";
   for (size_t P = 0; P < Q.Sources.size(); ++P)
-    S += (P ? ", " : "") + Q.Sources[P];
+    S += (P ? ", " : "") + spellSource(Q.Sources[P]);
   return S + ")";
 }
 

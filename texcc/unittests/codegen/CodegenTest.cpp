@@ -205,10 +205,10 @@ TEST(CodegenLayout, AddsModeTargetGraphAndKernelFirst) {
   nlohmann::ordered_json L =
       nlohmann::ordered_json::parse(generateLayout(twoNodeGraph(), options(Mode::Inline)));
   std::vector<std::string> Keys;
-  for (auto It = L.begin(); It != L.end() && Keys.size() < 6; ++It)
+  for (auto It = L.begin(); It != L.end() && Keys.size() < 7; ++It)
     Keys.push_back(It.key());
-  EXPECT_EQ(Keys, (std::vector<std::string>{"texcc", "mode", "target", "graph", "kernel",
-                                            "scratchFloat4PerHit"}));
+  EXPECT_EQ(Keys, (std::vector<std::string>{"texcc", "mode", "target", "graph", "compileOptions",
+                                            "kernel", "scratchFloat4PerHit"}));
   EXPECT_EQ(L["mode"], "inline");
   EXPECT_EQ(L["kernel"]["entry"], "texcc_proctex");
   EXPECT_EQ(L["graph"], "/abs/g.json");

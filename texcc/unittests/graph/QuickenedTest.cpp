@@ -44,6 +44,14 @@ std::string strengthOf(const std::string &Node) {
   return R"({"m": {"bsdf": "emission", "color": 1, "strength": {"node": ")" + Node + "\"}}}";
 }
 
+/// A pattern's sources as layout.json spells them.
+std::vector<std::string> spelled(const std::vector<ArgumentSource> &Sources) {
+  std::vector<std::string> S;
+  for (const ArgumentSource &A : Sources)
+    S.push_back(spellSource(A));
+  return S;
+}
+
 /// The fnId words of material M's program in args.bin.
 std::vector<uint32_t> opcodes(const CompiledGraph &CG, size_t M = 0) {
   std::vector<uint32_t> W;
@@ -71,15 +79,15 @@ TEST(Quickened, MostFrequentPatternsFirstCapped) {
   const unsigned First = static_cast<unsigned>(CG.FunctionsById.size());
   EXPECT_EQ(CG.Quickened[0].Opcode, First);
   EXPECT_EQ(CG.Quickened[0].Fn, "lite");
-  EXPECT_EQ(CG.Quickened[0].Sources, (std::vector<std::string>{"attr:AO", "const"}));
+  EXPECT_EQ(spelled(CG.Quickened[0].Sources), (std::vector<std::string>{"attr:AO", "const"}));
   EXPECT_EQ(CG.Quickened[1].Fn, "pair");
-  EXPECT_EQ(CG.Quickened[1].Sources, (std::vector<std::string>{"slot", "slot"}));
+  EXPECT_EQ(spelled(CG.Quickened[1].Sources), (std::vector<std::string>{"slot", "slot"}));
   EXPECT_EQ(CG.Quickened[2].Fn, "lite");
-  EXPECT_EQ(CG.Quickened[2].Sources, (std::vector<std::string>{"slot", "const"}));
+  EXPECT_EQ(spelled(CG.Quickened[2].Sources), (std::vector<std::string>{"slot", "const"}));
   EXPECT_EQ(opcodes(CG), (std::vector<uint32_t>{First, First, First + 1, First + 2}));
   CompiledGraph One = compiled(Json, quickening(1), costSigs());
   ASSERT_EQ(One.Quickened.size(), 1u);
-  EXPECT_EQ(One.Quickened[0].Sources, (std::vector<std::string>{"attr:AO", "const"}));
+  EXPECT_EQ(spelled(One.Quickened[0].Sources), (std::vector<std::string>{"attr:AO", "const"}));
   EXPECT_EQ(opcodes(One), (std::vector<uint32_t>{First, First, 1, 0}));
 }
 
@@ -95,7 +103,7 @@ TEST(Quickened, IntConstantsArePartOfThePattern) {
   std::vector<std::vector<std::string>> Octv;
   for (const QuickenedOp &Q : CG.Quickened)
     if (Q.Fn == "octv")
-      Octv.push_back(Q.Sources);
+      Octv.push_back(spelled(Q.Sources));
   EXPECT_EQ(Octv, (std::vector<std::vector<std::string>>{{"attr:AO", "int:3"},
                                                           {"slot", "int:5"},
                                                           {"slot", "int:3"}}));
@@ -112,7 +120,7 @@ TEST(Quickened, IntConstantsArePartOfThePattern) {
     const CompiledGraph &C = E.compiled();
     for (const Instruction &In : C.Materials[0].Program)
       if (C.Nodes[In.Node].Id == Id)
-        return In.Quick >= 0 ? C.Quickened[In.Quick].Sources.back() : std::string("plain");
+        return In.Quick >= 0 ? spellSource(C.Quickened[In.Quick].Sources.back()) : std::string("plain");
     return std::string("absent");
   };
   EXPECT_EQ(QuickOf("q"), "int:5");
@@ -136,7 +144,7 @@ TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
   CompiledGraph CG = compiled(Json, quickening(), costSigs());
   bool SawBroadcast = false;
   for (const QuickenedOp &Q : CG.Quickened)
-    SawBroadcast |= Q.Fn == "wide" && Q.Sources == std::vector<std::string>{"slot.x"};
+    SawBroadcast |= Q.Fn == "wide" && spelled(Q.Sources) == std::vector<std::string>{"slot.x"};
   EXPECT_TRUE(SawBroadcast);
   // A live edit compiles with the kernel's table: an instruction whose pattern changed (p.b
   // rewired from b to a constant) runs its function's plain opcode; the others keep theirs.
@@ -242,12 +250,33 @@ TEST(Quickened, LayoutRoundTrip) {
       Good, Error))
       << Error;
   ASSERT_EQ(Good.size(), 1u);
-  EXPECT_EQ(Good[0].Sources.back(), "int:-2");
+  EXPECT_EQ(spellSource(Good[0].Sources.back()), "int:-2");
   EXPECT_EQ(Bad(R"({"opcode": 2, "function": "lite", "sources": ["const", "const"],
                     "second": {"function": "lite", "paramIndex": 0, "sources": ["fed", "const"]}},
                    {"opcode": 2, "function": "lite", "sources": ["const", "slot"]})"),
             "/quickened/1: opcode 2 is already a function id, a superinstruction's or another "
             "entry's");
+}
+
+TEST(Quickened, SourcesSpellAndParseBack) {
+  // The one place the layout.json text is read and written: every kind round-trips, typed.
+  for (const char *Text : {"const", "int:0", "int:-2147483648", "int:2147483647", "slot", "slot.x",
+                           "attr:AO", "attr:Normal.x", "attr:TexCoord0"}) {
+    ArgumentSource S;
+    ASSERT_TRUE(parseSource(Text, S)) << Text;
+    EXPECT_EQ(spellSource(S), Text);
+  }
+  ArgumentSource S;
+  ASSERT_TRUE(parseSource("attr:Normal.x", S));
+  EXPECT_EQ(S.K, ArgumentSource::Kind::Attribute);
+  EXPECT_EQ(S.AttrId, attributeId("Normal"));
+  EXPECT_TRUE(S.Broadcast);
+  ASSERT_TRUE(parseSource("int:-7", S));
+  EXPECT_EQ(S.K, ArgumentSource::Kind::IntValue);
+  EXPECT_EQ(S.Value, -7);
+  for (const char *Bad : {"", "int:", "int:3x", "int:2147483648", "attr:Nope", "slot.y", "fed",
+                          "const.x", "Slot"})
+    EXPECT_FALSE(parseSource(Bad, S)) << Bad;
 }
 
 } // namespace

@@ -19,16 +19,38 @@
 
 namespace texcc::graph {
 
+/// Where one argument of a quickened pattern comes from (argumentSource()). layout.json spells
+/// it "const", "int:N", "slot", "slot.x", "attr:Name" or "attr:Name.x" (spellSource(),
+/// parseSource(): the only code that reads or writes that text).
+struct ArgumentSource {
+  enum class Kind { Constant, IntValue, Slot, Attribute };
+  Kind K = Kind::Constant;
+  int32_t Value = 0;      // IntValue: the int constant
+  int AttrId = -1;        // Attribute: attributeTable() index
+  bool Broadcast = false; // Slot, Attribute: a float replicated to a float2..4 parameter
+  bool operator==(const ArgumentSource &O) const {
+    return K == O.K && Value == O.Value && AttrId == O.AttrId && Broadcast == O.Broadcast;
+  }
+  bool operator<(const ArgumentSource &O) const {
+    if (K != O.K)
+      return K < O.K;
+    if (Value != O.Value)
+      return Value < O.Value;
+    if (AttrId != O.AttrId)
+      return AttrId < O.AttrId;
+    return Broadcast < O.Broadcast;
+  }
+};
+
 /// A quickened opcode of the interp kernel (docs/modes.md): function Fn with every argument's
-/// source fixed (Sources[p], argumentSource()): its case reads each argument straight from where
-/// the pattern says (the record's parameter block, the value-stack slot in the source word, an
-/// attribute, or, for an int constant, the literal the pattern names: "int:6" makes the case
-/// code for that value, which the compiler folds), with no decoding of the source word's kind.
+/// source fixed (Sources[p]): its case reads each argument straight from where the pattern says
+/// (the record's parameter block, the value-stack slot in the source word, an attribute, or,
+/// for an int constant, the literal the pattern names, which the compiler folds), with no
+/// decoding of the source word's kind.
 struct QuickenedOp {
   unsigned Opcode = 0;               // kernel case, after the function ids
   std::string Fn;
-  /// Per parameter: "const", "int:N", "slot", "slot.x", "attr:Name", "attr:Name.x".
-  std::vector<std::string> Sources;
+  std::vector<ArgumentSource> Sources;  // per parameter
   bool operator==(const QuickenedOp &O) const {
     return Opcode == O.Opcode && Fn == O.Fn && Sources == O.Sources;
   }

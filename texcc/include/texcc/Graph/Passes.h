@@ -49,10 +49,15 @@ void layoutArguments(CompiledGraph &CG, std::ostream *Log);
 /// (Instruction::Quick). Sets
 /// CG.Quickened.
 void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
-/// Where argument A of a node comes from, as QuickenedOp::Sources spells it: "int:N" for an
-/// int constant, "const" for other constants and for every sampler or array parameter (always
-/// read from the block), "slot", "slot.x", "attr:Name" or "attr:Name.x" otherwise.
-std::string argumentSource(const CompiledArg &A);
+/// Where argument A of a node comes from, for a quickened pattern: IntValue for an int
+/// constant, Constant for other constants and for every sampler or array parameter (always read
+/// from the block), else Slot or Attribute (with its broadcast).
+ArgumentSource argumentSource(const CompiledArg &A);
+/// layout.json's spelling of a source: "const", "int:N", "slot", "slot.x", "attr:Name",
+/// "attr:Name.x".
+std::string spellSource(const ArgumentSource &S);
+/// The reverse; false for any other text (an unknown attribute, an int outside int32).
+bool parseSource(const std::string &Text, ArgumentSource &S);
 /// Writes ArgsBin from the layout (docs/abi.md).
 void encodeArgsBin(CompiledGraph &CG);
 
