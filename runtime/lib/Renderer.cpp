@@ -338,6 +338,16 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
   return Bounces;
 }
 
+std::vector<float> Renderer::averageSums(size_t NumPixels, int Done) {
+  std::vector<cl_float4> Sums(NumPixels);
+  Cl->read(B["sums"], Sums.data(), bytes(Sums));
+  std::vector<float> RGB(NumPixels * 3);
+  for (size_t P = 0; P < NumPixels; ++P)
+    for (int C = 0; C < 3; ++C)
+      RGB[3 * P + C] = Sums[P].s[C] / float(Done);
+  return RGB;
+}
+
 std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Variance) {
   double T0 = now();
   Stats = FrameStats();
@@ -380,7 +390,6 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     std::vector<cl_float4> Zeros(NumPixels, cl_float4{{0, 0, 0, 0}});
     Cl->write(B["sums"], Zeros.data(), bytes(Zeros));
     Cl->write(B["sumsSquared"], Zeros.data(), bytes(Zeros));
-    bool Drew = false;
     int Done = 0;
     while (Done < Spp) {
       if (Opts.OnPass)
@@ -400,13 +409,13 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       Cl->launch(AC, NumPixels, "accumulate");
       Done += Now;
       ++Stats.Passes;
-      if (Opts.Progress && now() - T0 > 1.0) {
+      if (Opts.AfterPass && Done < Spp) {
         Cl->finish();
-        int Width = 40, Fill = int(Width * double(Done) / Spp);
-        std::fprintf(stderr, "\rtexrender: [%s%s] %3d%% (%d/%d spp)", std::string(Fill, '#').c_str(),
-                     std::string(Width - Fill, ' ').c_str(), int(100.0 * Done / Spp), Done, Spp);
-        std::fflush(stderr);
-        Drew = true;
+        PassProgress P{Done, Spp, now() - T0, [&, Done] { return averageSums(NumPixels, Done); }};
+        if (!Opts.AfterPass(P)) {
+          Stats.Interrupted = true;
+          break;
+        }
       }
       // --time-limit: stop at a pass boundary, with every pass done complete.
       if (Opts.Deadline > 0) {
@@ -423,20 +432,13 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       Opts.OnPass(false);
     Stats.SamplesDone = Done;
     Cl->finish();
-    if (Drew)
-      std::fprintf(stderr, "\n");
-    std::vector<cl_float4> Sums(NumPixels);
-    Cl->read(B["sums"], Sums.data(), bytes(Sums));
+    std::vector<float> RGB = averageSums(NumPixels, Done);
     Cl->read(B["counters"], Counters, sizeof Counters);
     Stats.ShadowRays = Counters[RT_COUNT_SHADOW_RAYS];
     Stats.AoRays = Counters[RT_COUNT_AO_RAYS];
     Stats.NonFiniteSamples = Counters[RT_COUNT_NONFINITE];
     Stats.SaturatedSamples = Counters[RT_COUNT_SATURATED];
     Stats.Kernels = Cl->timings();
-    std::vector<float> RGB(NumPixels * 3);
-    for (size_t P = 0; P < NumPixels; ++P)
-      for (int C = 0; C < 3; ++C)
-        RGB[3 * P + C] = Sums[P].s[C] / float(Done);
     if (Variance) {
       // The variance of each pixel's mean: the sample variance over its samples / spp.
       std::vector<cl_float4> Sq(NumPixels);

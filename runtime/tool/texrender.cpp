@@ -24,6 +24,7 @@
 #include <iostream>
 #include <mutex>
 #include <optional>
+#include <signal.h>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -73,7 +74,12 @@ const char *Usage =
     "  --time-limit S       stop rendering after S seconds (from the start) and write the\n"
     "                       image of the passes done; a kernel build or a single device pass\n"
     "                       that runs past it is an error (exit 1, no output written)\n"
-    "  --quiet              no progress bar\n";
+    "  --quiet              no progress bar\n"
+    "  --progress           the progress bar (elapsed time, ETA) and the end's summary line\n"
+    "                       even when stderr is not a terminal (then one line per update)\n"
+    "SIGINT (Ctrl-C) or SIGTERM stops rendering at the next pass boundary: the image (and\n"
+    "--stats) of the samples done is written whole, then exit 128 + the signal (130, 143);\n"
+    "a second signal ends texrender at once.\n";
 
 struct Options {
   std::string Scene, Textures, Output, Stats, Variance, EditScript, KernelDir, CacheDir = defaultCacheDir();
@@ -87,7 +93,7 @@ struct Options {
   int Device = 0;
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
-  bool Quiet = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
+  bool Quiet = false, ForceProgress = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
 
 int toInt(const std::string &Opt, const std::string &V) {
@@ -241,6 +247,8 @@ Options parseArgs(int Argc, char **Argv) {
       O.TimeLimit = toFloat(A, S);
       if (!(O.TimeLimit > 0) || !std::isfinite(O.TimeLimit))
         throw Error("--time-limit: expected a positive number of seconds, got '" + S + "'");
+    } else if (A == "--progress") {
+      O.ForceProgress = true;
     } else if (A == "--quiet" || A == "-q") {
       O.Quiet = true;
     } else if (A.size() > 1 && A[0] == '-') {
@@ -377,6 +385,79 @@ void phase(Watchdog *W, const char *What) {
     W->phase(What);
 }
 
+/// The signal (SIGINT, SIGTERM) that asked the run to stop; 0: none. The handler only stores
+/// it: rendering stops at the next pass boundary (RendererOptions::AfterPass) and the outputs
+/// are written by the main thread as usual.
+std::atomic<int> StopSignal{0};
+
+extern "C" void onStopSignal(int Sig) { StopSignal.store(Sig); }
+
+/// SA_RESETHAND: a second Ctrl-C ends the process at once (a kernel build or a device pass
+/// cannot be interrupted). No SA_RESTART, so that --interactive's read of stdin returns.
+void installStopHandlers() {
+  struct sigaction Act {};
+  Act.sa_handler = onStopSignal;
+  sigemptyset(&Act.sa_mask);
+  Act.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &Act, nullptr);
+  sigaction(SIGTERM, &Act, nullptr);
+}
+
+const char *signalName(int Sig) { return Sig == SIGINT ? "SIGINT" : Sig == SIGTERM ? "SIGTERM" : "a signal"; }
+
+/// "1m05s", "3.2 s": the progress bar's times.
+std::string shortDuration(double S) {
+  char Buf[32];
+  if (S < 60)
+    std::snprintf(Buf, sizeof Buf, "%.1fs", S);
+  else if (S < 3600)
+    std::snprintf(Buf, sizeof Buf, "%dm%02ds", int(S) / 60, int(S) % 60);
+  else
+    std::snprintf(Buf, sizeof Buf, "%dh%02dm", int(S) / 3600, int(S) / 60 % 60);
+  return Buf;
+}
+
+/// The progress bar of a render (after its first second): samples done, elapsed time and the
+/// ETA from the rate so far. On a terminal it redraws one line (at most 10 times a second);
+/// elsewhere (--progress) it prints one line per update, at most once a second.
+class ProgressBar {
+public:
+  explicit ProgressBar(bool Tty) : Tty(Tty) {}
+  void update(const PassProgress &P) {
+    if (P.Seconds < 1.0 || P.Seconds - Last < (Tty ? 0.1 : 1.0))
+      return;
+    Last = P.Seconds;
+    const int Width = 30, Fill = int(Width * double(P.SamplesDone) / P.Spp);
+    double Eta = P.Seconds / P.SamplesDone * (P.Spp - P.SamplesDone);
+    std::fprintf(stderr, "%stexrender: [%s%s] %3d%% %d/%d spp, %s elapsed, ETA %s%s", Tty ? "\r" : "",
+                 std::string(Fill, '#').c_str(), std::string(Width - Fill, ' ').c_str(),
+                 int(100.0 * P.SamplesDone / P.Spp), P.SamplesDone, P.Spp,
+                 shortDuration(P.Seconds).c_str(), shortDuration(Eta).c_str(), Tty ? "  " : "\n");
+    std::fflush(stderr);
+    Drew = Tty;
+  }
+  /// Ends the redrawn line, if any (before anything else is printed).
+  void finish() {
+    if (Drew)
+      std::fprintf(stderr, "\n");
+    Drew = false;
+    Last = 0;
+  }
+
+private:
+  bool Tty, Drew = false;
+  double Last = 0;
+};
+
+/// The line after a render with a progress bar: "texrender: 64 spp at 512x512 in 3.21 s,
+/// 1.24 M rays/s (primary, bounce, shadow and AO rays)".
+void printSummary(const FrameStats &F, int W, int H) {
+  double Rays = double(F.PrimaryRays + F.BounceRays + F.ShadowRays + F.AoRays);
+  std::fprintf(stderr, "texrender: %d spp at %dx%d in %.2f s, %.2f M rays/s (primary, bounce, "
+                       "shadow and AO rays)\n",
+               F.SamplesDone, W, H, F.Seconds, F.Seconds > 0 ? Rays / F.Seconds / 1e6 : 0.0);
+}
+
 std::string frameName(const std::string &Out, size_t K) {
   fs::path P(Out);
   return (P.parent_path() / (P.stem().string() + ".frame" + std::to_string(K) + P.extension().string()))
@@ -465,7 +546,7 @@ bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
     if (Tty)
       std::fprintf(stderr, "edit> ");
     LineRead Got = readBoundedLine(std::cin, Line, MaxInteractiveLine);
-    if (Got == LineRead::End)
+    if (Got == LineRead::End || StopSignal.load())
       break;
     if (Got == LineRead::TooLong) {
       std::fprintf(stderr, "texrender: error: standard input:%u: line longer than %zu bytes; the "
@@ -502,6 +583,7 @@ int run(int Argc, char **Argv) try {
       std::cout << D << "\n";
     return 0;
   }
+  installStopHandlers();
   std::unique_ptr<Watchdog> Dog;
   if (O.TimeLimit > 0)
     Dog = std::make_unique<Watchdog>(O.TimeLimit, T0 + O.TimeLimit);
@@ -540,7 +622,13 @@ int run(int Argc, char **Argv) try {
   RO.Device = O.Device;
   RO.CacheDir = O.CacheDir;
   RO.KernelDir = O.KernelDir;
-  RO.Progress = !O.Quiet && isatty(2);
+  const bool ShowProgress = !O.Quiet && (O.ForceProgress || isatty(2));
+  ProgressBar Bar(isatty(2));
+  RO.AfterPass = [&](const PassProgress &P) {
+    if (ShowProgress)
+      Bar.update(P);
+    return StopSignal.load() == 0;
+  };
   RO.CheckNan = O.CheckNan;
   RO.AoPerHitLoop = O.AoLoop;
   RO.Trace = O.Trace;
@@ -562,6 +650,10 @@ int run(int Argc, char **Argv) try {
   }
   phase(Dog.get(), "building the kernels");
   Renderer R(S, L, RO);
+  if (int Sig = StopSignal.load()) {
+    std::fprintf(stderr, "texrender: %s before the first pass: nothing written\n", signalName(Sig));
+    return 128 + Sig;
+  }
   phase(Dog.get(), "applying the --set edits");
 
   std::vector<FrameRecord> Frames;
@@ -576,6 +668,15 @@ int run(int Argc, char **Argv) try {
   // Between passes the render stops by itself at the deadline; only a pass is timed.
   phase(Dog.get(), "");
   std::vector<float> Image = R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance);
+  if (ShowProgress) {
+    Bar.finish();
+    printSummary(First.Frame, OutW, OutH);
+  }
+  if (First.Frame.Interrupted)
+    std::fprintf(stderr, "texrender: note: %s: stopped after %d of %d samples per pixel (%u "
+                         "passes); the image averages those\n",
+                 signalName(StopSignal.load()), First.Frame.SamplesDone, S.Render.Spp,
+                 First.Frame.Passes);
   if (First.Frame.TimeLimited)
     std::fprintf(stderr, "texrender: note: --time-limit %g s: stopped after %d of %d samples per "
                          "pixel (%u passes); the image averages those\n",
@@ -586,14 +687,17 @@ int run(int Argc, char **Argv) try {
   Frames.push_back(First);
   if (!Script.empty())
     writeImage(frameName(O.Output, 0), OutW, OutH, Image);
-  for (size_t K = 0; K < Script.size(); ++K) {
+  for (size_t K = 0; K < Script.size() && !StopSignal.load(); ++K) {
     Frames.push_back(renderAfterEdit(Script[K], *Editor, R, Builds, Image));
     writeImage(frameName(O.Output, K + 1), OutW, OutH, Image);
   }
   writeImage(O.Output, OutW, OutH, Image);
-  bool SessionOk = !O.Interactive || interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
+  bool SessionOk = !O.Interactive || StopSignal.load() ||
+                   interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty())
     writeTextFile(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
+  if (int Sig = StopSignal.load())
+    return 128 + Sig;
   return SessionOk ? 0 : 1;
 } catch (const ScriptError &E) {
   std::fprintf(stderr, "%s\n", E.Text.c_str());

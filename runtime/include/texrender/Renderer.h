@@ -24,11 +24,18 @@
 
 namespace texrender {
 
+/// What render() has done so far, told to RendererOptions::AfterPass.
+struct PassProgress {
+  int SamplesDone = 0, Spp = 0;
+  double Seconds = 0; // since render() began
+  /// The image of the samples done (linear RGB, as render() returns): a read of the device.
+  std::function<std::vector<float>()> Image;
+};
+
 struct RendererOptions {
   int Device = 0;
   std::string CacheDir = defaultCacheDir();
   std::string KernelDir;        // "" = kernelDirectory()
-  bool Progress = false;        // a progress bar on stderr (after one second)
   bool CheckNan = false;        // --check-nan: stop at the first non-finite texture output
   size_t MaxPathsPerPass = 1u << 18;
   TierPolicy Tier = TierPolicy::Shape; // shape-mode layouts only (TextureTiers.h); texrender
@@ -49,7 +56,12 @@ struct RendererOptions {
   /// Called with true before each pass of render() and with false once it is done (texrender's
   /// watchdog times single passes).
   std::function<void(bool InPass)> OnPass;
+  /// Called after every pass of render() but the last (the device finished; texrender's
+  /// progress bar, Ctrl-C and --watch's progressive image). Returning false stops the frame at
+  /// this pass boundary: it averages the passes done (FrameStats::Interrupted).
+  std::function<bool(const PassProgress &)> AfterPass;
 };
+
 
 /// Counts of one frame.
 struct FrameStats {
@@ -64,6 +76,7 @@ struct FrameStats {
   unsigned Passes = 0;
   int SamplesDone = 0;          // samples per pixel rendered (fewer than asked when TimeLimited)
   bool TimeLimited = false;     // RendererOptions::Deadline stopped the frame early
+  bool Interrupted = false;     // RendererOptions::AfterPass stopped the frame early
   unsigned Bounces = 0;         // bounce iterations summed over passes
   std::string Tier;             // the texture kernel that ran: interp, shape, inline, wavefront
   std::map<std::string, KernelTiming> Kernels;
@@ -138,6 +151,8 @@ private:
   void uploadScene();
   void allocateWorkBuffers(size_t MaxPaths);
   void uploadLayoutData();
+  /// The image of the first NumPixels sums over Done samples (linear RGB).
+  std::vector<float> averageSums(size_t NumPixels, int Done);
   /// Points each mesh at its material's index in Lay, by the material's name in scene.json:
   /// a regenerated layout may number the materials differently. A name Lay lacks is an error.
   void mapMeshMaterials();
