@@ -1,0 +1,395 @@
+"""Figure: texrender side by side with real Cycles on the atrium (issues 22 and 24).
+
+The atrium is rebuilt in Blender by examples/blender/make_scene.py (same OBJs, camera, sun as
+irradiance R 2 pi (1 - cos r), sky as the world colour, Cycles on the CPU with both threads, no
+denoising, no adaptive sampling, box filter 1 px, no clamping, light tree and path guiding off;
+max_bounces = maxDepth - 2, since texrender's maxDepth has Mitsuba's meaning, 2 = direct light
+only). Four variants: diffuse, rust on the model, rust everywhere, scratches on the model.
+
+Frame times: every repetition renders every (variant, renderer) once, in an order that rotates
+with the repetition; renderers: Cycles (one warm bpy process, `bpy.ops.render.render()` timed:
+Cycles makes a new session per render, so the time includes its scene sync and BVH build; that
+fixed part is measured apart as a 16x16, 1 spp render of the same file), texrender
+`--trace=auto` (Embree on this CPU) and `--trace=opencl`, texcc's default mode (interp), one
+process per render; texrender's frame is stats.json's renderSeconds (without the BVH build and
+kernel builds, which are reported apart: bvhBuildSeconds). texrender's rust and scratches are
+the examples' texcc graphs (examples/rust, examples/scratches), which are not Blender's nodes:
+their frame times compare the same work, not the same pixels.
+
+Image agreement (diffuse only: the only variant whose materials are the same in both
+renderers): each renderer at high spp, the mean linear RGB over the model's pixels and over the
+rest (regions from a Cycles emission mask; pixels on the model's edge excluded) and HDR-FLIP
+(flip-evaluator) between the two images.
+
+    python3 bench/cycles.py [--quick] [--build build] [--reps N] [--spp 1,16] [--size 512x512]
+        [--agree-size 256x256 --agree-spp 256] [--no-agree]
+
+bench/run runs it as the figure "cycles"; results in bench/results/cycles.json.
+"""
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import common  # noqa: E402
+
+VENV_PYTHON = os.path.join(common.ROOT, ".venv", "bin", "python")
+MAKE_SCENE = os.path.join(common.ROOT, "examples", "blender", "make_scene.py")
+VARIANTS = ("diffuse", "rust-model", "rust-all", "scratches-model")
+RENDERERS = ("cycles", "texrender-auto", "texrender-opencl")
+TAG = "CYCLESJSON "
+
+# texrender's side of each variant: (graph, scene, material of every mesh or None: the scene's)
+TEXRENDER = {"diffuse": ("bench/inputs/diffuse/graph.json", "examples/atrium/scene-diffuse.json",
+                         None),
+             "rust-model": ("examples/rust/graph.json", "examples/atrium/scene.json", None),
+             "rust-all": ("examples/rust/graph.json", "examples/atrium/scene.json", "rusty"),
+             "scratches-model": ("examples/scratches/graph.json",
+                                 "examples/atrium/scene-scratched.json", None)}
+
+
+# --- The bpy worker (runs under .venv's Python) --------------------------------------------------
+
+def worker():
+    # Replies go to the original stdout; everything bpy and Cycles print goes to stderr.
+    channel = os.fdopen(os.dup(1), "w")
+    os.dup2(2, 1)
+    # This file is named cycles.py: keep it from shadowing Blender's own "cycles" add-on.
+    sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != HERE]
+    sys.modules.pop("cycles", None)
+    import bpy
+    import numpy as np
+
+    def reply(obj):
+        channel.write(TAG + json.dumps(obj) + "\n")
+        channel.flush()
+
+    def setup(req):
+        bpy.ops.wm.open_mainfile(filepath=req["blend"])
+        scene = bpy.context.scene
+        scene.render.resolution_x, scene.render.resolution_y = req["size"]
+        scene.cycles.samples = req["spp"]
+        scene.cycles.seed = req.get("seed", 1)
+        return scene
+
+    def read_exr(path):
+        img = bpy.data.images.load(path)
+        px = np.empty(len(img.pixels), np.float32)
+        img.pixels.foreach_get(px)
+        out = px.reshape(img.size[1], img.size[0], 4)[::-1, :, :3].copy()
+        bpy.data.images.remove(img)
+        return out
+
+    def render(req):
+        scene = setup(req)
+        if req.get("exr"):
+            scene.render.image_settings.file_format = "OPEN_EXR"
+            scene.render.image_settings.color_depth = "32"
+            scene.render.filepath = req["exr"]
+        t0 = time.perf_counter()
+        bpy.ops.render.render(write_still=bool(req.get("exr")))
+        return {"seconds": time.perf_counter() - t0}
+
+    def mask(req):
+        """1 on the model, 0 elsewhere: the model white emission, everything else black."""
+        scene = setup(req)
+        for obj in scene.objects:
+            if obj.type == "LIGHT":
+                obj.hide_render = True
+        scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+        for obj in scene.objects:
+            if obj.type != "MESH":
+                continue
+            m = bpy.data.materials.new("mask-" + obj.name)
+            m.use_nodes = True
+            t = m.node_tree
+            t.nodes.clear()
+            out = t.nodes.new("ShaderNodeOutputMaterial")
+            em = t.nodes.new("ShaderNodeEmission")
+            em.inputs["Strength"].default_value = 1.0 if obj.name == "model" else 0.0
+            t.links.new(em.outputs[0], out.inputs["Surface"])
+            obj.data.materials.clear()
+            obj.data.materials.append(m)
+        scene.render.image_settings.file_format = "OPEN_EXR"
+        scene.render.image_settings.color_depth = "32"
+        scene.render.filepath = req["exr"]
+        bpy.ops.render.render(write_still=True)
+        return {}
+
+    def analyze(req):
+        a, b = read_exr(req["a"]), read_exr(req["b"])
+        m = read_exr(req["mask"])[:, :, 0]
+        regions = {"model": m >= 0.999, "rest": m <= 0.001, "all": np.ones_like(m, bool)}
+        out = {"regions": {}}
+        for name, sel in regions.items():
+            ma, mb = a[sel].mean(axis=0), b[sel].mean(axis=0)
+            out["regions"][name] = {"pixels": int(sel.sum()), "a": ma.tolist(), "b": mb.tolist(),
+                                    "relDiffPercent": (100 * (mb / ma - 1)).tolist()}
+        try:
+            import flip_evaluator
+            _, mean, _ = flip_evaluator.evaluate(np.ascontiguousarray(a), np.ascontiguousarray(b),
+                                                 "HDR", applyMagma=False)
+            out["flip"] = float(mean)
+        except ImportError:
+            out["flip"] = None
+        return out
+
+    ops = {"render": render, "mask": mask, "analyze": analyze}
+    reply({"ready": bpy.app.version_string})
+    for line in sys.stdin:
+        req = json.loads(line)
+        try:
+            reply(ops[req["op"]](req))
+        except Exception as e:  # reported to the driver, which raises BenchError
+            reply({"error": "%s: %s" % (type(e).__name__, e)})
+
+
+class Cycles:
+    """The driver's handle on one warm bpy process."""
+
+    def __init__(self):
+        if not os.path.exists(VENV_PYTHON):
+            raise common.BenchError("%s missing: python3 -m venv .venv && .venv/bin/pip install "
+                                    "bpy==5.0.1" % VENV_PYTHON)
+        self.p = subprocess.Popen([VENV_PYTHON, os.path.abspath(__file__), "--worker"],
+                                  stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+        self.version = self._read()["ready"]
+
+    def _read(self):
+        for line in self.p.stdout:
+            if line.startswith(TAG):
+                r = json.loads(line[len(TAG):])
+                if "error" in r:
+                    raise common.BenchError("cycles worker: " + r["error"])
+                return r
+        raise common.BenchError("cycles worker exited (exit %s)" % self.p.wait())
+
+    def call(self, **req):
+        self.p.stdin.write(json.dumps(req) + "\n")
+        self.p.stdin.flush()
+        return self._read()
+
+    def close(self):
+        self.p.stdin.close()
+        self.p.wait()
+
+
+# --- The driver ----------------------------------------------------------------------------------
+
+def ensure_bpy():
+    r = subprocess.run([VENV_PYTHON, "-c", "import bpy"], stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE) if os.path.exists(VENV_PYTHON) else None
+    if r is None or r.returncode != 0:
+        common.log("installing bpy==5.0.1 into .venv (about 370 MB)")
+        if not os.path.exists(VENV_PYTHON):
+            common.run([sys.executable, "-m", "venv", os.path.join(common.ROOT, ".venv")])
+        common.run([VENV_PYTHON, "-m", "pip", "install", "bpy==5.0.1", "flip-evaluator"])
+
+
+def make_blends(tools):
+    out = {}
+    for v in VARIANTS:
+        out[v] = os.path.join(tools.work, "atrium-%s.blend" % v)
+        common.run([VENV_PYTHON, MAKE_SCENE, out[v], "--variant", v])
+    return out
+
+
+def texrender_inputs(tools):
+    """{variant: (scene path, textures folder)}: texcc once per graph (default mode)."""
+    out, folders = {}, {}
+    for v, (graph, scene, everywhere) in TEXRENDER.items():
+        if graph not in folders:
+            folders[graph] = os.path.join(tools.work, "tex-" + os.path.basename(os.path.dirname(graph)))
+            common.run([tools.texcc, "--graph", os.path.join(common.ROOT, graph), "-o",
+                        folders[graph]])
+        path = os.path.join(common.ROOT, scene)
+        if everywhere:
+            with open(path) as f:
+                s = json.load(f)
+            for mesh in s["meshes"]:
+                mesh["material"] = everywhere
+                mesh["obj"] = os.path.join(os.path.dirname(path), mesh["obj"])
+            path = os.path.join(tools.work, "atrium-%s.json" % v)
+            with open(path, "w") as f:
+                json.dump(s, f, indent=1)
+        out[v] = (path, folders[graph])
+    return out
+
+
+def texrender_once(tools, inputs, variant, trace, size, spp, name, exr=False, seed=None):
+    scene, textures = inputs[variant]
+    opts = ["--size", size, "--spp", str(spp), "--trace=" + trace]
+    if seed is not None:
+        opts += ["--seed", str(seed)]
+    stats, img, wall = common.texrender(tools, scene, textures, name, opts,
+                                        image="exr" if exr else "png")
+    k = stats["kernels"]
+    return {"frame": stats["renderSeconds"], "total": stats["totalSeconds"], "wall": wall,
+            "trace": stats["trace"], "bvhBuildSeconds": stats["bvhBuildSeconds"],
+            "stages": {n: k[n]["seconds"] for n in k},
+            "textureSeconds": common.texture_kernel_seconds(stats)}, img
+
+
+def frame_times(tools, cyc, blends, inputs, size, spps, reps, checkpoint):
+    w, h = (int(x) for x in size.split("x"))
+    configs = [(v, r) for v in VARIANTS for r in RENDERERS]
+    runs = {str(spp): {"%s/%s" % c: [] for c in configs} for spp in spps}
+    loads = []
+    fixed = {v: [] for v in VARIANTS}
+    for v in VARIANTS:  # warm: kernels built, caches filled; Cycles' fixed part (sync + BVH)
+        for r in RENDERERS[1:]:
+            texrender_once(tools, inputs, v, r.split("-")[1], size, 1, "warm")
+        cyc.call(op="render", blend=blends[v], size=[w, h], spp=1)
+        for _ in range(3):
+            fixed[v].append(cyc.call(op="render", blend=blends[v], size=[16, 16],
+                                     spp=1)["seconds"])
+    fixed = {v: common.median(f) for v, f in fixed.items()}
+    for spp in spps:
+        for rep in range(reps):
+            k = rep % len(configs)
+            for v, r in configs[k:] + configs[:k]:
+                common.log("cycles figure: %d spp rep %d/%d %s %s" % (spp, rep + 1, reps, v, r))
+                loads.append(os.getloadavg()[0])
+                if r == "cycles":
+                    s = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp)
+                    sample = {"render": s["seconds"]}
+                else:
+                    sample, _ = texrender_once(tools, inputs, v, r.split("-")[1], size, spp,
+                                               "cy-%s-%s" % (v, r))
+                runs[str(spp)]["%s/%s" % (v, r)].append(sample)
+            done = {k2: v2 for k2, v2 in runs.items() if all(v2.values())}
+            checkpoint(done, fixed, loads)
+    return runs, fixed, loads
+
+
+def summarize(runs, fixed):
+    table = []
+    if not runs:
+        return table
+    for spp, cfgs in runs.items():
+        for r in RENDERERS:
+            key = "render" if r == "cycles" else "frame"
+            base = [s[key] for s in cfgs["diffuse/" + r]]
+            for v in VARIANTS:
+                times = [s[key] for s in cfgs["%s/%s" % (v, r)]]
+                row = {"spp": int(spp), "renderer": r, "variant": v,
+                       "median": common.median(times), "raw": times,
+                       "overheadPercent": 100 * (common.median(
+                           [t / b for t, b in zip(times, base)]) - 1)}
+                if r == "cycles":
+                    row["medianWithoutFixed"] = row["median"] - fixed[v]
+                else:
+                    samples = cfgs["%s/%s" % (v, r)]
+                    row["medianTotal"] = common.median([s["total"] for s in samples])
+                    row["trace"] = samples[0]["trace"]
+                    row["bvhBuildSeconds"] = samples[0]["bvhBuildSeconds"]
+                    stages = samples[0]["stages"].keys()
+                    row["stages"] = {n: common.median([s["stages"][n] for s in samples])
+                                     for n in stages}
+                table.append(row)
+    # texrender over Cycles, ratio of medians (frame against render() less the fixed part, and
+    # texrender's whole process against Cycles' whole render())
+    for row in table:
+        if row["renderer"] == "cycles":
+            continue
+        c = next(x for x in table if x["renderer"] == "cycles" and x["spp"] == row["spp"]
+                 and x["variant"] == row["variant"])
+        row["overCyclesFrame"] = row["median"] / c["medianWithoutFixed"]
+        row["overCyclesRender"] = row["median"] / c["median"]
+    return table
+
+
+def agreement(tools, cyc, blends, inputs, size, spp):
+    w, h = (int(x) for x in size.split("x"))
+    mask = os.path.join(tools.work, "agree-mask.exr")
+    cyc.call(op="mask", blend=blends["diffuse"], size=[w, h], spp=16, exr=mask)
+    out = {}
+    for v in ("diffuse",):
+        cexr = os.path.join(tools.work, "agree-cycles-%s.exr" % v)
+        t = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, exr=cexr)["seconds"]
+        r, texr = texrender_once(tools, inputs, v, "auto", size, spp, "agree-" + v, exr=True)
+        res = cyc.call(op="analyze", a=cexr, b=texr, mask=mask)
+        res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"]})
+        out[v] = res
+    return out
+
+
+CHECKPOINTS = True  # bench.py passes a checkpoint callback
+
+
+def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size=None,
+            agree_spp=None, agree=True):
+    """save(data) is called after every repetition with what is measured so far."""
+    ensure_bpy()
+    size = size or ("128x128" if quick else "512x512")
+    spps = spps or ([1, 4] if quick else [1, 16])
+    reps = reps or (2 if quick else 5)
+    blends = make_blends(tools)
+    inputs = texrender_inputs(tools)
+    cyc = Cycles()
+    data = {"size": size, "spps": spps, "repetitions": reps, "cyclesVersion": cyc.version,
+            "maxDepth": 4, "cyclesMaxBounces": 2, "loadAverageBefore": os.getloadavg()}
+    try:
+        if agree:
+            asize = agree_size or ("64x64" if quick else "256x256")
+            aspp = agree_spp or (16 if quick else 256)
+            data["agreement"] = {"size": asize, "spp": aspp, "loadAverage": os.getloadavg(),
+                                 "results": agreement(tools, cyc, blends, inputs, asize, aspp)}
+
+        def checkpoint(runs, fixed, loads):
+            data.update({"cyclesFixedSeconds": fixed, "rows": summarize(runs, fixed),
+                         "runs": runs, "loadAverage1min": loads,
+                         "loadAverageAfter": os.getloadavg()})
+            if save:
+                save(dict(data))
+
+        runs, fixed, loads = frame_times(tools, cyc, blends, inputs, size, spps, reps,
+                                         checkpoint)
+        checkpoint(runs, fixed, loads)
+    finally:
+        cyc.close()
+    return data
+
+
+def main():
+    import argparse
+    import tempfile
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--reps", type=int)
+    ap.add_argument("--size")
+    ap.add_argument("--spp", help="comma-separated, e.g. 1,16")
+    ap.add_argument("--agree-size")
+    ap.add_argument("--agree-spp", type=int)
+    ap.add_argument("--no-agree", action="store_true")
+    ap.add_argument("--out", help="result file (default bench/results/cycles.json)")
+    args = ap.parse_args()
+    tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-cycles-"))
+    t0 = time.perf_counter()
+
+    def save(data, complete=False):
+        data.update({"complete": complete, "quick": args.quick,
+                     "seconds": time.perf_counter() - t0,
+                     "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+                     "machine": common.machine(), "git": common.git_head(),
+                     "command": "python3 " + " ".join(sys.argv)})
+        common.save("cycles", data, args.out)
+
+    data = measure(tools, args.quick, save, args.size,
+                   [int(s) for s in args.spp.split(",")] if args.spp else None, args.reps,
+                   args.agree_size, args.agree_spp, not args.no_agree)
+    save(data, True)
+
+
+if __name__ == "__main__":
+    if sys.argv[1:2] == ["--worker"]:
+        worker()
+    else:
+        try:
+            main()
+        except common.BenchError as e:
+            sys.exit("bench/cycles.py: error: %s" % e)
