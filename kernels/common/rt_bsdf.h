@@ -4,6 +4,7 @@
 #ifndef RT_BSDF_H
 #define RT_BSDF_H
 
+#include "rt_ggx_albedo.h"
 #include "rt_sampling.h"
 #include "rt_types.h"
 
@@ -95,8 +96,8 @@ static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, flo
  *   metal: a GGX lobe with Schlick Fresnel of F0 = baseColor (F82 tint white = Schlick).
  * Both specular lobes share one GGX distribution (alpha = roughness^2), so sampling picks the
  * diffuse lobe or the GGX lobe by their estimated albedos at wo, and the pdf is the mixture's
- * (one-sample MIS over the lobes). Single-scattering GGX: rough specular loses energy that
- * Cycles' multiscatter GGX keeps (docs/runtime.md). */
+ * (one-sample MIS over the lobes). The energy that single-scattering GGX loses is added back
+ * by scaling (rt_ggx_albedo), as Cycles' multiscatter GGX keeps it. */
 typedef struct RtPrincipled {
   float3 base;
   float roughness;
@@ -108,6 +109,19 @@ static inline float rt_schlick1(float f0, float cosD) {
   float m = 1.0f - clamp(cosD, 0.0f, 1.0f);
   float m5 = m * m * m * m * m;
   return f0 + (1.0f - f0) * m5;
+}
+
+/* The directional albedo of the GGX lobe (Fresnel 1) at wo: rt_ggx_albedo.h, bilinear. */
+static inline float rt_ggx_albedo(float roughness, float cosO) {
+  const int n = RT_GGX_ALBEDO_N;
+  float x = clamp(cosO * n - 0.5f, 0.0f, (float)(n - 1));
+  float y = clamp(roughness, 0.0f, 1.0f) * (float)(n - 1);
+  int i0 = (int)x, j0 = (int)y;
+  int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
+  float fx = x - (float)i0, fy = y - (float)j0;
+  float e0 = mix(rt_ggx_albedo_table[j0 * n + i0], rt_ggx_albedo_table[j0 * n + i1], fx);
+  float e1 = mix(rt_ggx_albedo_table[j1 * n + i0], rt_ggx_albedo_table[j1 * n + i1], fx);
+  return fmax(mix(e0, e1, fy), 1e-3f);
 }
 
 /* The probability of sampling the diffuse base at wo (the rest: the GGX lobe). */
@@ -137,8 +151,13 @@ static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, flo
     float d = rt_ggx_d(cosH, a2);
     specPdf = d * cosH / (4.0f * cosD);
     float dg = d * rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2) / (4.0f * cosI * cosO);
-    float3 fr = dielectric * rt_schlick1(P.f0, cosD) + P.metallic * rt_schlick(P.base, cosD);
-    f += fr * dg;
+    /* Multiple scattering: each specular lobe scaled by 1 + F_avg (1 - E) / E, with E the
+     * lobe's albedo at wo and F_avg Schlick's hemispherical average, F0 + (1 - F0) / 21. */
+    float e = rt_ggx_albedo(P.roughness, cosO);
+    float ms = (1.0f - e) / e;
+    float fd = rt_schlick1(P.f0, cosD) * (1.0f + (P.f0 + (1.0f - P.f0) / 21.0f) * ms);
+    float3 fm = rt_schlick(P.base, cosD) * (1.0f + (P.base + (1.0f - P.base) / 21.0f) * ms);
+    f += (dielectric * fd + P.metallic * fm) * dg;
   }
   *pdf = pd * cosI * RT_INV_PI + (1.0f - pd) * specPdf;
   return f;

@@ -8,8 +8,9 @@
                                     sphere) and whether it meets the material's expectation
 
 Under a uniform sky of radiance 1 a convex object's pixel shows its directional albedo at
-the view direction. So every material must be <= 1 (energy conservation), a smooth white
-metal ~1 (Fresnel of F0 = 1 is 1, GGX at roughness 0.05 loses almost nothing), and a
+the view direction. So every material must be <= 1 (energy conservation), a white metal ~1
+at every roughness (Fresnel of F0 = 1 is 1, and the multiple-scattering compensation gives
+back what single-scattering GGX loses: within 1.5%, 1% when smooth), and a
 principled dielectric with specular 0 is a Lambertian base: exactly its base color.
 """
 import json
@@ -24,8 +25,10 @@ MATERIALS = {}
 for m in (0.0, 0.5, 1.0):
     for r in (0.0, 0.3, 0.6, 1.0):
         name = "m%g_r%g" % (m, r)
+        # a white metal keeps its energy at every roughness (multiple-scattering
+        # compensation; single-scattering GGX alone returns 0.31 at roughness 1)
         MATERIALS[name] = ({"baseColor": [1, 1, 1], "metallic": m, "roughness": r},
-                           ("le", 1.0))
+                           ("near", 1.0, 0.015) if m == 1.0 else ("le", 1.0))
 MATERIALS["spec1_r0.2"] = ({"baseColor": [1, 1, 1], "metallic": 0.0, "roughness": 0.2,
                             "specular": 1.0}, ("le", 1.0))
 MATERIALS["black_spec1"] = ({"baseColor": [0, 0, 0], "specular": 1.0, "roughness": 0.3},
@@ -81,12 +84,12 @@ def check(out):
             img = read_exr(f.read())
         h, w = img.shape[:2]
         c = img[h // 2 - 3:h // 2 + 3, w // 2 - 3:w // 2 + 3, :3].reshape(-1, 3).mean(axis=0)
+        good = bool((c <= 1.005).all())  # every material: energy <= 1 (+ noise)
         if exp[0] == "le":
-            good = bool((c <= exp[1] + 0.005).all())
             want = "<= 1"
         else:
             ref = inputs["baseColor"] if exp[1] is None else [exp[1]] * 3
-            good = all(abs(a - b) <= exp[2] * max(b, 1e-6) for a, b in zip(c, ref))
+            good &= all(abs(a - b) <= exp[2] * max(b, 1e-6) for a, b in zip(c, ref))
             want = "within %g%% of %s" % (exp[2] * 100, ref)
         ok &= good
         print("%-12s %.4f %.4f %.4f  %s %s" % (n, c[0], c[1], c[2], want,
