@@ -51,8 +51,8 @@ class Problems:
 # The node table and the library signatures (one owner: blender_nodes.py).
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blender_nodes import (  # noqa: E402
-    DEFAULT_SURFACE, LIBRARY, NODES, PASS_THROUGH, PRINCIPLED_IGNORED, PRINCIPLED_INPUTS, SHADERS,
-    VECTOR_MATH_OPS, check_table, library_signatures, supported_nodes_text)
+    DEFAULT_SURFACE, LIBRARY, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED, PRINCIPLED_INPUTS,
+    SHADERS, VECTOR_MATH_OPS, check_table, library_signatures, supported_nodes_text)
 
 
 # --- Material translation -------------------------------------------------------------------
@@ -301,12 +301,15 @@ class MaterialTranslator:
         if key in self.done:
             return self.done[key]
         self.enter(node)
-        if node.invert:
-            self.refuse("%s: 'Invert' is not supported" % self.node_where(node),
-                        "bumping outwards")
+        distance = self.input(node, "Distance", "float")
+        if node.invert:  # Cycles negates the distance (into the surface instead of out)
+            distance = -distance if not isinstance(distance, dict) else {"node": self.add_node(
+                "%s.Distance>inverted" % self.qual(node), "blMath",
+                {"a": distance, "b": -1.0, "c": 0.0, "operation": MATH_OPS.index("MULTIPLY"),
+                 "useClamp": 0})}
         args = {"height": self.input(node, "Height", "float"),
                 "strength": self.input(node, "Strength", "float"),
-                "distance": self.input(node, "Distance", "float"), "normal": {"attr": "Normal"}}
+                "distance": distance, "normal": {"attr": "Normal"}}
         inner = self.link_source(next(s for s in node.inputs if s.identifier == "Normal"))
         if inner is not None and inner.node is not None and \
                 inner.node.bl_idname == "ShaderNodeBump":
