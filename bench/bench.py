@@ -13,6 +13,7 @@ import time
 import accuracy
 import ao
 import common
+import cycles
 import edit_session
 import edits
 import instructions
@@ -29,7 +30,7 @@ FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
            ("per_hit", per_hit),
            ("resources", resources),
            ("value_stack", value_stack), ("accuracy", accuracy), ("ao", ao),
-           ("stability", stability)]
+           ("cycles", cycles), ("stability", stability)]
 
 
 def main():

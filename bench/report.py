@@ -656,6 +656,75 @@ def ao_section(d):
     return lines
 
 
+def cycles_section(d):
+    """bench/cycles.py: texrender against measured Cycles on the atrium (issues 22 and 24)."""
+    lines = ["## Side by side with Cycles (atrium)", ""]
+    if not d or not d.get("rows"):
+        return lines + ["Not measured yet: run `python3 bench/cycles.py` (or `bench/run --only "
+                        "cycles`); how to run it and what it measures: "
+                        "[bench/cycles.md](bench/cycles.md).", ""]
+    loads = d.get("loadAverage1min") or [0.0]
+    lines += ["`%s`, %s, Cycles %s (bpy, CPU, both threads), %s, max depth %d (Cycles "
+              "max_bounces %d), %d repetitions interleaved (every renderer and variant in each, "
+              "rotating order), medians; 1-minute load average %.1f-%.1f on 2 cores%s. Cycles: "
+              "`render.render()` in one warm process, which includes Cycles' scene sync and BVH "
+              "build (a 16x16 1-spp render of the same file, median %.2f-%.2f s, is that fixed "
+              "part; \"Cycles less fixed\" subtracts it). texrender: `renderSeconds` (the frame, "
+              "without BVH and kernel builds), default mode; rust and scratches are the examples' "
+              "texcc graphs, not the Blender node trees, so their rows compare work, not pixels. "
+              "Method and caveats: [bench/cycles.md](bench/cycles.md)." % (
+                  d["command"], d["date"], d.get("cyclesVersion", "?"), d["size"], d["maxDepth"],
+                  d["cyclesMaxBounces"], d["repetitions"], min(loads), max(loads),
+                  "" if d.get("complete", True) else " (run cut short: only the rows below)",
+                  min(d["cyclesFixedSeconds"].values()), max(d["cyclesFixedSeconds"].values())),
+              "", "| spp | variant | Cycles | Cycles less fixed | texrender auto (Embree) | "
+              "texrender opencl | auto / Cycles | auto / Cycles less fixed | overhead over diffuse: "
+              "Cycles | auto | opencl |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    rows = {(r["spp"], r["renderer"], r["variant"]): r for r in d["rows"]}
+    for spp in sorted({r["spp"] for r in d["rows"]}):
+        for v in ("diffuse", "rust-model", "rust-all", "scratches-model"):
+            c, a, o = (rows.get((spp, n, v)) for n in ("cycles", "texrender-auto",
+                                                      "texrender-opencl"))
+            if not (c and a and o):
+                continue
+            lines.append("| %d | %s | %.2f s | %.2f s | %.2f s | %.2f s | **%.2fx** | %.2fx | %s | "
+                         "%s | %s |"
+                         % (spp, v, c["median"], c["medianWithoutFixed"], a["median"],
+                            o["median"], a["overCyclesRender"], a["overCyclesFrame"],
+                            pct(c["overheadPercent"]),
+                            pct(a["overheadPercent"]), pct(o["overheadPercent"])))
+    top = max(r["spp"] for r in d["rows"])
+    lines += ["", "Where texrender's time goes at %d spp (median stage seconds, stats.json; the "
+              "Embree stages are wall time, the OpenCL ones device time):" % top, ""]
+    for r in d["rows"]:
+        if r["spp"] == top and r["renderer"] != "cycles" and r["variant"] in ("diffuse",
+                                                                               "rust-all"):
+            total = sum(r["stages"].values()) or 1.0
+            big = sorted(r["stages"].items(), key=lambda kv: -kv[1])[:5]
+            lines.append("- %s, %s: %s" % (r["variant"], r["renderer"], ", ".join(
+                "`%s` %.2f s (%.0f%%)" % (n, t, 100 * t / total) for n, t in big)))
+    lines += ["", "Raw times (seconds, in repetition order):", ""]
+    for r in d["rows"]:
+        lines.append("- %d spp, %s, %s: %s" % (r["spp"], r["variant"], r["renderer"],
+                                               ", ".join("%.2f" % t for t in r["raw"])))
+    ag = d.get("agreement")
+    if ag:
+        lines += ["", "Image agreement, diffuse (the one variant with the same materials in both "
+                  "renderers), %s at %d spp each: mean linear RGB, texrender relative to Cycles, "
+                  "per region (model: pixels wholly on the gears; rest: pixels wholly off them), "
+                  "and HDR-FLIP between the two images (noise included)." % (ag["size"],
+                                                                              ag["spp"]), "",
+                  "| variant | region | pixels | Cycles RGB | texrender RGB | difference | FLIP |",
+                  "|---|---|---|---|---|---|---|"]
+        for v, res in ag["results"].items():
+            for name, g in res["regions"].items():
+                lines.append("| %s | %s | %d | %s | %s | %s | %s |" % (
+                    v, name, g["pixels"], ", ".join("%.4f" % x for x in g["a"]),
+                    ", ".join("%.4f" % x for x in g["b"]),
+                    ", ".join(pct(x) for x in g["relDiffPercent"]), fmt(res.get("flip"))))
+    return lines + [""]
+
+
 def tail_sections():
     lines = ["## 7. GPU", "",
              "No GPU was available to this session: every time above is a CPU (PoCL) time. "
@@ -675,7 +744,7 @@ def tail_sections():
 def write(args=None):
     results = {n: common.load(n) for n in ("table1", "edits", "edit_session", "superinstructions",
                                            "instructions", "per_hit", "resources", "value_stack",
-                                           "accuracy", "stability", "ao")}
+                                           "accuracy", "stability", "ao", "cycles")}
     if not any(results.values()):
         raise common.BenchError("no results in bench/results: run bench/run first")
     lines = HEADER.splitlines() + [""] + machine_section(results)
@@ -687,6 +756,7 @@ def write(args=None):
     lines += resources_section(results["resources"]) + value_stack_section(results["value_stack"])
     lines += accuracy_section(results["accuracy"])
     lines += stability_section(results["stability"]) + ao_section(results["ao"])
+    lines += cycles_section(results["cycles"])
     lines += tail_sections()
     path = os.path.join(common.ROOT, "BENCHMARKS.md")
     with open(path, "w") as f:
