@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -175,6 +176,16 @@ Layout loadLayout(const std::string &OutDir) {
     L.GraphPath = J.value("graph", "");
     if (!L.GraphPath.empty() && fs::path(L.GraphPath).is_relative())
       L.GraphPath = (fs::path(OutDir) / L.GraphPath).lexically_normal().string();
+    // The arguments a regeneration passes to texcc again; a layout from a texcc before
+    // "compileOptions" had only the mode to go by.
+    if (J.contains("compileOptions")) {
+      const json &CO = J["compileOptions"];
+      if (!CO.is_array() || !std::all_of(CO.begin(), CO.end(), [](const json &A) { return A.is_string(); }))
+        R.fail("/compileOptions", "expected an array of strings (texcc's arguments)");
+      L.CompileOptions = CO.get<std::vector<std::string>>();
+    } else {
+      L.CompileOptions = {"--mode=" + L.Mode};
+    }
     const json &K = R.get(J, "kernel", "");
     L.KernelSource = (fs::path(OutDir) / K.value("source", "proctex.cl")).string();
     L.Entry = K.value("entry", "texcc_proctex");

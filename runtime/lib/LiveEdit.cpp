@@ -281,22 +281,31 @@ json LiveEditor::absoluteGraph() const {
   return Doc;
 }
 
+TempFolder::TempFolder(std::string P) : Path(std::move(P)) { fs::create_directories(Path); }
+
+TempFolder::~TempFolder() {
+  std::error_code EC; // nothing to do about a folder that cannot be removed
+  fs::remove_all(Path, EC);
+}
+
 LiveEditor::Regeneration LiveEditor::writeEditedGraph() {
-  fs::path Work = fs::temp_directory_path() /
-                  ("texrender-edit-" + std::to_string(getpid()) + "-" + std::to_string(++Generation));
-  fs::create_directories(Work);
-  Regeneration R{(Work / fs::path(Lay.GraphPath).filename()).string(), (Work / "out").string(),
-                 (Work / "texcc.log").string()};
-  std::ofstream(R.Graph) << absoluteGraph().dump(2);
   if (!fs::exists(TexccPath))
     throw Error("this edit needs the texture kernel regenerated, but texcc was not found at " +
                 TexccPath + " (set TEXCC, or re-run texcc and restart texrender)");
+  fs::path Work = fs::temp_directory_path() /
+                  ("texrender-edit-" + std::to_string(getpid()) + "-" + std::to_string(++Generation));
+  auto Folder = std::make_shared<const TempFolder>(Work.string());
+  Regeneration R{Folder, (Work / fs::path(Lay.GraphPath).filename()).string(),
+                 (Work / "out").string(), (Work / "texcc.log").string()};
+  std::ofstream(R.Graph) << absoluteGraph().dump(2);
   return R;
 }
 
-Layout runTexcc(const std::string &Texcc, const std::string &Mode, const std::string &Graph,
-                const std::string &Out, const std::string &Log) {
-  int Rc = runProcess({Texcc, "--graph", Graph, "--mode=" + Mode, "-o", Out}, Log);
+Layout runTexcc(const std::string &Texcc, const std::vector<std::string> &CompileOptions,
+                const std::string &Graph, const std::string &Out, const std::string &Log) {
+  std::vector<std::string> Argv{Texcc, "--graph", Graph, "-o", Out};
+  Argv.insert(Argv.end(), CompileOptions.begin(), CompileOptions.end());
+  int Rc = runProcess(Argv, Log);
   if (Rc != 0) {
     std::string Msg = trim(readFile(Log));
     throw Error("regenerating the texture kernel failed (texcc exit " + std::to_string(Rc) + "): " +
@@ -315,23 +324,28 @@ void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   Lay.GraphPath = Files.Graph;
   initEditor(Doc.dump());
   Lay.GraphPath = Original;
+  PreviousFolder = std::move(KernelFolder);
+  KernelFolder = Files.Folder;
 }
 
 void LiveEditor::regenerate(Renderer &R) {
   Regeneration Files = writeEditedGraph();
-  Layout New = runTexcc(TexccPath, Lay.Mode, Files.Graph, Files.Out, Files.Log);
+  Layout New = runTexcc(TexccPath, Lay.CompileOptions, Files.Graph, Files.Out, Files.Log);
   R.setLayout(New);
   adopt(New, Files);
 }
 
 void LiveEditor::regenerateInBackground(Renderer &R) {
   Regeneration Files = writeEditedGraph();
-  std::string Texcc = TexccPath, Mode = Lay.Mode;
+  std::string Texcc = TexccPath;
+  std::vector<std::string> Options = Lay.CompileOptions;
   const auto &CG = Editor->compiled();
   KernelShapeHash = texcc::graph::shapeHash(CG);
   R.switchShapes(
       CG.ArgsBin, CG.Attributes,
-      [Texcc, Mode, Files] { return runTexcc(Texcc, Mode, Files.Graph, Files.Out, Files.Log); },
+      [Texcc, Options, Files] {
+        return runTexcc(Texcc, Options, Files.Graph, Files.Out, Files.Log);
+      },
       [this, Files](Layout &New) {
         adopt(New, Files);
         New.ArgsBin = Editor->compiled().ArgsBin;

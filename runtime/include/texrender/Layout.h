@@ -42,6 +42,9 @@ struct Layout {
   std::string Dir;        // the texcc output folder
   std::string Mode;       // interp | inline | wavefront | shape
   std::string GraphPath;  // graph.json the kernel was made from
+  // compileOptions: texcc's arguments besides --graph, -o and the sources, replayed when a live
+  // edit regenerates the kernel (from an older layout: just --mode).
+  std::vector<std::string> CompileOptions;
   std::string KernelSource; // resolved path of proctex.cl
   std::string Entry;
   std::vector<std::string> WavefrontLaunches; // kernel names, in order

@@ -57,6 +57,20 @@ struct EditResult {
   double IdleSeconds = 0;   // Wait: the time waited for the background build
 };
 
+/// A folder of this process's temporary files: removed, with everything in it, when the last
+/// owner lets go (also when an edit fails or a background build is abandoned).
+class TempFolder {
+public:
+  explicit TempFolder(std::string Path);
+  ~TempFolder();
+  TempFolder(const TempFolder &) = delete;
+  TempFolder &operator=(const TempFolder &) = delete;
+  const std::string &path() const { return Path; }
+
+private:
+  std::string Path;
+};
+
 class LiveEditor {
 public:
   /// L: the layout the renderer currently runs. TexccPath: the texcc binary ("" = the one
@@ -76,6 +90,7 @@ public:
 private:
   /// A regeneration's files: the edited graph (paths absolute), texcc's output and log.
   struct Regeneration {
+    std::shared_ptr<const TempFolder> Folder; // texrender-edit-PID-N in the temporary folder
     std::string Graph, Out, Log;
   };
   enum class Plan { Upload, Regenerate, SwitchShapes };
@@ -110,15 +125,19 @@ private:
   // edit that changes them needs a new shape kernel, one that keeps them is an upload.
   std::string KernelShapeHash;
   unsigned Generation = 0;
+  // The folders of the regenerated kernel in use and of the one before (the renderer may still
+  // read their files: a tier built later, a fallback); older ones are removed.
+  std::shared_ptr<const TempFolder> KernelFolder, PreviousFolder;
 };
 
 /// The texcc binary: $TEXCC, else "texcc" in the folder of this executable.
 std::string findTexcc();
 
-/// Runs texcc on Graph into Out (--mode=Mode), its output in Log, and loads the layout.
+/// Runs texcc on Graph into Out with CompileOptions (layout.json's, so the kernel is made as
+/// the original was), its output in Log, and loads the layout.
 /// Thread-safe (posix_spawn): the renderer's background thread calls it.
-Layout runTexcc(const std::string &Texcc, const std::string &Mode, const std::string &Graph,
-                const std::string &Out, const std::string &Log);
+Layout runTexcc(const std::string &Texcc, const std::vector<std::string> &CompileOptions,
+                const std::string &Graph, const std::string &Out, const std::string &Log);
 
 } // namespace texrender
 

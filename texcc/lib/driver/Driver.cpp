@@ -115,7 +115,7 @@ static void renderUserCode(const cg::Backend &B, const fe::FrontendResult &FR,
 }
 
 /// layout.json "compileOptions": the arguments that make the same kernel from an edited graph
-/// (its sources and --bake values are in the graph the runtime writes).
+/// (--bake values are in the graph the runtime writes; sources given here are made absolute).
 static std::vector<std::string> replayArguments(const Options &Opts) {
   std::vector<std::string> A{std::string("--mode=") + cg::modeName(Opts.EvalMode),
                              std::string("--target=") + cg::targetName(Opts.Tgt)};
@@ -132,6 +132,8 @@ static std::vector<std::string> replayArguments(const Options &Opts) {
     A.push_back("--loop-budget=" + std::to_string(Opts.LoopBudget));
   if (!Opts.Checks)
     A.push_back("--no-checks");
+  for (const std::string &S : Opts.Sources) // given on the command line: they override the graph's
+    A.push_back(fs::absolute(fs::path(S)).lexically_normal().string());
   return A;
 }
 
