@@ -11,6 +11,7 @@
 #include "texrender/LiveEdit.h"
 #include "texrender/Renderer.h"
 #include "texrender/Stats.h"
+#include "texrender/Watch.h"
 
 #include <array>
 #include <atomic>
@@ -74,6 +75,11 @@ const char *Usage =
     "  --time-limit S       stop rendering after S seconds (from the start) and write the\n"
     "                       image of the passes done; a kernel build or a single device pass\n"
     "                       that runs past it is an error (exit 1, no output written)\n"
+    "  --watch              render progressively into -o (rewritten at most 4 times a\n"
+    "                       second) until Ctrl-C, watching scene.json, the graph and its\n"
+    "                       sources: a saved change is applied (values: an upload; other\n"
+    "                       graph or source changes: texcc in the background; the scene: a\n"
+    "                       reload) and accumulation restarts (docs/live.md)\n"
     "  --quiet              no progress bar\n"
     "  --progress           the progress bar (elapsed time, ETA) and the end's summary line\n"
     "                       even when stderr is not a terminal (then one line per update)\n"
@@ -93,6 +99,7 @@ struct Options {
   int Device = 0;
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
+  bool Watch = false;
   bool Quiet = false, ForceProgress = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
 
@@ -226,6 +233,8 @@ Options parseArgs(int Argc, char **Argv) {
       if (M != "parallel" && M != "loop")
         throw Error("--ao-method: expected parallel or loop, got '" + M + "'");
       O.AoLoop = M == "loop";
+    } else if (A == "--watch") {
+      O.Watch = true;
     } else if (A == "--interactive") {
       O.Interactive = true;
     } else if (A == "--check-nan") {
@@ -268,6 +277,10 @@ Options parseArgs(int Argc, char **Argv) {
   std::string Ext = fs::path(O.Output).extension().string();
   if (Ext != ".png" && Ext != ".exr" && Ext != ".PNG" && Ext != ".EXR")
     throw Error("-o " + O.Output + ": unknown image format (expected .png or .exr)");
+  if (O.Watch && (!O.EditScript.empty() || O.Interactive || O.TimeLimit > 0 ||
+                  !O.Variance.empty() || !O.Sets.empty()))
+    throw Error("--watch renders until Ctrl-C: it cannot be combined with --edit-script, "
+                "--interactive, --time-limit, --variance or --set (edit graph.json instead)");
   if (O.TimeLimit > 0 && (!O.EditScript.empty() || O.Interactive))
     throw Error("--time-limit limits one render: it cannot be combined with --edit-script or "
                 "--interactive");
@@ -572,6 +585,29 @@ bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
   return true;
 }
 
+/// scene.json with the command line's overrides (--spp, --size, --region, --frame, ...).
+Scene loadSceneWithOptions(const Options &O) {
+  Scene S = loadScene(O.Scene);
+  if (O.Spp) S.Render.Spp = *O.Spp;
+  if (O.Width) S.Render.Width = *O.Width, S.Render.Height = *O.Height;
+  if (O.MaxDepth) S.Render.MaxDepth = *O.MaxDepth;
+  if (O.AoSamples) S.Render.AoSamples = *O.AoSamples;
+  if (O.AoDistance) S.Render.AoDistance = *O.AoDistance;
+  if (O.Seed) S.Render.Seed = unsigned(*O.Seed);
+  S.Render.Frame = O.Frame;
+  S.Render.Time = float(double(O.Frame) / O.Fps);
+  if (O.Region) {
+    const std::array<int, 4> &G = *O.Region;
+    if (int64_t(G[0]) + G[2] > S.Render.Width || int64_t(G[1]) + G[3] > S.Render.Height)
+      throw Error("--region " + std::to_string(G[0]) + "," + std::to_string(G[1]) + "," +
+                  std::to_string(G[2]) + "," + std::to_string(G[3]) + ": outside the " +
+                  std::to_string(S.Render.Width) + "x" + std::to_string(S.Render.Height) + " film");
+    S.Render.RegionX = G[0], S.Render.RegionY = G[1];
+    S.Render.RegionWidth = G[2], S.Render.RegionHeight = G[3];
+  }
+  return S;
+}
+
 int run(int Argc, char **Argv) try {
   double T0 = now();
   Options O = parseArgs(Argc, Argv);
@@ -588,26 +624,10 @@ int run(int Argc, char **Argv) try {
   if (O.TimeLimit > 0)
     Dog = std::make_unique<Watchdog>(O.TimeLimit, T0 + O.TimeLimit);
   phase(Dog.get(), "loading the scene");
-  Scene S = loadScene(O.Scene);
-  if (O.Spp) S.Render.Spp = *O.Spp;
-  if (O.Width) S.Render.Width = *O.Width, S.Render.Height = *O.Height;
-  if (O.MaxDepth) S.Render.MaxDepth = *O.MaxDepth;
-  if (O.AoSamples) S.Render.AoSamples = *O.AoSamples;
-  if (O.AoDistance) S.Render.AoDistance = *O.AoDistance;
-  if (O.Seed) S.Render.Seed = unsigned(*O.Seed);
-  S.Render.Frame = O.Frame;
-  S.Render.Time = float(double(O.Frame) / O.Fps);
+  Scene S = loadSceneWithOptions(O);
   // The size of every image written: the region's, or the film's.
-  int OutW = S.Render.Width, OutH = S.Render.Height;
-  if (O.Region) {
-    const std::array<int, 4> &G = *O.Region;
-    if (int64_t(G[0]) + G[2] > S.Render.Width || int64_t(G[1]) + G[3] > S.Render.Height)
-      throw Error("--region " + std::to_string(G[0]) + "," + std::to_string(G[1]) + "," +
-                  std::to_string(G[2]) + "," + std::to_string(G[3]) + ": outside the " +
-                  std::to_string(S.Render.Width) + "x" + std::to_string(S.Render.Height) + " film");
-    S.Render.RegionX = G[0], S.Render.RegionY = G[1];
-    S.Render.RegionWidth = OutW = G[2], S.Render.RegionHeight = OutH = G[3];
-  }
+  const RenderSettings &G = S.Render;
+  const int OutW = G.RegionWidth ? G.RegionWidth : G.Width, OutH = G.RegionWidth ? G.RegionHeight : G.Height;
   std::string TexDir = O.Textures.empty() ? S.TexturesDir : O.Textures;
   if (TexDir.empty())
     throw Error(O.Scene + ": no texture folder: give --textures OUTDIR or \"textures\" in the scene");
@@ -638,9 +658,20 @@ int run(int Argc, char **Argv) try {
   }
   // Tiered pays off when edits follow; a single render waits for the shape build instead
   // (docs/runtime.md, Tiers: the interp frame is slower and the background build competes).
-  RO.Tier = O.Tier.value_or(!Script.empty() || O.Interactive ? TierPolicy::Auto : TierPolicy::Shape);
+  const bool EditSession = !Script.empty() || O.Interactive || O.Watch;
+  RO.Tier = O.Tier.value_or(EditSession ? TierPolicy::Auto : TierPolicy::Shape);
   // Likewise an interp kernel gets value-stack headroom only when edits may need it.
-  RO.InterpStackHeadroom = !Script.empty() || O.Interactive;
+  RO.InterpStackHeadroom = EditSession;
+  if (O.Watch) {
+    WatchOptions W;
+    W.ScenePath = O.Scene, W.Output = O.Output, W.Width = OutW, W.Height = OutH;
+    W.LoadScene = [&O] { return loadSceneWithOptions(O); };
+    W.Renderer = RO;
+    W.Stop = &StopSignal;
+    runWatch(std::move(W), L);
+    int Sig = StopSignal.load();
+    return Sig ? 128 + Sig : 0;
+  }
   // Every edit is checked against the graph before the kernel build and the first frame: a
   // bad one is an error that leaves no frame written.
   std::unique_ptr<LiveEditor> Editor;

@@ -1,0 +1,72 @@
+#ifndef TEXRENDER_WATCH_H
+#define TEXRENDER_WATCH_H
+
+// texrender --watch (docs/live.md): renders progressively into one image while it watches
+// scene.json, graph.json and every source file the graph names; a saved change is applied the
+// cheapest way (argument values: the live editor's upload; anything else in the graph or a
+// source file: texcc on a background thread while the current kernel keeps rendering; the
+// scene: a reload), and accumulation restarts.
+
+#include "texrender/Layout.h"
+#include "texrender/LiveEdit.h"
+#include "texrender/Renderer.h"
+#include "texrender/Scene.h"
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace texrender {
+
+/// Files watched by polling their modification time and size (every ~100 ms, the caller's
+/// loop). Polling rather than inotify: editors save by writing in place or by renaming a new
+/// file over the old one (which an inotify watch on the file loses), a handful of stat() calls
+/// cost microseconds, and it runs unchanged off Linux.
+class FileWatcher {
+public:
+  void watch(const std::vector<std::string> &Paths);
+  /// The watched files whose time or size changed since the last call (or that appeared or
+  /// vanished).
+  std::vector<std::string> changed();
+
+private:
+  struct Seen {
+    std::string Path;
+    bool Exists = false;
+    long long Size = 0, MTimeNs = 0;
+  };
+  static Seen look(const std::string &Path);
+  std::vector<Seen> Files;
+};
+
+/// The files a graph depends on: the graph and its "sources" (resolved against its folder).
+std::vector<std::string> graphFiles(const std::string &GraphPath, const nlohmann::json &Graph);
+
+/// The live edits (parseEdit lines: "set NODE.ARG=VALUE") that take graph Old to New when they
+/// differ only in node arguments; nullopt when anything else differs (nodes, functions,
+/// sources, materials, images): that needs texcc.
+std::optional<std::vector<std::string>> argumentEdits(const nlohmann::json &Old,
+                                                      const nlohmann::json &New);
+
+struct WatchOptions {
+  std::string ScenePath, Output;
+  int Width = 0, Height = 0; // the image written (the region's size with --region)
+  /// Loads scene.json with the command line's overrides (--spp, --size, ...).
+  std::function<Scene()> LoadScene;
+  RendererOptions Renderer;
+  const std::atomic<int> *Stop = nullptr; // a signal asked to stop (0: none)
+};
+
+/// Runs the watch session until *Stop. Returns the number of frames rendered. Messages (one a
+/// line, "texrender: watch: ...") on stderr; errors in the user's files are printed and the
+/// last good state keeps rendering.
+unsigned runWatch(WatchOptions O, const Layout &Initial);
+
+} // namespace texrender
+
+#endif
