@@ -15,3 +15,9 @@ float roughAlong(float3 p, float lo, float hi) {
 float3 wavyNormal(float3 n, float3 p, float amp, float freq) {
   return normalize(n + amp * (float3)(sin(freq * p.x), sin(freq * p.y), cos(freq * p.z)));
 }
+
+/* n * s: with s = -1 a normal below the surface, with s = 0 a zero one. */
+float3 scaledNormal(float3 n, float s) { return n * s; }
+
+/* n * sqrt(x): NaN for x < 0. */
+float3 nanNormal(float3 n, float x) { return n * sqrt(x); }
