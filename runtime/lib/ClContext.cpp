@@ -1,5 +1,6 @@
 #include "texrender/ClContext.h"
 #include "texrender/Error.h"
+#include "texcc/Support/AtomicWrite.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -177,13 +178,11 @@ void ClContext::storeBinary(cl::Program &P, const std::string &Path) {
       return;
     std::error_code EC;
     fs::create_directories(fs::path(Path).parent_path(), EC);
-    // Unique per process and thread: a background build may store while the main thread does.
-    std::string Tmp = Path + ".tmp" + std::to_string(::getpid()) + "." +
-                      std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
-    std::ofstream Out(Tmp, std::ios::binary);
-    Out.write(reinterpret_cast<const char *>(Bins[0].data()), Bins[0].size());
-    Out.close();
-    fs::rename(Tmp, Path, EC);
+    // A temporary per write: a background build may store while the main thread does.
+    std::string Ignored;
+    texcc::writeFileAtomically(
+        Path, std::string(reinterpret_cast<const char *>(Bins[0].data()), Bins[0].size()),
+        Ignored);
   } catch (const cl::Error &) {
     // The cache is an optimisation: a device without binaries still renders.
   }

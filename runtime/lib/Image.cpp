@@ -1,5 +1,6 @@
 #include "texrender/Image.h"
 #include "texcc/StaleTemporaries.h"
+#include "texcc/Support/AtomicWrite.h"
 #include "texcc/Support/File.h"
 #include "texrender/Error.h"
 
@@ -92,24 +93,12 @@ ImageRGBA loadExr(const std::string &Path) {
 
 void writeAtomically(const std::string &Path,
                      const std::function<void(const std::string &)> &Write) {
-  namespace fs = std::filesystem;
-  fs::path Target(Path);
-  fs::path Temp = Target.parent_path() /
-                  ("." + Target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  std::filesystem::path Target(Path);
   texcc::removeStaleTemporaries(Target.parent_path().string(), {Target.filename().string()});
-  std::error_code Ignored;
-  try {
-    Write(Temp.string());
-  } catch (...) {
-    fs::remove(Temp, Ignored);
-    throw;
-  }
-  std::error_code EC;
-  fs::rename(Temp, Target, EC);
-  if (EC) {
-    fs::remove(Temp, Ignored);
-    throw Error(Path + ": cannot write: " + EC.message());
-  }
+  std::string Why;
+  if (!texcc::writeAtomicallyWith(
+          Path, [&](const std::string &Temp, std::string &) { Write(Temp); return true; }, Why))
+    throw Error(Path + ": cannot write: " + Why);
 }
 
 std::string readWholeFile(const std::string &Path, const std::string &What) {

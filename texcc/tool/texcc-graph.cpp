@@ -5,6 +5,7 @@
 // OUTDIR/args.bin, each atomically (a temporary file, then a rename).
 
 #include "texcc/Graph/Compile.h"
+#include "texcc/Support/AtomicWrite.h"
 #include "texcc/Support/File.h"
 #include "texcc/Version.h"
 
@@ -29,27 +30,6 @@ struct Options {
   unsigned StackLimit = 32;
   bool Verbose = false;
 };
-
-bool writeAtomically(const fs::path &Path, const void *Data, size_t Size, std::string &Error) {
-  fs::path Tmp = Path;
-  Tmp += ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream Out(Tmp, std::ios::binary | std::ios::trunc);
-    Out.write(static_cast<const char *>(Data), static_cast<std::streamsize>(Size));
-    if (!Out.flush()) {
-      Error = "cannot write '" + Tmp.string() + "'";
-      return false;
-    }
-  }
-  std::error_code EC;
-  fs::rename(Tmp, Path, EC);
-  if (EC) {
-    fs::remove(Tmp, EC);
-    Error = "cannot rename to '" + Path.string() + "'";
-    return false;
-  }
-  return true;
-}
 
 bool parseUnsigned(const std::string &S, unsigned &Out) {
   if (S.empty() || S.find_first_not_of("0123456789") != std::string::npos || S.size() > 9)
@@ -116,12 +96,16 @@ int parseOptions(int Argc, char **Argv, Options &O) {
 int writeOutputs(const CompiledGraph &CG, const std::string &OutDir) {
   std::error_code EC;
   fs::create_directories(OutDir, EC);
-  std::string Layout = layoutJson(CG), Error;
-  if (!writeAtomically(fs::path(OutDir) / "layout.json", Layout.data(), Layout.size(), Error) ||
-      !writeAtomically(fs::path(OutDir) / "args.bin", CG.ArgsBin.data(), CG.ArgsBin.size(),
-                       Error)) {
-    std::cerr << "texcc-graph: error: " << Error << "\n";
-    return 1;
+  const std::pair<std::string, std::string> Files[] = {
+      {"layout.json", layoutJson(CG)},
+      {"args.bin", std::string(CG.ArgsBin.begin(), CG.ArgsBin.end())}};
+  for (const auto &[Name, Contents] : Files) {
+    const std::string Path = (fs::path(OutDir) / Name).string();
+    std::string Why;
+    if (!texcc::writeFileAtomically(Path, Contents, Why)) {
+      std::cerr << "texcc-graph: error: cannot write '" << Path << "': " << Why << "\n";
+      return 1;
+    }
   }
   return 0;
 }

@@ -1,5 +1,5 @@
-// Stale output temporaries (see StaleTemporaries.h). In the graph library because that is the
-// LLVM-free library both texcc and texrender link.
+// Stale output temporaries (see StaleTemporaries.h). In the support library, which texcc and
+// texrender both link.
 #include "texcc/StaleTemporaries.h"
 
 #include <cerrno>
@@ -18,7 +18,12 @@ void removeStaleTemporaries(const std::string &Dir, const std::vector<std::strin
       for (const std::string &Prefix : {"." + N + ".tmp", "." + N + ".old.tmp"}) {
         if (Name.compare(0, Prefix.size(), Prefix) != 0)
           continue;
-        const std::string Pid = Name.substr(Prefix.size());
+        // "<pid>", or "<pid>.<n>" (writeAtomicallyWith's further writes of one process).
+        const std::string Rest = Name.substr(Prefix.size());
+        const std::string Pid = Rest.substr(0, Rest.find('.'));
+        const std::string Count = Rest.size() > Pid.size() ? Rest.substr(Pid.size() + 1) : "0";
+        if (Count.empty() || Count.find_first_not_of("0123456789") != std::string::npos)
+          continue;
         if (Pid.empty() || Pid.size() > 9 || Pid.find_first_not_of("0123456789") != std::string::npos)
           continue;
         if (::kill(static_cast<pid_t>(std::stol(Pid)), 0) != 0 && errno == ESRCH) {
