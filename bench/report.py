@@ -652,21 +652,23 @@ def ao_section(d):
     lines = ["## 6. Parallel AO", ""]
     if not d:
         return lines + ["Not measured yet: run `bench/run --only ao`.", ""]
-    lines += ["`bench/ao.py` (`%s`, %s, 5-minute load average %.1f on 2 cores): the atrium with rust (its mask reads AO), %s, 1 spp, "
-              "rendered with texrender's default AO (`ao_trace`: one work-item per AO ray, every "
-              "ray of every hit in one launch, then `ao_reduce`) and with `--ao-method=loop` "
-              "(`ao_loop`: one work-item per hit looping over its rays, the design the paper "
-              "argues against). Same rays: the images are compared bit for bit. %d repetitions, "
-              "alternating which method goes first; AO time is the device time of the AO "
-              "kernels (OpenCL profiling), medians; the ratio is taken per repetition."
+    lines += ["`bench/ao.py` (`%s`, %s, 5-minute load average %.1f on 2 cores): the atrium with "
+              "rust (its mask reads AO), %s, 1 spp, per trace backend: parallel AO (`embree`: "
+              "`ao_rays` makes every AO ray of every hit, one Embree stream traces them, "
+              "`ao_reduce` averages; `opencl`: `ao_trace`, one work-item per AO ray, then "
+              "`ao_reduce`) against `--ao-method=loop` (`ao_loop`: one OpenCL work-item per hit "
+              "looping over its rays, the design the paper argues against). Same rays: the "
+              "images are compared bit for bit. %d repetitions, alternating which method goes "
+              "first; AO time is the AO stages' time (OpenCL profiling; the Embree stage's wall "
+              "time), medians; the ratio is taken per repetition."
               % (d["command"], d["date"], d["loadAverage"], d["size"], d["repetitions"]), "",
-              "| AO rays per hit | AO rays traced | parallel: AO kernels | loop: AO kernels "
-              "| loop / parallel | frame, parallel | frame, loop | same image |",
-              "|---|---|---|---|---|---|---|---|"]
+              "| trace | AO rays per hit | AO rays traced | parallel: AO stages | loop: AO "
+              "kernel | loop / parallel | frame, parallel | frame, loop | same image |",
+              "|---|---|---|---|---|---|---|---|---|"]
     for r in d["rows"]:
-        lines.append("| %d | %d | %s s | %s s | **%.2fx** | %s s | %s s | %s |" % (
-            r["aoSamples"], r["aoRays"], fmt(r["parallelAoSeconds"]), fmt(r["loopAoSeconds"]),
-            r["ratioLoopOverParallel"], fmt(r["parallelRenderSeconds"]),
+        lines.append("| %s | %d | %d | %s s | %s s | **%.2fx** | %s s | %s s | %s |" % (
+            r.get("trace", "opencl"), r["aoSamples"], r["aoRays"], fmt(r["parallelAoSeconds"]),
+            fmt(r["loopAoSeconds"]), r["ratioLoopOverParallel"], fmt(r["parallelRenderSeconds"]),
             fmt(r["loopRenderSeconds"]), same_image(r["exact"])))
     ratios = [r["ratioLoopOverParallel"] for r in d["rows"]]
     verdict = ("the parallel launch is faster at every setting measured"
@@ -760,7 +762,7 @@ def tail_sections():
                        ("bench/frontend-speed.md", "texcc front-end speed"),
                        ("bench/farm.md", "Ray farm: per-task overhead, 1 vs 2 workers (`bench/farm.py`)"),
                        ("bench/loop-budget.md", "cost of texcc's loop budget per hit (`bench/per_hit.py`, checked against `--no-checks`)"),
-                       ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`, `bench/ao_embree.py`)")):
+                       ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`; its AO figure is now `bench/ao.py`)")):
         if os.path.exists(os.path.join(common.ROOT, name)):
             lines.append("- [%s](%s): %s" % (name, name, text))
     return lines + [""]
