@@ -233,14 +233,16 @@ def texrender_once(tools, inputs, variant, trace, size, spp, name, exr=False, se
             "textureSeconds": common.texture_kernel_seconds(stats)}, img
 
 
-def frame_times(tools, cyc, blends, inputs, size, spps, reps, checkpoint):
+def frame_times(tools, cyc, blends, inputs, size, spps, reps, checkpoint, variants, renderers):
     w, h = (int(x) for x in size.split("x"))
-    configs = [(v, r) for v in VARIANTS for r in RENDERERS]
+    configs = [(v, r) for v in variants for r in renderers]
     runs = {str(spp): {"%s/%s" % c: [] for c in configs} for spp in spps}
     loads = []
-    fixed = {v: [] for v in VARIANTS}
-    for v in VARIANTS:  # warm: kernels built, caches filled; Cycles' fixed part (sync + BVH)
-        for r in RENDERERS[1:]:
+    fixed = {v: [] for v in variants}
+    for v in variants:  # warm: kernels built, caches filled; Cycles' fixed part (sync + BVH)
+        for r in renderers:
+            if r == "cycles":
+                continue
             texrender_once(tools, inputs, v, r.split("-")[1], size, 1, "warm")
         cyc.call(op="render", blend=blends[v], size=[w, h], spp=1)
         for _ in range(3):
@@ -271,9 +273,13 @@ def summarize(runs, fixed):
         return table
     for spp, cfgs in runs.items():
         for r in RENDERERS:
+            if "diffuse/" + r not in cfgs:
+                continue
             key = "render" if r == "cycles" else "frame"
             base = [s[key] for s in cfgs["diffuse/" + r]]
             for v in VARIANTS:
+                if "%s/%s" % (v, r) not in cfgs:
+                    continue
                 times = [s[key] for s in cfgs["%s/%s" % (v, r)]]
                 row = {"spp": int(spp), "renderer": r, "variant": v,
                        "median": common.median(times), "raw": times,
@@ -321,7 +327,7 @@ CHECKPOINTS = True  # bench.py passes a checkpoint callback
 
 
 def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size=None,
-            agree_spp=None, agree=True):
+            agree_spp=None, agree=True, variants=VARIANTS, renderers=RENDERERS):
     """save(data) is called after every repetition with what is measured so far."""
     ensure_bpy()
     size = size or ("128x128" if quick else "512x512")
@@ -347,7 +353,7 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
                 save(dict(data))
 
         runs, fixed, loads = frame_times(tools, cyc, blends, inputs, size, spps, reps,
-                                         checkpoint)
+                                         checkpoint, variants, renderers)
         checkpoint(runs, fixed, loads)
     finally:
         cyc.close()
@@ -366,22 +372,49 @@ def main():
     ap.add_argument("--agree-size")
     ap.add_argument("--agree-spp", type=int)
     ap.add_argument("--no-agree", action="store_true")
+    ap.add_argument("--variants", default=",".join(VARIANTS),
+                    help="subset of %s (diffuse is needed for the overheads)" % ",".join(VARIANTS))
+    ap.add_argument("--renderers", default=",".join(RENDERERS))
+    ap.add_argument("--merge", action="store_true",
+                    help="add these rows to bench/results/cycles.json (replacing rows of the "
+                    "same spp), e.g. a second run at another spp with a subset")
     ap.add_argument("--out", help="result file (default bench/results/cycles.json)")
     args = ap.parse_args()
+    variants, renderers = args.variants.split(","), args.renderers.split(",")
+    if "diffuse" not in variants or not set(variants) <= set(VARIANTS) or \
+            not set(renderers) <= set(RENDERERS):
+        ap.error("--variants must include diffuse; names from %s and %s" % (VARIANTS, RENDERERS))
+    base = common.load("cycles") if args.merge else None
     tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-cycles-"))
     t0 = time.perf_counter()
 
     def save(data, complete=False):
+        if base:
+            spps = {r["spp"] for r in data.get("rows", [])}
+            part = {k: data.get(k) for k in ("size", "spps", "repetitions", "cyclesFixedSeconds",
+                                              "loadAverage1min", "loadAverageBefore")}
+            part.update({"command": "python3 bench/cycles.py " + " ".join(sys.argv[1:]),
+                         "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+                         "complete": complete})
+            merged = dict(base)
+            merged["rows"] = [r for r in base["rows"] if r["spp"] not in spps] + data.get("rows", [])
+            merged["runs"] = dict(base["runs"], **data.get("runs", {}))
+            merged["parts"] = [p for p in base.get("parts", []) if p["command"] != part["command"]] + [part]
+            merged["spps"] = sorted({r["spp"] for r in merged["rows"]})
+            common.save("cycles", merged, args.out)
+            return
         data.update({"complete": complete, "quick": args.quick,
                      "seconds": time.perf_counter() - t0,
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "git": common.git_head(),
-                     "command": "python3 " + " ".join(sys.argv)})
+                     "loadAverage": os.getloadavg()[1], "build": os.path.relpath(
+                         tools.build, common.ROOT),
+                     "command": "python3 bench/cycles.py " + " ".join(sys.argv[1:])})
         common.save("cycles", data, args.out)
 
     data = measure(tools, args.quick, save, args.size,
                    [int(s) for s in args.spp.split(",")] if args.spp else None, args.reps,
-                   args.agree_size, args.agree_spp, not args.no_agree)
+                   args.agree_size, args.agree_spp, not args.no_agree, variants, renderers)
     save(data, True)
 
 

@@ -704,7 +704,15 @@ def cycles_section(d):
                   d["cyclesMaxBounces"], d["repetitions"], min(loads), max(loads),
                   "" if d.get("complete", True) else " (run cut short: only the rows below)",
                   min(d["cyclesFixedSeconds"].values()), max(d["cyclesFixedSeconds"].values())),
-              "", "| spp | variant | Cycles | Cycles less fixed | texrender auto (Embree) | "
+              ""]
+    for part in d.get("parts", []):
+        pl = part.get("loadAverage1min") or [0.0]
+        lines += ["Added by `%s` (%s, %s, %d repetitions, 1-minute load %.1f-%.1f%s): its rows "
+                  "replace the first run's at %s spp." % (
+                      part["command"], part["date"], part["size"], part["repetitions"], min(pl),
+                      max(pl), "" if part.get("complete") else ", cut short",
+                      ", ".join(str(x) for x in part["spps"])), ""]
+    lines += ["| spp | variant | Cycles | Cycles less fixed | texrender auto (Embree) | "
               "texrender opencl | auto / Cycles | auto / Cycles less fixed | overhead over diffuse: "
               "Cycles | auto | opencl |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     rows = {(r["spp"], r["renderer"], r["variant"]): r for r in d["rows"]}
@@ -712,14 +720,14 @@ def cycles_section(d):
         for v in ("diffuse", "rust-model", "rust-all", "scratches-model"):
             c, a, o = (rows.get((spp, n, v)) for n in ("cycles", "texrender-auto",
                                                       "texrender-opencl"))
-            if not (c and a and o):
+            if not (c and a):
                 continue
-            lines.append("| %d | %s | %.2f s | %.2f s | %.2f s | %.2f s | **%.2fx** | %.2fx | %s | "
+            lines.append("| %d | %s | %.2f s | %.2f s | %.2f s | %s | **%.2fx** | %.2fx | %s | "
                          "%s | %s |"
                          % (spp, v, c["median"], c["medianWithoutFixed"], a["median"],
-                            o["median"], a["overCyclesRender"], a["overCyclesFrame"],
-                            pct(c["overheadPercent"]),
-                            pct(a["overheadPercent"]), pct(o["overheadPercent"])))
+                            "%.2f s" % o["median"] if o else "not run", a["overCyclesRender"],
+                            a["overCyclesFrame"], pct(c["overheadPercent"]),
+                            pct(a["overheadPercent"]), pct(o["overheadPercent"]) if o else "-"))
     top = max(r["spp"] for r in d["rows"])
     lines += ["", "Where texrender's time goes at %d spp (median stage seconds, stats.json; the "
               "Embree stages are wall time, the OpenCL ones device time):" % top, ""]
