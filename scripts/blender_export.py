@@ -553,24 +553,27 @@ class Export:
             files = []
             for slot in sorted(set(mi.tolist())):
                 pick = mi == slot
-                verts, vinv = np.unique(tv[pick], return_inverse=True)
-                loops, linv = np.unique(tl[pick], return_inverse=True)
-                vinv, linv = vinv.reshape(-1, 3) + 1, linv.reshape(-1, 3) + 1
+                corners = tl[pick].reshape(-1)
+                # Each position, normal and UV once (smooth meshes share them between corners).
+                verts, vidx = np.unique(tv[pick].reshape(-1), return_inverse=True)
+                vn, nidx = np.unique(normals[corners], axis=0, return_inverse=True)
+                columns = [vidx.reshape(-1) + 1]
+                if uv is not None:
+                    vt, tidx = np.unique(uv[corners], axis=0, return_inverse=True)
+                    columns.append(tidx.reshape(-1) + 1)
+                columns.append(nidx.reshape(-1) + 1)
+                corner = np.stack(columns, axis=1).reshape(-1, 3 * len(columns)).tolist()
+                face = "f " + " ".join(["/".join(["%d"] * 3) if uv is not None
+                                        else "%d//%d"] * 3) + "\n"
                 name = self.unique_file("%s.%d" % (file_name(obj_eval.name), slot), ".obj")
                 with open(os.path.join(directory, name), "w") as f:
                     f.write("# %s, material slot %d (blender_export.py)\n" % (obj_eval.name,
                                                                             slot))
-                    f.write("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in co[verts]))
-                    f.write("".join("vn %.7g %.7g %.7g\n" % tuple(n) for n in normals[loops]))
+                    f.write("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in co[verts].tolist()))
+                    f.write("".join("vn %.7g %.7g %.7g\n" % tuple(n) for n in vn.tolist()))
                     if uv is not None:
-                        f.write("".join("vt %.7g %.7g\n" % tuple(t) for t in uv[loops]))
-                        f.write("".join("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (
-                            a, x, x, b, y, y, c, z, z) for (a, b, c), (x, y, z) in
-                            zip(vinv.tolist(), linv.tolist())))
-                    else:
-                        f.write("".join("f %d//%d %d//%d %d//%d\n" % (a, x, b, y, c, z)
-                                        for (a, b, c), (x, y, z) in
-                                        zip(vinv.tolist(), linv.tolist())))
+                        f.write("".join("vt %.7g %.7g\n" % tuple(t) for t in vt.tolist()))
+                    f.write("".join(face % tuple(c) for c in corner))
                 files.append((name, slot))
             return files
         finally:
