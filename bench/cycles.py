@@ -308,17 +308,33 @@ def summarize(runs, fixed):
     return table
 
 
-def agreement(tools, cyc, blends, inputs, size, spp):
+def exported(tools, blend, name):
+    """texrender's side of a Blender variant through engineer E's exporter: (scene, textures)."""
+    out = os.path.join(tools.work, "export-" + name)
+    common.run([VENV_PYTHON, os.path.join(common.ROOT, "scripts", "blender_export.py"), blend,
+                "-o", out])
+    common.run([tools.texcc, "--graph", os.path.join(out, "graph.json"), "-o", out + "-tex"])
+    return os.path.join(out, "scene.json"), out + "-tex"
+
+
+def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",)):
+    """which: variants; diffuse uses texrender's own scene, the others the scene and graph the
+    exporter (scripts/blender_export.py) makes from the same .blend Cycles renders."""
     w, h = (int(x) for x in size.split("x"))
     mask = os.path.join(tools.work, "agree-mask.exr")
     cyc.call(op="mask", blend=blends["diffuse"], size=[w, h], spp=16, exr=mask)
     out = {}
-    for v in ("diffuse",):
+    for v in which:
         cexr = os.path.join(tools.work, "agree-cycles-%s.exr" % v)
         t = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, exr=cexr)["seconds"]
-        r, texr = texrender_once(tools, inputs, v, "auto", size, spp, "agree-" + v, exr=True)
+        own = dict(inputs)
+        if v != "diffuse":
+            own[v] = exported(tools, blends[v], v)
+        r, texr = texrender_once(tools, own, v, "auto", size, spp, "agree-" + v, exr=True)
         res = cyc.call(op="analyze", a=cexr, b=texr, mask=mask)
-        res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"]})
+        res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"], "size": size,
+                    "spp": spp, "texrenderInput": "texrender's own scene" if v == "diffuse"
+                    else "exported by scripts/blender_export.py"})
         out[v] = res
     return out
 
@@ -327,7 +343,8 @@ CHECKPOINTS = True  # bench.py passes a checkpoint callback
 
 
 def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size=None,
-            agree_spp=None, agree=True, variants=VARIANTS, renderers=RENDERERS):
+            agree_spp=None, agree=True, variants=VARIANTS, renderers=RENDERERS,
+            agree_variants=("diffuse",)):
     """save(data) is called after every repetition with what is measured so far."""
     ensure_bpy()
     size = size or ("128x128" if quick else "512x512")
@@ -343,7 +360,8 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
             asize = agree_size or ("64x64" if quick else "256x256")
             aspp = agree_spp or (16 if quick else 256)
             data["agreement"] = {"size": asize, "spp": aspp, "loadAverage": os.getloadavg(),
-                                 "results": agreement(tools, cyc, blends, inputs, asize, aspp)}
+                                 "results": agreement(tools, cyc, blends, inputs, asize, aspp,
+                                                      agree_variants)}
 
         def checkpoint(runs, fixed, loads):
             data.update({"cyclesFixedSeconds": fixed, "rows": summarize(runs, fixed),
@@ -372,6 +390,9 @@ def main():
     ap.add_argument("--agree-size")
     ap.add_argument("--agree-spp", type=int)
     ap.add_argument("--no-agree", action="store_true")
+    ap.add_argument("--agree-variants", default="diffuse",
+                    help="variants of the image agreement; other than diffuse, texrender renders "
+                    "what scripts/blender_export.py exports from the same .blend")
     ap.add_argument("--variants", default=",".join(VARIANTS),
                     help="subset of %s (diffuse is needed for the overheads)" % ",".join(VARIANTS))
     ap.add_argument("--renderers", default=",".join(RENDERERS))
@@ -399,6 +420,10 @@ def main():
             merged = dict(base)
             merged["rows"] = [r for r in base["rows"] if r["spp"] not in spps] + data.get("rows", [])
             merged["runs"] = dict(base["runs"], **data.get("runs", {}))
+            if data.get("agreement"):
+                ag = dict(base.get("agreement") or {"results": {}})
+                ag["results"] = dict(ag["results"], **data["agreement"]["results"])
+                merged["agreement"] = ag
             merged["parts"] = [p for p in base.get("parts", []) if p["command"] != part["command"]] + [part]
             merged["spps"] = sorted({r["spp"] for r in merged["rows"]})
             common.save("cycles", merged, args.out)
@@ -414,7 +439,8 @@ def main():
 
     data = measure(tools, args.quick, save, args.size,
                    [int(s) for s in args.spp.split(",")] if args.spp else None, args.reps,
-                   args.agree_size, args.agree_spp, not args.no_agree, variants, renderers)
+                   args.agree_size, args.agree_spp, not args.no_agree, variants, renderers,
+                   args.agree_variants.split(","))
     save(data, True)
 
 

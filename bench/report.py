@@ -744,17 +744,19 @@ def cycles_section(d):
                                                ", ".join("%.2f" % t for t in r["raw"])))
     ag = d.get("agreement")
     if ag:
-        lines += ["", "Image agreement, diffuse (the one variant with the same materials in both "
-                  "renderers), %s at %d spp each: mean linear RGB, texrender relative to Cycles, "
-                  "per region (model: pixels wholly on the gears; rest: pixels wholly off them), "
-                  "and HDR-FLIP between the two images (noise included)." % (ag["size"],
-                                                                              ag["spp"]), "",
-                  "| variant | region | pixels | Cycles RGB | texrender RGB | difference | FLIP |",
-                  "|---|---|---|---|---|---|---|"]
+        lines += ["", "Image agreement: each renderer at high spp; mean linear RGB, texrender "
+                  "relative to Cycles, per region (model: pixels wholly on the gears; rest: "
+                  "pixels wholly off them), and mean HDR-FLIP between the two images (noise "
+                  "included). Diffuse: texrender's own atrium scene; rust and scratches: what "
+                  "`scripts/blender_export.py` exports from the very .blend Cycles renders "
+                  "(the Blender node trees through textures/blender/).", "",
+                  "| variant | size, spp | region | pixels | Cycles RGB | texrender RGB | "
+                  "difference | FLIP |", "|---|---|---|---|---|---|---|---|"]
         for v, res in ag["results"].items():
             for name, g in res["regions"].items():
-                lines.append("| %s | %s | %d | %s | %s | %s | %s |" % (
-                    v, name, g["pixels"], ", ".join("%.4f" % x for x in g["a"]),
+                lines.append("| %s | %s, %d | %s | %d | %s | %s | %s | %s |" % (
+                    v, res.get("size", ag.get("size")), res.get("spp", ag.get("spp")), name,
+                    g["pixels"], ", ".join("%.4f" % x for x in g["a"]),
                     ", ".join("%.4f" % x for x in g["b"]),
                     ", ".join(pct(x) for x in g["relDiffPercent"]), fmt(res.get("flip"))))
     return lines + [""]
