@@ -1,6 +1,7 @@
 #include "texrender/ClContext.h"
 #include "texrender/Error.h"
 #include "texcc/Support/AtomicWrite.h"
+#include "texcc/Support/File.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -137,9 +138,9 @@ cl::Program ClContext::buildProgram(const std::string &Name, const std::string &
                                     bool Background) {
   std::string Path = cachePath(cacheKey(Source, Options, KeyExtra));
   if (!Path.empty() && fs::exists(Path)) {
-    std::ifstream In(Path, std::ios::binary);
-    std::vector<unsigned char> Bin((std::istreambuf_iterator<char>(In)),
-                                   std::istreambuf_iterator<char>());
+    std::string Text, Why;
+    texcc::readRegularFile(Path, Text, Why); // unreadable: empty, built from source below
+    std::vector<unsigned char> Bin(Text.begin(), Text.end());
     try {
       cl::Program::Binaries Bins{Bin};
       cl::Program P(Ctx, {Device}, Bins);
