@@ -92,7 +92,7 @@ static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, flo
  * subsurface, anisotropy; specular tint white). Two layers mixed by metallic m:
  *   dielectric: a Lambertian base (baseColor) under a GGX specular layer of F0 = 0.08 *
  *     specular (IOR level 0.5: IOR 1.5, F0 0.04), Schlick Fresnel; the base gets what the
- *     specular layer does not reflect, approximated by 1 - F(cos wo);
+ *     specular layer does not reflect at wo, 1 - its albedo (rt_principled_at_wo);
  *   metal: a GGX lobe with Schlick Fresnel of F0 = baseColor (F82 tint white = Schlick).
  * Both specular lobes share one GGX distribution (alpha = roughness^2), so sampling picks the
  * diffuse lobe or the GGX lobe by their estimated albedos at wo, and the pdf is the mixture's
@@ -111,25 +111,43 @@ static inline float rt_schlick1(float f0, float cosD) {
   return f0 + (1.0f - f0) * m5;
 }
 
-/* The directional albedo of the GGX lobe (Fresnel 1) at wo: rt_ggx_albedo.h, bilinear. */
-static inline float rt_ggx_albedo(float roughness, float cosO) {
+/* A table of rt_ggx_albedo.h at (roughness, cos wo), bilinear. */
+static inline float rt_ggx_table(__constant const float *t, float roughness, float cosO) {
   const int n = RT_GGX_ALBEDO_N;
   float x = clamp(cosO * n - 0.5f, 0.0f, (float)(n - 1));
   float y = clamp(roughness, 0.0f, 1.0f) * (float)(n - 1);
   int i0 = (int)x, j0 = (int)y;
   int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
   float fx = x - (float)i0, fy = y - (float)j0;
-  float e0 = mix(rt_ggx_albedo_table[j0 * n + i0], rt_ggx_albedo_table[j0 * n + i1], fx);
-  float e1 = mix(rt_ggx_albedo_table[j1 * n + i0], rt_ggx_albedo_table[j1 * n + i1], fx);
-  return fmax(mix(e0, e1, fy), 1e-3f);
+  float e0 = mix(t[j0 * n + i0], t[j0 * n + i1], fx);
+  float e1 = mix(t[j1 * n + i0], t[j1 * n + i1], fx);
+  return mix(e0, e1, fy);
+}
+
+/* What principled needs at wo: the multiple-scattering factor (1 - E) / E of its GGX lobes,
+ * and the albedo of its dielectric specular layer (multiple scattering included), which the
+ * diffuse base under it does not get. */
+typedef struct RtPrincipledAtWo {
+  float ms;
+  float dielectricAlbedo;
+} RtPrincipledAtWo;
+
+static inline RtPrincipledAtWo rt_principled_at_wo(RtPrincipled P, float cosO) {
+  RtPrincipledAtWo w;
+  float e = fmax(rt_ggx_table(rt_ggx_albedo_table, P.roughness, cosO), 1e-3f);
+  float sch = rt_ggx_table(rt_ggx_schlick_table, P.roughness, cosO);
+  w.ms = (1.0f - e) / e;
+  float favg = P.f0 + (1.0f - P.f0) / 21.0f;
+  w.dielectricAlbedo = clamp((P.f0 * (e - sch) + sch) * (1.0f + favg * w.ms), 0.0f, 1.0f);
+  return w;
 }
 
 /* The probability of sampling the diffuse base at wo (the rest: the GGX lobe). */
-static inline float rt_principled_pdiffuse(RtPrincipled P, float cosO) {
-  float fo = rt_schlick1(P.f0, cosO);
+static inline float rt_principled_pdiffuse(RtPrincipled P, RtPrincipledAtWo w, float cosO) {
   float3 fm = rt_schlick(P.base, cosO);
-  float wd = (1.0f - P.metallic) * (1.0f - fo) * (P.base.x + P.base.y + P.base.z) / 3.0f;
-  float ws = (1.0f - P.metallic) * fo + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
+  float wd = (1.0f - P.metallic) * (1.0f - w.dielectricAlbedo) *
+             (P.base.x + P.base.y + P.base.z) / 3.0f;
+  float ws = (1.0f - P.metallic) * w.dielectricAlbedo + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
   return wd + ws > 0.0f ? wd / (wd + ws) : 0.5f;
 }
 
@@ -139,9 +157,10 @@ static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, flo
   *pdf = 0.0f;
   if (cosI <= 0.0f || cosO <= 0.0f)
     return (float3)(0.0f);
-  float pd = rt_principled_pdiffuse(P, cosO);
+  RtPrincipledAtWo w = rt_principled_at_wo(P, cosO);
+  float pd = rt_principled_pdiffuse(P, w, cosO);
   float dielectric = 1.0f - P.metallic;
-  float3 f = P.base * (dielectric * (1.0f - rt_schlick1(P.f0, cosO)) * RT_INV_PI);
+  float3 f = P.base * (dielectric * (1.0f - w.dielectricAlbedo) * RT_INV_PI);
   float specPdf = 0.0f;
   float a = rt_ggx_alpha(P.roughness);
   float a2 = a * a;
@@ -153,10 +172,8 @@ static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, flo
     float dg = d * rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2) / (4.0f * cosI * cosO);
     /* Multiple scattering: each specular lobe scaled by 1 + F_avg (1 - E) / E, with E the
      * lobe's albedo at wo and F_avg Schlick's hemispherical average, F0 + (1 - F0) / 21. */
-    float e = rt_ggx_albedo(P.roughness, cosO);
-    float ms = (1.0f - e) / e;
-    float fd = rt_schlick1(P.f0, cosD) * (1.0f + (P.f0 + (1.0f - P.f0) / 21.0f) * ms);
-    float3 fm = rt_schlick(P.base, cosD) * (1.0f + (P.base + (1.0f - P.base) / 21.0f) * ms);
+    float fd = rt_schlick1(P.f0, cosD) * (1.0f + (P.f0 + (1.0f - P.f0) / 21.0f) * w.ms);
+    float3 fm = rt_schlick(P.base, cosD) * (1.0f + (P.base + (1.0f - P.base) / 21.0f) * w.ms);
     f += (dielectric * fd + P.metallic * fm) * dg;
   }
   *pdf = pd * cosI * RT_INV_PI + (1.0f - pd) * specPdf;
@@ -169,7 +186,7 @@ static inline float3 rt_principled_sample(RtPrincipled P, float3 n, float3 wo, f
   float cosO = dot(wo, n);
   if (cosO <= 0.0f)
     return (float3)(0.0f);
-  float pd = rt_principled_pdiffuse(P, cosO);
+  float pd = rt_principled_pdiffuse(P, rt_principled_at_wo(P, cosO), cosO);
   if (u1 < pd) {
     u1 = u1 / pd;
     *wi = rt_to_world(rt_sample_cosine(u1, u2), n);

@@ -8,9 +8,10 @@
                                     sphere) and whether it meets the material's expectation
 
 Under a uniform sky of radiance 1 a convex object's pixel shows its directional albedo at
-the view direction. So every material must be <= 1 (energy conservation), a white metal ~1
-at every roughness (Fresnel of F0 = 1 is 1, and the multiple-scattering compensation gives
-back what single-scattering GGX loses: within 1.5%, 1% when smooth), and a
+the view direction. So every material must be <= 1 (energy conservation), a white one ~1 at
+every metallic and roughness (a white metal's Fresnel is 1 and the multiple-scattering
+compensation gives back what single-scattering GGX loses; a white dielectric's base gets what
+its specular layer does not reflect: within 1.5%, 1% for a smooth metal), and a
 principled dielectric with specular 0 is a Lambertian base: exactly its base color.
 """
 import json
@@ -25,12 +26,14 @@ MATERIALS = {}
 for m in (0.0, 0.5, 1.0):
     for r in (0.0, 0.3, 0.6, 1.0):
         name = "m%g_r%g" % (m, r)
-        # a white metal keeps its energy at every roughness (multiple-scattering
-        # compensation; single-scattering GGX alone returns 0.31 at roughness 1)
+        # white keeps its energy at every roughness: the metal by the multiple-scattering
+        # compensation (single-scattering GGX alone returns 0.31 at roughness 1), the
+        # dielectric by giving the base exactly what the specular layer does not reflect
+        # (1 - F(cos wo) instead returned 0.971 at roughness 1)
         MATERIALS[name] = ({"baseColor": [1, 1, 1], "metallic": m, "roughness": r},
-                           ("near", 1.0, 0.015) if m == 1.0 else ("le", 1.0))
+                           ("near", 1.0, 0.015))
 MATERIALS["spec1_r0.2"] = ({"baseColor": [1, 1, 1], "metallic": 0.0, "roughness": 0.2,
-                            "specular": 1.0}, ("le", 1.0))
+                            "specular": 1.0}, ("near", 1.0, 0.015))
 MATERIALS["black_spec1"] = ({"baseColor": [0, 0, 0], "specular": 1.0, "roughness": 0.3},
                             ("le", 1.0))
 MATERIALS["metal_smooth"] = ({"baseColor": [1, 1, 1], "metallic": 1.0, "roughness": 0.05},
