@@ -97,7 +97,7 @@ static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, flo
  * Both specular lobes share one GGX distribution (alpha = roughness^2), so sampling picks the
  * diffuse lobe or the GGX lobe by their estimated albedos at wo, and the pdf is the mixture's
  * (one-sample MIS over the lobes). The energy that single-scattering GGX loses is added back
- * by scaling (rt_ggx_albedo), as Cycles' multiscatter GGX keeps it. */
+ * by scaling (rt_ggx_albedo.h's tables), as Cycles' multiscatter GGX keeps it. */
 typedef struct RtPrincipled {
   float3 base;
   float roughness;
