@@ -27,6 +27,10 @@ typedef struct TexccGuard {
   __global int *fault;
   int line;     /* of the loop that spent the budget; 0: none did */
   uint lineAt;  /* at, when it did */
+  int badLine;  /* of the first __global array read out of bounds; 0: none was */
+  uint badAt;   /* at, when it was */
+  int badIndex; /* its index (clamped to the int range) */
+  uint badLength; /* and its array's length */
 } TexccGuard;
 
 typedef struct TexccCtx {
@@ -76,11 +80,50 @@ static inline bool texcc_loop_continues(const TexccCtx *c, int line) {
   return false;
 }
 
-/* At the end of the kernel: the work-item's fault, if any, into the fault record. */
+/* texcc turns every read `p[i]` of a __global array parameter into
+ * `texcc_read_T(texcc_ctx, p, (i), texcc_n_p, __LINE__)`, texcc_n_p being the array's length
+ * (a hidden parameter texcc adds). Out of range: 0, and the first such read's line, node, index
+ * and length are kept for texcc_report_fault (private stores only, as for loops). */
+static inline bool texcc_index_ok(const TexccCtx *c, long i, uint n, int line) {
+  if (!TEXCC_CHECKS || (ulong)i < (ulong)n)
+    return true;
+  TexccGuard *g = c->guard;
+  if (g->badLine == 0) {
+    g->badLine = line;
+    g->badAt = g->at;
+    g->badIndex = (int)clamp(i, (long)INT_MIN, (long)INT_MAX);
+    g->badLength = n;
+  }
+  return false;
+}
+#define TEXCC_CHECKED_READ(T)                                                                  \
+  static inline T texcc_read_##T(const TexccCtx *c, __global const T *p, long i, uint n,      \
+                                 int line) {                                                   \
+    return texcc_index_ok(c, i, n, line) ? p[i] : (T)(0);                                      \
+  }
+TEXCC_CHECKED_READ(float)
+TEXCC_CHECKED_READ(float2)
+TEXCC_CHECKED_READ(float3)
+TEXCC_CHECKED_READ(float4)
+TEXCC_CHECKED_READ(int)
+TEXCC_CHECKED_READ(int2)
+TEXCC_CHECKED_READ(int3)
+TEXCC_CHECKED_READ(int4)
+TEXCC_CHECKED_READ(uint)
+TEXCC_CHECKED_READ(uint2)
+TEXCC_CHECKED_READ(uint3)
+TEXCC_CHECKED_READ(uint4)
+#undef TEXCC_CHECKED_READ
+
+/* At the end of the kernel: the work-item's fault, if any, into the fault record (a loop past
+ * its budget first: its out-of-range reads may be a consequence). */
 static inline void texcc_report_fault(const TexccCtx *c) {
   if (TEXCC_CHECKS && c->guard->line != 0)
     texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, c->guard->line, c->guard->lineAt,
                 (int)TEXCC_LOOP_BUDGET, 0);
+  else if (TEXCC_CHECKS && c->guard->badLine != 0)
+    texcc_fault(c, TEXCC_FAULT_INDEX, c->guard->badLine, c->guard->badAt, c->guard->badIndex,
+                (int)c->guard->badLength);
 }
 
 /* readAttr("Name") lowers to texcc_attr_Name(texcc_ctx). */

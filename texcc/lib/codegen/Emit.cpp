@@ -207,12 +207,15 @@ std::string ArgEmitter::argument(const CompiledNode &N, unsigned NodeIndex,
                  : std::to_string(constantWord(N, A)) + "u";
   if (A.Type.IsGlobalArray) {
     if (Tgt == Target::Host)
-      return hostArrayName(NodeIndex, A);
+      return hostArrayName(NodeIndex, A) + ", " + std::to_string(A.ArrayCount) + "u";
     // Relative to a record, the elements' offset is the array's {byteOffset, count} word.
     std::string At =
         RecordWord ? "fakeStack[" + Word + "]" : std::to_string(A.ArrayByteOffset) + "u";
+    // Then the array's length, the hidden parameter that bounds-checks its reads (Safety.cpp).
+    std::string Length = RecordWord ? "fakeStack[" + Word + " + 1u]"
+                                    : std::to_string(A.ArrayCount) + "u";
     return "(__global const " + spelling(B) + " *)((__global const uchar *)fakeStack + " + At +
-           ")";
+           "), " + Length;
   }
   std::string E;
   switch (A.Src) {

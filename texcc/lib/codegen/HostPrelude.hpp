@@ -26,6 +26,7 @@
 #include <glm/ext/vector_int2.hpp>
 #include <glm/ext/vector_int3.hpp>
 #include <glm/ext/vector_int4.hpp>
+#include <climits>
 #include <glm/ext/vector_uint2.hpp>
 #include <glm/ext/vector_uint3.hpp>
 #include <glm/ext/vector_uint4.hpp>
@@ -320,6 +321,10 @@ struct TexccGuard {
   int *fault;
   int line;    // of the loop that spent the budget; 0: none did
   uint lineAt; // at, when it did
+  int badLine = 0; // of the first __global array read out of bounds (texcc_device.h)
+  uint badAt = 0u;
+  int badIndex = 0;
+  uint badLength = 0u;
 };
 
 struct TexccCtx {
@@ -356,10 +361,43 @@ inline bool texcc_loop_continues(const TexccCtx *c, int line) {
   return false;
 }
 
+inline bool texcc_index_ok(const TexccCtx *c, long long i, uint n, int line) {
+  if (!TEXCC_CHECKS || (i >= 0 && static_cast<unsigned long long>(i) < n))
+    return true;
+  TexccGuard *g = c->guard;
+  if (g->badLine == 0) {
+    g->badLine = line;
+    g->badAt = g->at;
+    g->badIndex = static_cast<int>(i < INT_MIN ? INT_MIN : i > INT_MAX ? INT_MAX : i);
+    g->badLength = n;
+  }
+  return false;
+}
+#define TEXCC_CHECKED_READ(T)                                                                  \
+  inline T texcc_read_##T(const TexccCtx *c, const T *p, long long i, uint n, int line) {     \
+    return texcc_index_ok(c, i, n, line) ? p[i] : T(0);                                        \
+  }
+TEXCC_CHECKED_READ(float)
+TEXCC_CHECKED_READ(float2)
+TEXCC_CHECKED_READ(float3)
+TEXCC_CHECKED_READ(float4)
+TEXCC_CHECKED_READ(int)
+TEXCC_CHECKED_READ(int2)
+TEXCC_CHECKED_READ(int3)
+TEXCC_CHECKED_READ(int4)
+TEXCC_CHECKED_READ(uint)
+TEXCC_CHECKED_READ(uint2)
+TEXCC_CHECKED_READ(uint3)
+TEXCC_CHECKED_READ(uint4)
+#undef TEXCC_CHECKED_READ
+
 inline void texcc_report_fault(const TexccCtx *c) {
   if (TEXCC_CHECKS && c->guard->line != 0)
     texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, c->guard->line, c->guard->lineAt,
                 static_cast<int>(TEXCC_LOOP_BUDGET), 0);
+  else if (TEXCC_CHECKS && c->guard->badLine != 0)
+    texcc_fault(c, TEXCC_FAULT_INDEX, c->guard->badLine, c->guard->badAt, c->guard->badIndex,
+                static_cast<int>(c->guard->badLength));
 }
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx

@@ -109,6 +109,24 @@ private:
   FileContext &FC;
 };
 
+/// Bounds-checks every read of a __global array parameter of user code (Safety.cpp): each
+/// such parameter `p` gets a hidden length parameter `texcc_n_p` right after it, `p[i]`
+/// becomes `texcc_read_T(texcc_ctx, p, (i), texcc_n_p, __LINE__)` (texcc_device.h: 0 and a
+/// fault when i is out of range), passing `p` to a user function passes its length too, and
+/// any other use of `p` (pointer arithmetic, `&p[i]`, `*p`) is an error at the user's line.
+class ArrayBounds : public MatchFinder::MatchCallback {
+public:
+  explicit ArrayBounds(FileContext &FC) : FC(FC) {}
+  void registerMatchers(MatchFinder &Finder);
+  void run(const MatchFinder::MatchResult &Result) override;
+
+private:
+  void checkUse(const clang::DeclRefExpr *Ref, const clang::ParmVarDecl *P,
+                clang::ASTContext &Ctx);
+  void refuse(clang::SourceLocation Loc, llvm::StringRef Name, llvm::StringRef Why);
+  FileContext &FC;
+};
+
 /// Refuses, at the user's line, a private array larger than MaxPrivateArrayBytes (the
 /// work-item's stack: PoCL's is a few MiB) and an unroll pragma (`#pragma unroll N`,
 /// `#pragma clang loop unroll_count(N)`) with N above MaxUnrollCount (the device build).

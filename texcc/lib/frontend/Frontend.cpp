@@ -127,6 +127,7 @@ void TexccConsumer::HandleTranslationUnit(ASTContext &Ctx) {
   Restrictions Restrict(FC);
   LoopBudget Loops(FC);
   ResourceLimits Limits(FC);
+  ArrayBounds Bounds(FC);
   MatchFinder Finder;
   Rename.registerMatchers(Finder);
   Lower.registerMatchers(Finder);
@@ -135,6 +136,7 @@ void TexccConsumer::HandleTranslationUnit(ASTContext &Ctx) {
   Restrict.registerMatchers(Finder);
   Loops.registerMatchers(Finder);
   Limits.registerMatchers(Finder);
+  Bounds.registerMatchers(Finder);
   Finder.matchAST(Ctx);
   Restrict.finish();
   Signatures.finish(*Job.TextureNames, Job.EarlierTextures, Job.Textures, Job.Reachable);

@@ -1,7 +1,7 @@
 // Safety of user code (docs/reliability.md "User code"): texcc knows every loop of the user's
 // textures, so it bounds them with the work-item's loop budget (texcc_device.h), and refuses
 // what would take the device compiler or the work-item's stack down: huge private arrays and
-// huge unroll counts.
+// huge unroll counts; it bounds-checks every read of a __global array parameter.
 #include "Callbacks.h"
 
 #include "clang/AST/Attr.h"
@@ -121,6 +121,164 @@ void LoopBudget::reportUnbounded(SourceLocation Loc) {
                                    "come from different macro expansions; spell the loop's head "
                                    "in one place");
   DE.Report(Loc, Id);
+}
+
+/// Whether P is a `__global T *` parameter (the arrays a texture gets from the fake stack).
+static bool isGlobalPointer(const ParmVarDecl *P) {
+  QualType T = P->getType();
+  return T->isPointerType() && T->getPointeeType().getAddressSpace() == LangAS::opencl_global;
+}
+
+/// The suffix of the checked read of P's elements (texcc_read_<suffix>, texcc_device.h), or ""
+/// for an element type that has none.
+static std::string elementName(const ParmVarDecl *P) {
+  QualType E = P->getType()->getPointeeType().getUnqualifiedType().getCanonicalType();
+  unsigned N = 1;
+  if (const auto *V = E->getAs<ExtVectorType>()) {
+    N = V->getNumElements();
+    E = V->getElementType().getCanonicalType();
+    if (N < 2 || N > 4)
+      return "";
+  }
+  std::string Base;
+  if (E->isSpecificBuiltinType(BuiltinType::Float))
+    Base = "float";
+  else if (E->isSpecificBuiltinType(BuiltinType::Int))
+    Base = "int";
+  else if (E->isSpecificBuiltinType(BuiltinType::UInt))
+    Base = "uint";
+  else
+    return "";
+  return N == 1 ? Base : Base + std::to_string(N);
+}
+
+static std::string lengthName(StringRef Param) { return "texcc_n_" + Param.str(); }
+
+void ArrayBounds::registerMatchers(MatchFinder &Finder) {
+  Finder.addMatcher(functionDecl().bind("fn"), this);
+  Finder.addMatcher(declRefExpr(to(parmVarDecl().bind("param"))).bind("ref"), this);
+}
+
+void ArrayBounds::refuse(SourceLocation Loc, StringRef Name, StringRef Why) {
+  DiagnosticsEngine &DE = FC.Ctx.getDiagnostics();
+  unsigned Id = DE.getCustomDiagID(DiagnosticsEngine::Error,
+                                   "cannot bounds-check __global array '%0' here: %1");
+  DE.Report(Loc, Id) << Name << Why;
+}
+
+void ArrayBounds::run(const MatchFinder::MatchResult &Result) {
+  if (const auto *Ref = Result.Nodes.getNodeAs<DeclRefExpr>("ref")) {
+    const auto *P = Result.Nodes.getNodeAs<ParmVarDecl>("param");
+    const auto *Fn = dyn_cast_or_null<FunctionDecl>(P->getDeclContext());
+    if (Fn && FC.isUserFunction(Fn) && isGlobalPointer(P))
+      checkUse(Ref, P, *Result.Context);
+    return;
+  }
+  const auto *Fn = Result.Nodes.getNodeAs<FunctionDecl>("fn");
+  if (!FC.isUserFunction(Fn))
+    return;
+  // Each __global pointer parameter takes its length along: `p` -> `p, uint texcc_n_p`.
+  for (const ParmVarDecl *P : Fn->parameters()) {
+    if (!isGlobalPointer(P))
+      continue;
+    if (elementName(P).empty()) {
+      refuse(P->getLocation(), P->getName(),
+             "its elements are " + P->getType()->getPointeeType().getAsString() +
+                 "; only float, int, uint and their vectors are checked");
+      continue;
+    }
+    if (!P->getName().empty()) {
+      if (!P->getLocation().isFileID()) {
+        refuse(P->getLocation(), P->getName(), "the parameter is declared by a macro");
+        continue;
+      }
+      FC.Edits.replaceToken(P->getLocation(),
+                            P->getName().str() + ", uint " + lengthName(P->getName()));
+      continue;
+    }
+    SourceLocation End = P->getEndLoc();
+    if (End.isInvalid() || !End.isFileID()) {
+      refuse(Fn->getLocation(), "(unnamed)", "the parameter is declared by a macro");
+      continue;
+    }
+    const LangOptions &LO = FC.Ctx.getLangOpts();
+    StringRef Text = Lexer::getSourceText(CharSourceRange::getTokenRange(End), FC.SM, LO);
+    FC.Edits.replaceToken(End, Text.str() + ", uint");
+  }
+}
+
+/// The parent of E, through implicit casts; null at the top.
+static const Stmt *parentOf(const Stmt *E, ASTContext &Ctx, const Stmt *&Child) {
+  Child = E;
+  while (true) {
+    auto Parents = Ctx.getParents(*Child);
+    if (Parents.empty())
+      return nullptr;
+    const Stmt *S = Parents[0].get<Stmt>();
+    if (!S)
+      return nullptr;
+    if (!isa<ImplicitCastExpr>(S))
+      return S;
+    Child = S;
+  }
+}
+
+void ArrayBounds::checkUse(const DeclRefExpr *Ref, const ParmVarDecl *P, ASTContext &Ctx) {
+  const StringRef Name = P->getName();
+  const SourceLocation Loc = Ref->getLocation();
+  if (!Loc.isFileID()) {
+    refuse(Loc, Name, "the array is used inside a macro; write the read outside the macro");
+    return;
+  }
+  const Stmt *Child = nullptr;
+  const Stmt *Parent = parentOf(Ref, Ctx, Child);
+  if (const auto *Index = dyn_cast_or_null<ArraySubscriptExpr>(Parent)) {
+    if (Index->getBase() != Child || Index->getLHS() != Child) {
+      refuse(Loc, Name, "write the read as " + Name.str() + "[i]");
+      return;
+    }
+    const Stmt *IndexChild = nullptr;
+    const Stmt *Above = parentOf(Index, Ctx, IndexChild);
+    while (Above && isa<ParenExpr>(Above))
+      Above = parentOf(Above, Ctx, IndexChild);
+    if (const auto *U = dyn_cast_or_null<UnaryOperator>(Above);
+        U && U->getOpcode() == UO_AddrOf) {
+      refuse(Loc, Name, "its elements' addresses may not be taken; read them as " + Name.str() +
+                            "[i]");
+      return;
+    }
+    const LangOptions &LO = Ctx.getLangOpts();
+    llvm::Optional<Token> LSquare = Lexer::findNextToken(Loc, FC.SM, LO);
+    const SourceLocation RSquare = Index->getRBracketLoc();
+    if (!LSquare || LSquare->isNot(tok::l_square) || !RSquare.isFileID() ||
+        FC.SM.getFileID(RSquare) != FC.SM.getFileID(Loc)) {
+      refuse(Loc, Name, "the read's brackets come from a macro; write " + Name.str() +
+                            "[i] in one place");
+      return;
+    }
+    FC.Edits.replace(Loc, LSquare->getEndLoc(),
+                     "texcc_read_" + elementName(P) + "(texcc_ctx, " + Name.str() + ", (");
+    FC.Edits.replaceToken(RSquare, "), " + lengthName(Name) + ", __LINE__)");
+    return;
+  }
+  if (const auto *Call = dyn_cast_or_null<CallExpr>(Parent)) {
+    const FunctionDecl *Callee = Call->getDirectCallee();
+    if (Callee && FC.isUserFunction(Callee)) {
+      for (unsigned I = 0; I < Call->getNumArgs() && I < Callee->getNumParams(); ++I)
+        if (Call->getArg(I) == Child && isGlobalPointer(Callee->getParamDecl(I))) {
+          FC.Edits.replaceToken(Loc, Name.str() + ", " + lengthName(Name));
+          return;
+        }
+    }
+    refuse(Loc, Name,
+           "it may be passed whole only to a user function's __global array parameter; read "
+           "its elements as " +
+               Name.str() + "[i]");
+    return;
+  }
+  refuse(Loc, Name,
+         "pointer arithmetic and other uses escape the check; read its elements as " +
+             Name.str() + "[i]");
 }
 
 void ResourceLimits::registerMatchers(MatchFinder &Finder) {
