@@ -189,9 +189,9 @@ def ensure_bpy():
         common.run([VENV_PYTHON, "-m", "pip", "install", "bpy==5.0.1", "flip-evaluator"])
 
 
-def make_blends(tools):
+def make_blends(tools, variants=VARIANTS):
     out = {}
-    for v in VARIANTS:
+    for v in variants:
         out[v] = os.path.join(tools.work, "atrium-%s.blend" % v)
         common.run([VENV_PYTHON, MAKE_SCENE, out[v], "--variant", v])
     return out
@@ -328,9 +328,14 @@ def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",)):
         cexr = os.path.join(tools.work, "agree-cycles-%s.exr" % v)
         t = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, exr=cexr)["seconds"]
         own = dict(inputs)
-        if v != "diffuse":
-            own[v] = exported(tools, blends[v], v)
-        r, texr = texrender_once(tools, own, v, "auto", size, spp, "agree-" + v, exr=True)
+        try:
+            if v != "diffuse":
+                own[v] = exported(tools, blends[v], v)
+            r, texr = texrender_once(tools, own, v, "auto", size, spp, "agree-" + v, exr=True)
+        except common.BenchError as e:  # e.g. a node texcc does not have yet: say so, go on
+            out[v] = {"error": str(e).strip().splitlines()[-1][-300:]}
+            common.log("agreement %s: %s" % (v, out[v]["error"]))
+            continue
         res = cyc.call(op="analyze", a=cexr, b=texr, mask=mask)
         res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"], "size": size,
                     "spp": spp, "texrenderInput": "texrender's own scene" if v == "diffuse"
@@ -350,7 +355,8 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
     size = size or ("128x128" if quick else "512x512")
     spps = spps or ([1, 4] if quick else [1, 16])
     reps = reps or (2 if quick else 5)
-    blends = make_blends(tools)
+    blends = make_blends(tools, [v for v in VARIANTS if v in variants or v == "diffuse" or
+                                 (agree and v in agree_variants)])
     inputs = texrender_inputs(tools)
     cyc = Cycles()
     data = {"size": size, "spps": spps, "repetitions": reps, "cyclesVersion": cyc.version,

@@ -753,6 +753,10 @@ def cycles_section(d):
                   "| variant | size, spp | region | pixels | Cycles RGB | texrender RGB | "
                   "difference | FLIP |", "|---|---|---|---|---|---|---|---|"]
         for v, res in ag["results"].items():
+            if "error" in res:
+                lines.append("| %s | - | not measured: %s | | | | | |" % (
+                    v, res["error"].replace("|", "/")))
+                continue
             for name, g in res["regions"].items():
                 lines.append("| %s | %s, %d | %s | %d | %s | %s | %s | %s |" % (
                     v, res.get("size", ag.get("size")), res.get("spp", ag.get("spp")), name,
