@@ -20,7 +20,9 @@ whose Scale input (3.0 on the group node) feeds the Noise's Scale, and whose Col
 feed the Diffuse BSDF and the Mix Shader; "options": the cube moves from z 0 (frame 1) to z 1
 (frame 10), a second camera "Side" looks along +Y, and a second scene "Other" (32x32) holds
 "Side", the sun and the ground; "world-texture": a Sky Texture feeds the world's Background; "instances": the cube is
-also instanced twice through a collection, at x -1.5 and +1.5, y +1.
+also instanced twice through a collection, at x -1.5 and +1.5, y +1; "principled": the ground is
+a Principled BSDF (Base Color 0.2 0.3 0.4, Metallic 0.5, Roughness 0.3, Specular IOR Level 0.7)
+whose Roughness comes from the cube's kind of Noise through a Map Range.
 """
 import sys
 
@@ -204,6 +206,20 @@ def main():
         ao = ambient_occlusion(grey.node_tree, "Ground AO", 4, 1.5)
         bsdf = next(n for n in grey.node_tree.nodes if n.bl_idname == "ShaderNodeBsdfDiffuse")
         grey.node_tree.links.new(ao.outputs["Color"], bsdf.inputs["Color"])
+    if case == "principled":
+        grey = bpy.data.materials.new("Metal")
+        tree = grey.node_tree
+        principled = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeBsdfPrincipled")
+        principled.inputs["Base Color"].default_value = (0.2, 0.3, 0.4, 1.0)
+        principled.inputs["Metallic"].default_value = 0.5
+        principled.inputs["Specular IOR Level"].default_value = 0.7
+        noise = tree.nodes.new("ShaderNodeTexNoise")
+        noise.inputs["Scale"].default_value = 2.0
+        to_roughness = tree.nodes.new("ShaderNodeMapRange")
+        to_roughness.inputs["To Min"].default_value = 0.2
+        to_roughness.inputs["To Max"].default_value = 0.6
+        tree.links.new(noise.outputs["Fac"], to_roughness.inputs["Value"])
+        tree.links.new(to_roughness.outputs["Result"], principled.inputs["Roughness"])
     if case == "principled-coat":
         grey = bpy.data.materials.new("Coated")
         tree = grey.node_tree
