@@ -12,31 +12,48 @@ static std::string scratchAt(unsigned Node) {
   return "scratch[" + std::to_string(Node) + "u * (uint)numHits + (uint)gid]";
 }
 
-static void emitUseTable(std::ostringstream &OS, const CompiledGraph &CG) {
-  OS << "/* texcc_wf_uses[m][n]: whether material m's program runs node n (other materials' hits\n"
-        " * skip the node's launch). */\n"
-     << "#define TEXCC_WF_NODES " << CG.Nodes.size() << "\n"
-     << "__constant uchar texcc_wf_uses[TEXCC_NUM_MATERIALS][TEXCC_WF_NODES] = {\n";
-  for (const CompiledMaterial &M : CG.Materials) {
-    std::vector<int> Uses(CG.Nodes.size(), 0);
+/// For each node, the materials whose programs run it, ascending (each program lists a node
+/// once); built in one pass over the programs, so the kernel's text is linear in their length
+/// (a materials x nodes table was quadratic: 100,000 materials of one node each made 10^10).
+static std::vector<std::vector<unsigned>> nodeUsers(const CompiledGraph &CG) {
+  std::vector<std::vector<unsigned>> Users(CG.Nodes.size());
+  for (const CompiledMaterial &M : CG.Materials)
     for (const Instruction &I : M.Program)
-      Uses[I.Node] = 1;
-    OS << "    {";
-    for (size_t N = 0; N < Uses.size(); ++N)
-      OS << (N ? ", " : "") << Uses[N];
-    OS << "}, /* " << M.Index << " '" << M.Name << "' */\n";
-  }
-  OS << "};\n\n";
+      if (Users[I.Node].empty() || Users[I.Node].back() != M.Index)
+        Users[I.Node].push_back(M.Index);
+  return Users;
 }
 
-static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsigned NodeIndex) {
+/// texcc_wf_uses_<n>(mat): whether material mat's program runs node n (other materials' hits
+/// skip the node's launch); "" (no test) when every material runs it.
+static std::string emitUses(std::ostringstream &OS, const CompiledGraph &CG, unsigned NodeIndex,
+                            const std::vector<unsigned> &Users) {
+  if (Users.size() == CG.Materials.size())
+    return "";
+  const std::string Name = "texcc_wf_uses_" + std::to_string(NodeIndex);
+  OS << "static inline bool " << Name << "(int mat) {\n"
+     << "  switch (mat) {\n";
+  for (unsigned M : Users)
+    OS << "  case " << M << ": /* '" << CG.Materials[M].Name << "' */\n";
+  if (!Users.empty())
+    OS << "    return true;\n";
+  OS << "  default:\n"
+     << "    return false;\n"
+     << "  }\n"
+     << "}\n";
+  return " || !" + Name + "(mat)";
+}
+
+static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsigned NodeIndex,
+                           const std::vector<unsigned> &Users) {
   const CompiledNode &N = CG.Nodes[NodeIndex];
   const FunctionSignature &Sig = CG.Signatures.at(N.Fn);
+  const std::string Skip = emitUses(OS, CG, NodeIndex, Users);
   OS << "/* node " << NodeIndex << " '" << N.Id << "': " << signatureComment(Sig) << ", "
      << Sig.File << "; record at byte " << N.RecordOffset << " */\n"
      << "__kernel void " << wavefrontKernelName(NodeIndex) << "(\n"
      << kernelParameterList() << ") {\n";
-  emitKernelPrologue(OS, " || !texcc_wf_uses[mat][" + std::to_string(NodeIndex) + "]",
+  emitKernelPrologue(OS, Skip,
                      "TEXCC_AT_NODE | " + std::to_string(NodeIndex) + "u");
   ArgEmitter E;
   E.Tgt = Target::OpenCL;
@@ -72,10 +89,9 @@ static void emitOutputsKernel(std::ostringstream &OS, const CompiledGraph &CG) {
 }
 
 void emitWavefront(std::ostringstream &OS, const CompiledGraph &CG) {
-  if (!CG.Nodes.empty() && !CG.Materials.empty())
-    emitUseTable(OS, CG);
+  const std::vector<std::vector<unsigned>> Users = nodeUsers(CG);
   for (unsigned NodeIndex : CG.WavefrontOrder)
-    emitNodeKernel(OS, CG, NodeIndex);
+    emitNodeKernel(OS, CG, NodeIndex, Users[NodeIndex]);
   emitOutputsKernel(OS, CG);
 }
 
