@@ -150,6 +150,22 @@ static std::vector<bool> nodesReadingAo(const std::vector<json> &Nodes,
   return Reads;
 }
 
+/// The one place the runtime knows the modes by name: what each mode's kernel can absorb.
+static const std::pair<const char *, KernelCapabilities> ModeCapabilities[] = {
+    // ReEncodes, WiringIsData, ShapeKeyed, InterpFallback, StackHeadroom
+    {"interp", {true, true, false, false, true}},
+    {"inline", {false, false, false, false, false}},
+    {"wavefront", {true, false, false, false, false}},
+    {"shape", {true, false, true, true, false}},
+};
+
+std::optional<KernelCapabilities> modeCapabilities(const std::string &Mode) {
+  for (const auto &MC : ModeCapabilities)
+    if (Mode == MC.first)
+      return MC.second;
+  return std::nullopt;
+}
+
 Layout loadLayout(const std::string &OutDir) {
   Layout L;
   L.Dir = OutDir;
@@ -167,8 +183,10 @@ Layout loadLayout(const std::string &OutDir) {
     if (!J.contains("texcc") || J["texcc"] != 1)
       R.fail("/texcc", "expected layout version 1");
     L.Mode = R.get(J, "mode", "").get<std::string>();
-    if (L.Mode != "interp" && L.Mode != "inline" && L.Mode != "wavefront" && L.Mode != "shape")
+    std::optional<KernelCapabilities> Caps = modeCapabilities(L.Mode);
+    if (!Caps)
       R.fail("/mode", "unknown mode '" + L.Mode + "'");
+    L.Caps = *Caps;
     if (J.contains("target") && J["target"] != "opencl")
       R.fail("/target", "texrender runs OpenCL output only (texcc --target=opencl)");
     if (J.contains("argsBin") && J["argsBin"].contains("size"))
@@ -200,12 +218,13 @@ Layout loadLayout(const std::string &OutDir) {
     if (K.contains("uniforms") && !K["uniforms"].is_string())
       R.fail("/kernel/uniforms", "the hoisted-value kernel's name must be a string");
     L.Uniforms = K.value("uniforms", "");
-    if (L.Mode == "shape" && L.InterpFallback.empty())
+    if (L.Caps.InterpFallback && L.InterpFallback.empty())
       R.fail("/kernel/interpFallback", "a shape-mode layout names its interp fallback kernel");
     L.StackSlots = J.value("stackSlots", 0u);
     L.StackLimit = J.value("stackLimit", 32u);
     L.Spill = J.value("spill", false);
     L.MaxOutputs = std::max(1u, J.value("maxOutputs", 1u));
+    L.Caps.MaxOutputs = L.MaxOutputs;
     L.ScratchFloat4PerHit = J.value("scratchFloat4PerHit", 0u);
     if (J.contains("attributes"))
       L.Attributes = J["attributes"].get<std::vector<std::string>>();

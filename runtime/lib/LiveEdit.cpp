@@ -1,4 +1,5 @@
 #include "texrender/LiveEdit.h"
+#include "texrender/EditPlan.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
 
@@ -173,7 +174,7 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
 void LiveEditor::initEditor(const std::string &GraphText) {
   Editor.reset();
   KernelShapeHash = Lay.ShapeHash;
-  if (Lay.Mode == "inline")
+  if (!Lay.Caps.ReEncodes)
     return; // every edit regenerates
   Editor = makeEditor(GraphText);
 }
@@ -198,7 +199,7 @@ LiveEditor::makeEditor(const std::string &GraphText) const {
   Opts.StackLimit = Lay.StackLimit;
   // An interp kernel that hoists reads every hoisting node's values from its record: a
   // rewiring of a parameter they come from needs a new kernel (texcc then hoists less).
-  Opts.InterpHoistedCalls = Lay.Mode == "interp" && !Lay.Uniforms.empty();
+  Opts.InterpHoistedCalls = Lay.Caps.WiringIsData && !Lay.Uniforms.empty();
   auto E = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
   if (!E->init(Diags))
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
@@ -353,50 +354,26 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
       });
 }
 
-bool LiveEditor::fallbackRuns(const Renderer &R) const {
-  // The fallback has a case for every node's function, so a compiled edit needs no new one;
-  // what it may need is more value-stack slots than the graph had, which the fallback's
-  // headroom may hold, or more outputs, which no kernel of this layout has, or (a set to
-  // {"attr": ...}) an attribute its decoder has no case for.
-  const auto &CG = Editor->compiled();
-  return Lay.Mode == "shape" && R.tierPolicy() != TierPolicy::Shape && !CG.Spill &&
-         CG.StackSlots <= R.fallbackStackSlots() && CG.MaxOutputs <= Lay.MaxOutputs &&
-         !Editor->needsAttributeCase();
-}
-
-bool LiveEditor::headroomRuns(const Renderer &R) const {
-  // interp mode's kernel has a case for every node's function too; built with headroom
-  // (RendererOptions::InterpStackHeadroom) it also holds a deeper value stack.
-  const auto &CG = Editor->compiled();
-  return Lay.Mode == "interp" && Editor->needsOnlyStackSlots() && !CG.Spill &&
-         CG.StackSlots <= R.interpStackSlots();
-}
-
-LiveEditor::Plan LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
-  if (Lay.Mode == "inline")
-    return Plan::Regenerate;
+EditAction LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
+  if (!Lay.Caps.ReEncodes)
+    return planEdit({}, Lay.Caps, {});
   texcc::graph::DiagnosticSink Diags;
   bool Ok = E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
                                    : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
   if (!Ok)
     throw Error("edit '" + E.Text + "': " + firstError(Diags));
-  if (Editor->needsRebuild() && !fallbackRuns(R) && !headroomRuns(R))
-    return Plan::Regenerate;
-  // A shape kernel runs the edited graph exactly when its shapes are unchanged: a value edit
-  // that merges or splits identical nodes changes them, a rewiring onto an equal structure
-  // does not (layout.json from a texcc without kernel.shapeHash: the JSON-level test).
-  if (Lay.Mode == "shape" && !KernelShapeHash.empty())
-    Structural = texcc::graph::shapeHash(Editor->compiled()) != KernelShapeHash;
-  // The wiring is code in wavefront mode (the launches) and in a shape kernel (its shapes).
-  if ((!Structural && !Editor->needsRebuild()) || Lay.Mode == "interp")
-    return Plan::Upload;
-  if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Interp)
-    return Plan::Upload;
-  // The fallback may still be building behind a shape kernel (neither was cached): then the
-  // edit regenerates in the foreground, as with --tier=shape.
-  if (Lay.Mode == "shape" && R.tierPolicy() == TierPolicy::Auto)
-    return R.fallbackStackSlots() ? Plan::SwitchShapes : Plan::Regenerate;
-  return Plan::Regenerate;
+  const auto &CG = Editor->compiled();
+  EditFacts F;
+  F.Structural = Structural;
+  if (!KernelShapeHash.empty()) // layout.json from a texcc without kernel.shapeHash: Structural
+    F.ShapeChanged = texcc::graph::shapeHash(CG) != KernelShapeHash;
+  F.NeedsRebuild = Editor->needsRebuild();
+  F.NeedsOnlyStackSlots = Editor->needsOnlyStackSlots();
+  F.NeedsAttributeCase = Editor->needsAttributeCase();
+  F.Spill = CG.Spill;
+  F.StackSlots = CG.StackSlots;
+  F.MaxOutputs = CG.MaxOutputs;
+  return planEdit(F, Lay.Caps, {R.tierPolicy(), R.fallbackStackSlots(), R.interpStackSlots()});
 }
 
 EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
@@ -407,7 +384,7 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
   }
   double T0 = now();
   // inline mode has no editor to validate the edit against: check it on a scratch copy.
-  if (Lay.Mode == "inline")
+  if (!Lay.Caps.ReEncodes)
     if (std::optional<EditProblem> Bad = check({E}))
       throw Error("edit '" + E.Text + "': " + Bad->Message);
   // A refused edit must not stay in the graph that later regenerations hand to texcc.
@@ -415,7 +392,7 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
   for (const json &N : GraphDoc.value("nodes", json::array()))
     if (N.value("id", "") == E.Node && N.contains("args") && N["args"].contains(E.Arg))
       Before = N["args"][E.Arg];
-  Plan P;
+  EditAction P;
   try {
     P = plan(E, applyToJson(E), R);
   } catch (const Error &) {
@@ -429,14 +406,14 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
     throw;
   }
   switch (P) {
-  case Plan::Upload:
+  case EditAction::Upload:
     R.applyArguments(Editor->compiled().ArgsBin, Editor->compiled().Attributes);
     break;
-  case Plan::Regenerate:
+  case EditAction::Regenerate:
     regenerate(R);
     Res.Rebuilt = true;
     break;
-  case Plan::SwitchShapes:
+  case EditAction::SwitchShapes:
     regenerateInBackground(R);
     Res.Background = true;
     break;

@@ -5,6 +5,7 @@
 // the generated kernel's source.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,25 @@ struct LayoutImage {
   std::string Path; // resolved
 };
 
+/// What the kernel of a layout can absorb without being made again (docs/modes.md, "What an
+/// edit costs"): the live editor plans with these (EditPlan.h), never with the mode's name.
+struct KernelCapabilities {
+  /// A parameter value is in args.bin, which the graph library re-encodes (false: values are
+  /// literals of the kernel, every edit regenerates it).
+  bool ReEncodes = true;
+  /// Any rewiring within the kernel's function set is an upload (the wiring is data).
+  bool WiringIsData = false;
+  /// The kernel is code per graph shape: an edit that keeps every shape is an upload.
+  bool ShapeKeyed = false;
+  /// An interp kernel of the same args.bin (kernel.interpFallback) can render while a new
+  /// kernel builds (tiered execution).
+  bool InterpFallback = false;
+  /// The kernel's value stack can be built deeper than the graph needs (stack headroom).
+  bool StackHeadroom = false;
+  /// The texture outputs per material the kernel has room for (maxOutputs).
+  unsigned MaxOutputs = 1;
+};
+
 struct Layout {
   std::string Dir;        // the texcc output folder
   std::string Mode;       // interp | inline | wavefront | shape
@@ -45,6 +65,7 @@ struct Layout {
   // compileOptions: texcc's arguments besides --graph, -o and the sources, replayed when a live
   // edit regenerates the kernel (from an older layout: just --mode).
   std::vector<std::string> CompileOptions;
+  KernelCapabilities Caps;
   std::string KernelSource; // resolved path of proctex.cl
   std::string Entry;
   std::vector<std::string> WavefrontLaunches; // kernel names, in order
@@ -73,6 +94,10 @@ struct Layout {
   /// "white, red, green" (for messages).
   std::string materialNames() const;
 };
+
+/// The capabilities of a mode's kernel ("interp", "inline", "wavefront", "shape" as layout.json
+/// "mode" spells it), std::nullopt for any other name.
+std::optional<KernelCapabilities> modeCapabilities(const std::string &Mode);
 
 /// Reads OUTDIR/layout.json and OUTDIR/args.bin. Errors name the file and the JSON path.
 Layout loadLayout(const std::string &OutDir);

@@ -11,6 +11,7 @@
 // renders at once with the interp fallback while texcc and the new shape kernel's build run on
 // the renderer's background thread.
 
+#include "texrender/EditPlan.h"
 #include "texrender/Layout.h"
 #include "texrender/Renderer.h"
 
@@ -93,16 +94,8 @@ private:
     std::shared_ptr<const TempFolder> Folder; // texrender-edit-PID-N in the temporary folder
     std::string Graph, Out, Log;
   };
-  enum class Plan { Upload, Regenerate, SwitchShapes };
-
-  Plan plan(const Edit &E, bool Structural, const Renderer &R);
-  /// Shape mode: whether the running interp fallback can run the edited graph even though
-  /// the graph library says the kernel it was made for cannot (value-stack headroom).
-  bool fallbackRuns(const Renderer &R) const;
-  /// interp mode: whether the kernel, built with value-stack headroom, can run the edited
-  /// graph although the graph library says the kernel it was made for cannot (only the
-  /// value stack is deeper).
-  bool headroomRuns(const Renderer &R) const;
+  /// Applies E to the graph editor and plans it (planEdit, with the layout's capabilities).
+  EditAction plan(const Edit &E, bool Structural, const Renderer &R);
   void regenerate(Renderer &R);
   void regenerateInBackground(Renderer &R);
   Regeneration writeEditedGraph();
