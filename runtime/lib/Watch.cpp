@@ -140,9 +140,10 @@ private:
   void watchFiles();
   void writeProgress(const std::vector<float> &Image);
   void applyChanges();
-  void applyGraph(bool SourcesChanged);
+  /// Changed: the graph's source files that changed (empty: only the graph did).
+  void applyGraph(const std::set<std::string> &Changed);
   void applyEdits(const std::vector<std::string> &Lines, const json &New);
-  void startJob(const json &New);
+  void startJob(const json &New, const std::string &What);
   void adoptJob();
   void reloadScene();
 
@@ -233,7 +234,7 @@ void Session::applyChanges() {
   if (SceneChanged)
     reloadScene();
   if (GraphChanged || !Now.empty())
-    applyGraph(!Now.empty());
+    applyGraph(Now);
 }
 
 void Session::reloadScene() {
@@ -246,7 +247,7 @@ void Session::reloadScene() {
   }
 }
 
-void Session::applyGraph(bool SourcesChanged) {
+void Session::applyGraph(const std::set<std::string> &Sources) {
   json New;
   try {
     New = json::parse(readWholeFile(GraphPath, " graph"));
@@ -259,12 +260,15 @@ void Session::applyGraph(bool SourcesChanged) {
     return;
   }
   std::optional<std::vector<std::string>> Edits;
-  if (!SourcesChanged)
+  if (Sources.empty())
     Edits = argumentEdits(Graph, New);
+  std::string What;
+  for (const std::string &S : Sources)
+    What += (What.empty() ? "" : ", ") + S;
   if (Edits)
     applyEdits(*Edits, New);
   else
-    startJob(New);
+    startJob(New, What.empty() ? GraphPath : What);
 }
 
 void Session::applyEdits(const std::vector<std::string> &Lines, const json &New) {
@@ -303,7 +307,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
       std::to_string(R->cl().foregroundBuilds() - Builds) + " kernel build(s)");
 }
 
-void Session::startJob(const json &New) {
+void Session::startJob(const json &New, const std::string &What) {
   if (Job) {
     JobAgain = true; // the newest files are compiled once this run ends
     return;
@@ -311,9 +315,9 @@ void Session::startJob(const json &New) {
   Job = std::make_unique<Regeneration>();
   Job->Graph = New;
   Job->Started = ChangeAt > 0 ? ChangeAt : nowSeconds();
+  ChangeAt = 0; // the next refined frame is the old kernel's: the latency is reported on adoption
   std::string Out = TempRoot + "/gen" + std::to_string(++Generation);
-  say(GraphPath + " or a source changed: texcc runs in the background; the current kernel "
-                  "keeps rendering");
+  say(What + " changed: texcc runs in the background; the current kernel keeps rendering");
   Regeneration *J = Job.get();
   Job->Thread = std::thread([J, Out, Graph = GraphPath, Options = Lay.CompileOptions] {
     try {
@@ -332,7 +336,7 @@ void Session::adoptJob() {
   if (JobAgain) {
     JobAgain = false;
     ChangeAt = J->Started;
-    applyGraph(true);
+    applyGraph({GraphPath}); // files saved while it ran: compile them as they are now
     return;
   }
   if (!J->Result) {
