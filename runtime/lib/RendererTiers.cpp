@@ -37,15 +37,13 @@ cl::Program Renderer::buildForeground(const std::string &Path, const std::string
 bool Renderer::tierUsesUniforms(const std::string &Tier) const {
   // The layout's own kernel (shape mode's shape tier, or an interp-mode kernel that hoists);
   // shape mode's interp fallback never reads hoisted values.
-  return !Lay.Uniforms.empty() && !(Lay.Mode == "shape" && Tier == "interp");
+  return !Lay.Uniforms.empty() && !(Lay.Caps.InterpFallback && Tier == FallbackTierName);
 }
 
 std::vector<std::string> Renderer::textureKernelNames() const {
+  // Wavefront: every node kernel in launch order, then the outputs kernel (kernel.entry).
   std::vector<std::string> Names = Lay.WavefrontLaunches;
-  if (Lay.Mode == "wavefront")
-    Names.push_back("texcc_wf_outputs");
-  else
-    Names = {Lay.Entry};
+  Names.push_back(Lay.Entry);
   return Names;
 }
 
@@ -61,7 +59,8 @@ void Renderer::activate(const cl::Program &P, const std::string &Tier) {
   TextureKernels.clear();
   ActiveTier = Tier;
   TextureKernelNames = textureKernelNames();
-  std::string File = Tier == "interp" && Lay.Mode == "shape" ? Lay.InterpFallback : Lay.KernelSource;
+  std::string File =
+      Lay.Caps.InterpFallback && Tier == FallbackTierName ? Lay.InterpFallback : Lay.KernelSource;
   for (const std::string &N : TextureKernelNames) {
     try {
       TextureKernels.push_back(cl::Kernel(P, N.c_str()));
@@ -91,9 +90,9 @@ void Renderer::buildTextureKernel() {
   if (!HasTextureWork)
     return;
   const char *Reason = FramesRendered ? "edit" : "initial";
-  if (Lay.Mode != "shape") {
+  if (!Lay.Caps.InterpFallback) {
     InterpModeSlots = Lay.StackSlots;
-    const std::string Source = Lay.Mode == "interp" && Opts.InterpStackHeadroom
+    const std::string Source = Lay.Caps.StackHeadroom && Opts.InterpStackHeadroom
                                    ? stackHeadroomSource(Lay, Lay.KernelSource, InterpModeSlots)
                                    : readKernelSource(Lay.KernelSource);
     activate(buildForeground(Lay.KernelSource, Source, Lay.Mode, Reason), Lay.Mode);
@@ -114,10 +113,11 @@ void Renderer::buildShapeTiers(const char *Reason) {
   const bool FallbackCached = Cl->isCached(FallbackText, programOptions());
   const bool Auto = P == TierPolicy::Auto;
   if (P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached)))
-    ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, "shape", Reason);
+    ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, ShapeTierName, Reason);
   if (P == TierPolicy::Interp || (Auto && FallbackCached))
-    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, "interp", Reason);
-  activate(ShapeProgram() ? ShapeProgram : InterpProgram, ShapeProgram() ? "shape" : "interp");
+    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, FallbackTierName, Reason);
+  activate(ShapeProgram() ? ShapeProgram : InterpProgram,
+             ShapeProgram() ? ShapeTierName : FallbackTierName);
   if (Auto && (!ShapeProgram() || !InterpProgram())) {
     Layout Same = Lay;
     TierJob Job{/*SameLayout=*/true, /*Shape=*/!ShapeProgram(), /*Interp=*/!InterpProgram()};
@@ -129,11 +129,11 @@ void Renderer::switchShapes(const std::vector<uint8_t> &ArgsBin,
                             const std::vector<std::string> &Attributes,
                             std::function<Layout()> MakeLayout,
                             std::function<void(Layout &)> Reencode) {
-  if (Lay.Mode != "shape" || !InterpProgram())
+  if (!Lay.Caps.InterpFallback || !InterpProgram())
     throw Error("switchShapes: needs a shape-mode layout with its interp fallback built (tier auto)");
   applyArguments(ArgsBin, Attributes);
-  if (HasTextureWork && ActiveTier != "interp")
-    activate(InterpProgram, "interp");
+  if (HasTextureWork && ActiveTier != FallbackTierName)
+    activate(InterpProgram, FallbackTierName);
   startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true}, std::move(Reencode),
                        "shape change");
 }
@@ -153,7 +153,7 @@ void Renderer::launchQueued() {
   if (!Queued || Pending || !Retired.empty())
     return;
   BuildEvent E;
-  E.Kernel = Queued->Job.Shape ? "shape" : "interp";
+  E.Kernel = Queued->Job.Shape ? ShapeTierName : FallbackTierName;
   E.Reason = Queued->Reason;
   E.Background = true;
   E.StartSeconds = steadySeconds() - Epoch;
@@ -233,7 +233,8 @@ void Renderer::adopt(TierBuildResult &R) {
   if (R.Shape())
     ShapeProgram = R.Shape;
   if (HasTextureWork)
-    activate(ShapeProgram() ? ShapeProgram : InterpProgram, ShapeProgram() ? "shape" : "interp");
+    activate(ShapeProgram() ? ShapeProgram : InterpProgram,
+             ShapeProgram() ? ShapeTierName : FallbackTierName);
 }
 
 double Renderer::waitForBackgroundBuild() {

@@ -93,7 +93,7 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
   J["textureKernel"] = R.runsTextures();
   J["kernelBuilds"] = R.cl().kernelBuilds();
   J["backgroundKernelBuilds"] = R.cl().backgroundBuilds();
-  J["tierPolicy"] = L.Mode == "shape" ? json(tierPolicyName(R.tierPolicy())) : json(nullptr);
+  J["tierPolicy"] = L.Caps.InterpFallback ? json(tierPolicyName(R.tierPolicy())) : json(nullptr);
   J["textureBuilds"] = buildEventsJson(R.buildEvents());
   J["programCacheHits"] = R.cl().cacheHits();
   J["memoryBytes"] = R.cl().memoryTotal();

@@ -14,22 +14,26 @@
 
 namespace texrender {
 
+namespace {
+/// The --tier policies by name: the tiers of a shape-mode layout, plus auto.
+const std::pair<TierPolicy, const char *> TierPolicies[] = {
+    {TierPolicy::Auto, "auto"},
+    {TierPolicy::Interp, FallbackTierName},
+    {TierPolicy::Shape, ShapeTierName},
+};
+} // namespace
+
 TierPolicy parseTierPolicy(const std::string &Name) {
-  if (Name == "auto")
-    return TierPolicy::Auto;
-  if (Name == "interp")
-    return TierPolicy::Interp;
-  if (Name == "shape")
-    return TierPolicy::Shape;
+  for (const auto &[P, N] : TierPolicies)
+    if (Name == N)
+      return P;
   throw Error("--tier: unknown tier policy '" + Name + "' (expected auto, interp or shape)");
 }
 
 const char *tierPolicyName(TierPolicy P) {
-  switch (P) {
-  case TierPolicy::Auto: return "auto";
-  case TierPolicy::Interp: return "interp";
-  case TierPolicy::Shape: return "shape";
-  }
+  for (const auto &[Q, N] : TierPolicies)
+    if (P == Q)
+      return N;
   return "auto";
 }
 

@@ -23,6 +23,12 @@ namespace texrender {
 /// a frame waits for its build (the behaviour before tiers).
 enum class TierPolicy { Auto, Interp, Shape };
 
+/// The tiers of a shape-mode layout (Layout::Caps.InterpFallback), as stats.json and --tier
+/// name them: its shape kernel and its interp fallback. A layout of another mode has one tier,
+/// named by its mode.
+constexpr const char *ShapeTierName = "shape";
+constexpr const char *FallbackTierName = "interp";
+
 /// Parses "auto" | "interp" | "shape"; throws Error naming the allowed values.
 TierPolicy parseTierPolicy(const std::string &Name);
 const char *tierPolicyName(TierPolicy P);
