@@ -137,7 +137,20 @@ def worker():
             out["flip"] = None
         return out
 
-    ops = {"render": render, "mask": mask, "analyze": analyze}
+    def seeds(req):
+        """Seed-to-seed spread: RMSE of linear RGB between every pair of images, and the mean
+        per-pixel variance across them (unbiased), for each group of images."""
+        out = {}
+        for name, paths in req["groups"].items():
+            imgs = np.stack([read_exr(p) for p in paths])
+            pairs = [float(np.sqrt(((imgs[i] - imgs[j]) ** 2).mean()))
+                     for i in range(len(imgs)) for j in range(i + 1, len(imgs))]
+            out[name] = {"pairRmse": pairs, "meanPairRmse": float(np.mean(pairs)),
+                         "meanPixelVariance": float(imgs.var(axis=0, ddof=1).mean()),
+                         "mean": imgs.mean(axis=(0, 1, 2)).tolist()}
+        return out
+
+    ops = {"render": render, "mask": mask, "analyze": analyze, "seeds": seeds}
     reply({"ready": bpy.app.version_string})
     for line in sys.stdin:
         req = json.loads(line)
@@ -344,17 +357,40 @@ def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",)):
     return out
 
 
+def seed_spread(tools, cyc, blends, inputs, size, spp, n):
+    """Issue 26: n seeds of the diffuse atrium per renderer at equal spp; RMSE between seeds."""
+    w, h = (int(x) for x in size.split("x"))
+    groups = {"cycles": [], "texrender-auto": []}
+    times = {"cycles": [], "texrender-auto": []}
+    for seed in range(1, n + 1):
+        exr = os.path.join(tools.work, "seed-cycles-%d.exr" % seed)
+        times["cycles"].append(cyc.call(op="render", blend=blends["diffuse"], size=[w, h],
+                                        spp=spp, seed=seed, exr=exr)["seconds"])
+        groups["cycles"].append(exr)
+        r, img = texrender_once(tools, inputs, "diffuse", "auto", size, spp,
+                                "seed-tr-%d" % seed, exr=True, seed=seed)
+        times["texrender-auto"].append(r["frame"])
+        groups["texrender-auto"].append(img)
+        common.log("seeds: %d/%d" % (seed, n))
+    res = cyc.call(op="seeds", groups=groups)
+    for k in res:
+        res[k]["seconds"] = times[k]
+    return {"size": size, "spp": spp, "seeds": n, "results": res,
+            "varianceRatioTexrenderOverCycles": res["texrender-auto"]["meanPixelVariance"] /
+            res["cycles"]["meanPixelVariance"], "loadAverage": os.getloadavg()}
+
+
 CHECKPOINTS = True  # bench.py passes a checkpoint callback
 
 
 def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size=None,
             agree_spp=None, agree=True, variants=VARIANTS, renderers=RENDERERS,
-            agree_variants=("diffuse",)):
+            agree_variants=("diffuse",), seeds=None):
     """save(data) is called after every repetition with what is measured so far."""
     ensure_bpy()
     size = size or ("128x128" if quick else "512x512")
     spps = spps or ([1, 4] if quick else [1, 16])
-    reps = reps or (2 if quick else 5)
+    reps = (2 if quick else 5) if reps is None else reps
     blends = make_blends(tools, [v for v in VARIANTS if v in variants or v == "diffuse" or
                                  (agree and v in agree_variants)])
     inputs = texrender_inputs(tools)
@@ -376,9 +412,13 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
             if save:
                 save(dict(data))
 
-        runs, fixed, loads = frame_times(tools, cyc, blends, inputs, size, spps, reps,
-                                         checkpoint, variants, renderers)
-        checkpoint(runs, fixed, loads)
+        if seeds:
+            data["seedSpread"] = seed_spread(tools, cyc, blends, inputs, seeds[0], seeds[1],
+                                             seeds[2])
+        if reps > 0:
+            runs, fixed, loads = frame_times(tools, cyc, blends, inputs, size, spps, reps,
+                                             checkpoint, variants, renderers)
+            checkpoint(runs, fixed, loads)
     finally:
         cyc.close()
     return data
@@ -396,6 +436,8 @@ def main():
     ap.add_argument("--agree-size")
     ap.add_argument("--agree-spp", type=int)
     ap.add_argument("--no-agree", action="store_true")
+    ap.add_argument("--seeds", help="SIZE,SPP,N: also the seed-to-seed spread of the diffuse "
+                    "atrium (issue 26), e.g. 256x256,64,4; --reps 0 skips the frame times")
     ap.add_argument("--agree-variants", default="diffuse",
                     help="variants of the image agreement; other than diffuse, texrender renders "
                     "what scripts/blender_export.py exports from the same .blend")
@@ -430,7 +472,12 @@ def main():
                 ag = dict(base.get("agreement") or {"results": {}})
                 ag["results"] = dict(ag["results"], **data["agreement"]["results"])
                 merged["agreement"] = ag
-            merged["parts"] = [p for p in base.get("parts", []) if p["command"] != part["command"]] + [part]
+            if data.get("rows"):
+                merged["parts"] = [p for p in base.get("parts", [])
+                                   if p["command"] != part["command"]] + [part]
+            if data.get("seedSpread"):
+                merged["seedSpread"] = dict(data["seedSpread"], command=part["command"],
+                                            date=part["date"])
             merged["spps"] = sorted({r["spp"] for r in merged["rows"]})
             common.save("cycles", merged, args.out)
             return
@@ -446,7 +493,9 @@ def main():
     data = measure(tools, args.quick, save, args.size,
                    [int(s) for s in args.spp.split(",")] if args.spp else None, args.reps,
                    args.agree_size, args.agree_spp, not args.no_agree, variants, renderers,
-                   args.agree_variants.split(","))
+                   args.agree_variants.split(","),
+                   (lambda a: (a[0], int(a[1]), int(a[2])))(args.seeds.split(","))
+                   if args.seeds else None)
     save(data, True)
 
 
