@@ -667,6 +667,10 @@ int run(int Argc, char **Argv) try {
     W.ScenePath = O.Scene, W.Output = O.Output, W.Width = OutW, W.Height = OutH;
     W.LoadScene = [&O] { return loadSceneWithOptions(O); };
     W.Renderer = RO;
+    // One sample per pixel a pass: the first refined image after an edit comes after one
+    // sample, not after 2^18 paths' worth (accumulate.cl sums sample after sample, so the
+    // image is the same bit for bit).
+    W.Renderer.MaxPathsPerPass = size_t(OutW) * size_t(OutH);
     W.Stop = &StopSignal;
     runWatch(std::move(W), L);
     int Sig = StopSignal.load();
