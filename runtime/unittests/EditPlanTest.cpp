@@ -2,9 +2,14 @@
 // edit costs" in every mode texrender runs, from the modes' capabilities (Layout.cpp's table)
 // and the facts the graph library reports about the edited graph.
 #include "texrender/EditPlan.h"
+#include "texrender/Error.h"
 #include "texrender/Layout.h"
 
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 using namespace texrender;
 
@@ -129,5 +134,53 @@ TEST(EditPlan, NoHeadroomElsewhere) {
   for (const char *M : {"inline", "wavefront"}) {
     EXPECT_STREQ(plan(M, needing(true, 6), {TierPolicy::Auto, 8, 8}), "regenerate") << M;
     EXPECT_STREQ(plan(M, needing(false, 2, 1, true), {TierPolicy::Auto, 8, 8}), "regenerate") << M;
+  }
+}
+
+namespace {
+
+/// Loads a layout.json of Text (with an empty args.bin) from a folder of its own.
+texrender::Layout loadText(const std::string &Text) {
+  namespace fs = std::filesystem;
+  fs::path Dir = fs::temp_directory_path() / ("texrender-editplan-" + std::to_string(::getpid()));
+  fs::create_directories(Dir);
+  std::ofstream(Dir / "layout.json") << Text;
+  std::ofstream(Dir / "args.bin") << "";
+  struct Remove {
+    fs::path D;
+    ~Remove() { fs::remove_all(D); }
+  } R{Dir};
+  return loadLayout(Dir.string());
+}
+
+} // namespace
+
+// The layout reader gives the planner its capabilities and the regeneration its options.
+TEST(EditPlan, LayoutCapabilitiesAndCompileOptions) {
+  Layout L = loadText(R"({"texcc": 1, "mode": "wavefront", "maxOutputs": 3,
+      "compileOptions": ["--mode=wavefront", "-I/abs/inc", "-DK=2"],
+      "kernel": {"source": "proctex.cl", "entry": "texcc_wf_outputs"}, "materials": []})");
+  EXPECT_EQ(L.CompileOptions, (std::vector<std::string>{"--mode=wavefront", "-I/abs/inc", "-DK=2"}));
+  EXPECT_TRUE(L.Caps.ReEncodes);
+  EXPECT_FALSE(L.Caps.WiringIsData);
+  EXPECT_EQ(L.Caps.MaxOutputs, 3u);
+  // A layout from a texcc before compileOptions: a regeneration passes the mode.
+  Layout Old = loadText(
+      R"({"texcc": 1, "mode": "inline", "kernel": {"source": "proctex.cl"}, "materials": []})");
+  EXPECT_EQ(Old.CompileOptions, std::vector<std::string>{"--mode=inline"});
+  EXPECT_FALSE(Old.Caps.ReEncodes);
+}
+
+TEST(EditPlan, MalformedCompileOptions) {
+  for (const char *CO : {R"("-DK=2")", R"(["-DK=2", 3])"}) {
+    try {
+      loadText(std::string(R"({"texcc": 1, "mode": "interp", "compileOptions": )") + CO +
+               R"(, "kernel": {"source": "proctex.cl"}, "materials": []})");
+      FAIL() << "no error for " << CO;
+    } catch (const Error &E) {
+      EXPECT_NE(std::string(E.what()).find("/compileOptions: expected an array of strings"),
+                std::string::npos)
+          << E.what();
+    }
   }
 }
