@@ -158,7 +158,9 @@ private:
   std::unique_ptr<Regeneration> Job;
   bool JobAgain = false;
   unsigned Generation = 0, Frames = 0;
-  double ChangeAt = 0, LastWrite = 0, LastPoll = 0;
+  // Noticed: when the change being applied was seen; ChangeAt: when the change whose first
+  // refined frame is awaited was seen (0: none; set once a change is applied, not on an error).
+  double Noticed = 0, ChangeAt = 0, LastWrite = 0, LastPoll = 0;
 };
 
 void Session::watchFiles() {
@@ -227,7 +229,7 @@ unsigned Session::run() {
 void Session::applyChanges() {
   std::set<std::string> Now;
   Now.swap(Changed);
-  ChangeAt = nowSeconds();
+  Noticed = nowSeconds();
   std::string Scene = fs::absolute(O.ScenePath).string();
   bool SceneChanged = Now.erase(Scene) > 0;
   bool GraphChanged = Now.erase(GraphPath) > 0;
@@ -241,6 +243,7 @@ void Session::reloadScene() {
   try {
     auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
     R = std::move(New);
+    ChangeAt = Noticed;
     say(O.ScenePath + " reloaded");
   } catch (const std::exception &E) {
     say("error: " + std::string(E.what()) + "; the last good scene keeps rendering");
@@ -303,6 +306,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
     return;
   }
   Graph = New;
+  ChangeAt = Noticed;
   say("applied '" + Text + "' in " + ms(nowSeconds() - T0) + ", " +
       std::to_string(R->cl().foregroundBuilds() - Builds) + " kernel build(s)");
 }
@@ -314,8 +318,7 @@ void Session::startJob(const json &New, const std::string &What) {
   }
   Job = std::make_unique<Regeneration>();
   Job->Graph = New;
-  Job->Started = ChangeAt > 0 ? ChangeAt : nowSeconds();
-  ChangeAt = 0; // the next refined frame is the old kernel's: the latency is reported on adoption
+  Job->Started = Noticed; // its latency is reported once its kernel is adopted
   std::string Out = TempRoot + "/gen" + std::to_string(++Generation);
   say(What + " changed: texcc runs in the background; the current kernel keeps rendering");
   Regeneration *J = Job.get();
@@ -335,7 +338,7 @@ void Session::adoptJob() {
   std::unique_ptr<Regeneration> J = std::move(Job);
   if (JobAgain) {
     JobAgain = false;
-    ChangeAt = J->Started;
+    Noticed = J->Started;
     applyGraph({GraphPath}); // files saved while it ran: compile them as they are now
     return;
   }
