@@ -191,6 +191,22 @@ void ClContext::storeBinary(cl::Program &P, const std::string &Path) {
 
 cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags) {
   Bytes = Bytes ? Bytes : 16;
+  // A device that keeps its buffers in host memory (PoCL's CPU device) allocates them lazily,
+  // at their first use, and aborts the process (an assertion in PoCL) when that allocation
+  // fails. So check first that the host's address space holds this buffer with the others
+  // (their sum, reserved and released at once: nothing is touched).
+  if (Device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>()) {
+    size_t Total = Bytes;
+    for (const auto &[Name, Size] : Memory)
+      if (Name != Label)
+        Total += Size;
+    void *Probe = std::malloc(Total);
+    if (!Probe)
+      throw Error("out of memory while allocating " + Label + " (" + std::to_string(Bytes) +
+                  " bytes; " + std::to_string(Total) + " bytes of buffers in all on '" +
+                  DeviceName + "', which keeps them in host memory)");
+    std::free(Probe);
+  }
   try {
     cl::Buffer B(Ctx, Flags, Bytes);
     Memory[Label] = Bytes;
