@@ -120,7 +120,7 @@ public:
   Session(WatchOptions Opts, const Layout &Initial) : O(std::move(Opts)), Lay(Initial) {
     O.Renderer.AfterPass = [this](const PassProgress &P) { return afterPass(P); };
     GraphPath = fs::absolute(Lay.GraphPath).string();
-    Graph = json::parse(readWholeFile(GraphPath, " graph"));
+    Graph = LayGraph = json::parse(readWholeFile(GraphPath, " graph"));
     TempRoot = (fs::temp_directory_path() / ("texrender-watch-" + std::to_string(::getpid()))).string();
     fs::create_directories(TempRoot);
   }
@@ -152,7 +152,8 @@ private:
   std::unique_ptr<Renderer> R;
   std::unique_ptr<LiveEditor> Editor;
   std::string GraphPath, TempRoot;
-  json Graph;
+  json Graph;    // the graph rendered now: LayGraph plus the live edits applied since
+  json LayGraph; // the graph Lay was compiled from
   FileWatcher Files;
   std::set<std::string> Changed;
   std::unique_ptr<Regeneration> Job;
@@ -242,7 +243,13 @@ void Session::applyChanges() {
 void Session::reloadScene() {
   try {
     auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
+    // The new renderer has Lay's arguments: the live edits made since are applied again.
+    auto NewEditor = std::make_unique<LiveEditor>(Lay);
+    if (std::optional<std::vector<std::string>> Edits = argumentEdits(LayGraph, Graph))
+      for (const std::string &E : *Edits)
+        NewEditor->apply(parseEdit(E), *New);
     R = std::move(New);
+    Editor = std::move(NewEditor);
     ChangeAt = Noticed;
     say(O.ScenePath + " reloaded");
   } catch (const std::exception &E) {
@@ -358,7 +365,7 @@ void Session::adoptJob() {
   }
   Lay = *J->Result;
   Editor = std::make_unique<LiveEditor>(Lay);
-  Graph = J->Graph;
+  Graph = LayGraph = J->Graph;
   watchFiles();
   ChangeAt = J->Started;
   say("new kernel from texcc after " + ms(nowSeconds() - J->Started) + ", " +
