@@ -17,12 +17,13 @@ Renderer::~Renderer() {
 }
 
 cl::Program Renderer::buildForeground(const std::string &Path, const std::string &Source,
-                                      const std::string &Tier, const std::string &Reason) {
+                                      const std::string &Tier, const std::string &Reason,
+                                      const std::string &ExtraOptions) {
   BuildEvent E;
   E.Kernel = Tier;
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
-  cl::Program P = Cl->buildProgram(Path, Source, programOptions());
+  cl::Program P = Cl->buildProgram(Path, Source, programOptions() + ExtraOptions);
   // PoCL's compile at the first launch is part of the build the frame waits for.
   std::vector<std::string> Names = textureKernelNames();
   if (tierUsesUniforms(Tier))
@@ -92,10 +93,11 @@ void Renderer::buildTextureKernel() {
   const char *Reason = FramesRendered ? "edit" : "initial";
   if (!Lay.Caps.InterpFallback) {
     InterpModeSlots = Lay.StackSlots;
-    const std::string Source = Lay.Caps.StackHeadroom && Opts.InterpStackHeadroom
-                                   ? stackHeadroomSource(Lay, Lay.KernelSource, InterpModeSlots)
-                                   : readKernelSource(Lay.KernelSource);
-    activate(buildForeground(Lay.KernelSource, Source, Lay.Mode, Reason), Lay.Mode);
+    const std::string Source = readKernelSource(Lay.KernelSource);
+    const std::string Headroom = Lay.Caps.StackHeadroom && Opts.InterpStackHeadroom
+                                     ? stackHeadroomOption(Lay, Source, InterpModeSlots)
+                                     : "";
+    activate(buildForeground(Lay.KernelSource, Source, Lay.Mode, Reason, Headroom), Lay.Mode);
     return;
   }
   buildShapeTiers(Reason);
@@ -108,14 +110,16 @@ void Renderer::buildShapeTiers(const char *Reason) {
   // behind it, for later rewirings.
   const TierPolicy P = Opts.Tier;
   const std::string ShapeText = readKernelSource(Lay.KernelSource);
-  const std::string FallbackText = interpFallbackSource(Lay, FallbackSlots);
+  const std::string FallbackText = readKernelSource(Lay.InterpFallback);
+  const std::string FallbackHeadroom = stackHeadroomOption(Lay, FallbackText, FallbackSlots);
   const bool ShapeCached = Cl->isCached(ShapeText, programOptions());
-  const bool FallbackCached = Cl->isCached(FallbackText, programOptions());
+  const bool FallbackCached = Cl->isCached(FallbackText, programOptions() + FallbackHeadroom);
   const bool Auto = P == TierPolicy::Auto;
   if (P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached)))
     ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, ShapeTierName, Reason);
   if (P == TierPolicy::Interp || (Auto && FallbackCached))
-    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, FallbackTierName, Reason);
+    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, FallbackTierName, Reason,
+                                    FallbackHeadroom);
   activate(ShapeProgram() ? ShapeProgram : InterpProgram,
              ShapeProgram() ? ShapeTierName : FallbackTierName);
   if (Auto && (!ShapeProgram() || !InterpProgram())) {

@@ -86,24 +86,13 @@ cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::stri
 
 } // namespace
 
-std::string interpFallbackSource(const Layout &L, unsigned &Capacity) {
-  return stackHeadroomSource(L, L.InterpFallback, Capacity);
-}
-
-std::string stackHeadroomSource(const Layout &L, const std::string &Path, unsigned &Capacity) {
-  std::string Source = readKernelSource(Path);
+std::string stackHeadroomOption(const Layout &L, const std::string &Source, unsigned &Capacity) {
   Capacity = L.StackSlots;
-  const std::string Define = "#define TEXCC_STACK_SLOTS ";
-  size_t At = Source.find(Define);
-  if (L.Spill || At == std::string::npos)
-    return Source;
-  size_t End = Source.find('\n', At);
+  if (L.Spill || Source.find("#ifndef TEXCC_STACK_SLOTS") == std::string::npos)
+    return "";
   Capacity = std::min(L.StackLimit, std::max(2 * L.StackSlots, L.StackSlots + 4));
   Capacity = std::max(Capacity, L.StackSlots);
-  Source.replace(At, End - At, Define + std::to_string(Capacity) +
-                                   " /* texrender: headroom for rewirings (was " +
-                                   std::to_string(L.StackSlots) + ") */");
-  return Source;
+  return " -DTEXCC_STACK_SLOTS=" + std::to_string(Capacity);
 }
 
 TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
@@ -119,9 +108,11 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
       R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource), Kernels,
                              Options);
     }
-    if (Job.Interp)
-      R.Interp = buildAndWarm(Cl, R.L.InterpFallback, interpFallbackSource(R.L, R.FallbackSlots),
-                              {R.L.Entry}, Options);
+    if (Job.Interp) {
+      const std::string Source = readKernelSource(R.L.InterpFallback);
+      const std::string Headroom = stackHeadroomOption(R.L, Source, R.FallbackSlots);
+      R.Interp = buildAndWarm(Cl, R.L.InterpFallback, Source, {R.L.Entry}, Options + Headroom);
+    }
   } catch (const cl::Error &E) {
     R.Error = std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err());
   } catch (const std::exception &E) {

@@ -40,7 +40,7 @@ struct RendererOptions {
   size_t MaxPathsPerPass = 1u << 18;
   TierPolicy Tier = TierPolicy::Shape; // shape-mode layouts only (TextureTiers.h); texrender
                                        // picks auto for edit sessions
-  /// interp-mode layouts: build the kernel with value-stack headroom (stackHeadroomSource, as
+  /// interp-mode layouts: build the kernel with value-stack headroom (stackHeadroomOption, as
   /// shape mode's fallback has), so that a rewiring that needs a few more slots is an upload,
   /// not a build. texrender sets it for edit sessions.
   bool InterpStackHeadroom = false;
@@ -123,7 +123,7 @@ public:
 
   TierPolicy tierPolicy() const { return Opts.Tier; }
   const std::string &activeTier() const { return ActiveTier; }
-  /// The value-stack slots the built interp fallback holds (interpFallbackSource); 0: none.
+  /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none.
   unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
   /// interp mode: the value-stack slots the built kernel holds (with InterpStackHeadroom more
   /// than the layout's stackSlots).
@@ -158,8 +158,10 @@ private:
   void mapMeshMaterials();
   void buildTextureKernel();
   void buildShapeTiers(const char *Reason);
+  /// ExtraOptions: appended to programOptions() (the value-stack headroom's -D).
   cl::Program buildForeground(const std::string &Path, const std::string &Source,
-                              const std::string &Tier, const std::string &Reason);
+                              const std::string &Tier, const std::string &Reason,
+                              const std::string &ExtraOptions = "");
   void activate(const cl::Program &P, const std::string &Tier);
   std::vector<std::string> textureKernelNames() const;
   void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,

@@ -51,20 +51,19 @@ struct TierBuildResult {
   bool SameLayout = false;   // L is the layout the renderer runs
   cl::Program Shape;         // L's shape kernel (if the job built it)
   cl::Program Interp;        // L's interp fallback (if the job built it)
-  unsigned FallbackSlots = 0; // its value-stack capacity (interpFallbackSource)
+  unsigned FallbackSlots = 0; // its value-stack capacity (stackHeadroomOption)
   double ReadySeconds = 0;
   std::string Error;
 };
 
-/// An interpreter's source (the file at Path, of layout L) with the value stack given
-/// headroom: TEXCC_STACK_SLOTS is the exact peak of the graph it was made from, and a
-/// rewiring that needs one or two slots more would otherwise need a new kernel (and a frame
-/// waiting for its build). The capacity, max(2 N, N + 4) capped at the stack limit, goes to
-/// Capacity; a spilling layout keeps its N (the spill buffer is sized by it).
-std::string stackHeadroomSource(const Layout &L, const std::string &Path, unsigned &Capacity);
-/// The interp fallback's source with headroom (stackHeadroomSource of L.InterpFallback). The
-/// shape kernel keeps its values in locals.
-std::string interpFallbackSource(const Layout &L, unsigned &Capacity);
+/// The build option that gives an interpreter (Source, of layout L) value-stack headroom:
+/// TEXCC_STACK_SLOTS is the exact peak of the graph it was made from, and a rewiring that needs
+/// one or two slots more would otherwise need a new kernel (and a frame waiting for its build).
+/// The capacity, max(2 N, N + 4) capped at the stack limit, goes to Capacity and the result is
+/// " -DTEXCC_STACK_SLOTS=<Capacity>" (the kernel's own #define is under #ifndef; the source is
+/// never edited). A spilling layout keeps its N (the spill buffer is sized by it), and so does a
+/// kernel from a texcc before the #ifndef: then the result is "".
+std::string stackHeadroomOption(const Layout &L, const std::string &Source, unsigned &Capacity);
 
 /// What a background job builds.
 struct TierJob {

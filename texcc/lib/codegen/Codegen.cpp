@@ -84,7 +84,8 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
   const bool Host = Opts.Tgt == Target::Host;
   std::ostringstream OS;
   emitHeaderComment(OS, CG, Opts);
-  OS << "\n#define TEXCC_STACK_SLOTS " << CG.StackSlots << "\n"
+  // texrender may build the interpreter with a deeper value stack (-DTEXCC_STACK_SLOTS=N).
+  OS << "\n#ifndef TEXCC_STACK_SLOTS\n#define TEXCC_STACK_SLOTS " << CG.StackSlots << "\n#endif\n"
      << "#define TEXCC_MAX_OUTPUTS " << std::max(1u, CG.MaxOutputs) << "\n"
      << "#define TEXCC_NUM_MATERIALS " << CG.Materials.size() << "\n"
      << "#define TEXCC_SPILL " << (CG.Spill && !Host ? 1 : 0) << "\n";
