@@ -166,7 +166,7 @@ class Cycles:
     def __init__(self):
         if not os.path.exists(VENV_PYTHON):
             raise common.BenchError("%s missing: python3 -m venv .venv && .venv/bin/pip install "
-                                    "bpy==5.0.1" % VENV_PYTHON)
+                                    "-r scripts/requirements-blender.txt" % VENV_PYTHON)
         self.p = subprocess.Popen([VENV_PYTHON, os.path.abspath(__file__), "--worker"],
                                   stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
         self.version = self._read()["ready"]
@@ -193,13 +193,17 @@ class Cycles:
 # --- The driver ----------------------------------------------------------------------------------
 
 def ensure_bpy():
-    r = subprocess.run([VENV_PYTHON, "-c", "import bpy"], stdout=subprocess.PIPE,
+    """bpy (scripts/requirements-blender.txt, the one pin) and flip-evaluator in .venv."""
+    sys.path.insert(0, os.path.join(common.ROOT, "scripts"))
+    from bpy_env import REQUIREMENTS
+    r = subprocess.run([VENV_PYTHON, "-c", "import bpy, flip_evaluator"], stdout=subprocess.PIPE,
                        stderr=subprocess.PIPE) if os.path.exists(VENV_PYTHON) else None
     if r is None or r.returncode != 0:
-        common.log("installing bpy==5.0.1 into .venv (about 370 MB)")
+        common.log("installing %s and flip-evaluator into .venv (about 370 MB)" % REQUIREMENTS)
         if not os.path.exists(VENV_PYTHON):
             common.run([sys.executable, "-m", "venv", os.path.join(common.ROOT, ".venv")])
-        common.run([VENV_PYTHON, "-m", "pip", "install", "bpy==5.0.1", "flip-evaluator"])
+        common.run([VENV_PYTHON, "-m", "pip", "install", "-r", REQUIREMENTS, "-r",
+                    os.path.join(common.ROOT, "bench", "requirements.txt")])
 
 
 def make_blends(tools, variants=VARIANTS):

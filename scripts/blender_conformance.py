@@ -26,7 +26,9 @@ import subprocess
 import sys
 import time
 
-BPY_VERSION = "5.0.1"
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bpy_env import BPY_VERSION, ensure_bpy  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "testsuite", "Inputs", "blender")
 
@@ -35,26 +37,6 @@ OUT = os.path.join(ROOT, "testsuite", "Inputs", "blender")
 ORIGIN = (-1.3, -0.7, 0.2)
 AXIS_U = (4.0, 0.0, 1.0)
 AXIS_V = (0.0, 4.0, -1.5)
-
-
-def ensure_bpy():
-    try:
-        import bpy  # noqa: F401
-        if bpy.app.version_string != BPY_VERSION:
-            sys.exit("blender_conformance: bpy %s found, %s pinned" %
-                     (bpy.app.version_string, BPY_VERSION))
-        return
-    except ImportError:
-        pass
-    venv_python = os.path.join(ROOT, ".venv", "bin", "python")
-    if os.path.realpath(sys.executable) == os.path.realpath(venv_python) and \
-            os.environ.get("TEXCC_BPY_INSTALLED"):
-        sys.exit("blender_conformance: bpy==%s did not install into .venv" % BPY_VERSION)
-    if not os.path.exists(venv_python):
-        subprocess.check_call([sys.executable, "-m", "venv", os.path.join(ROOT, ".venv")])
-    subprocess.check_call([venv_python, "-m", "pip", "install", "bpy==" + BPY_VERSION])
-    os.environ["TEXCC_BPY_INSTALLED"] = "1"
-    os.execv(venv_python, [venv_python] + sys.argv)
 
 
 # --- Variants -------------------------------------------------------------------------------
@@ -568,7 +550,7 @@ def main():
     ap.add_argument("--only", nargs="*", help="variant names or prefixes (default: all)")
     ap.add_argument("--size", type=int, default=48, help="texels per side (points: size^2)")
     args = ap.parse_args()
-    ensure_bpy()
+    ensure_bpy("blender_conformance")
     import bpy
     import numpy as np
     start = time.time()

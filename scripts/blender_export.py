@@ -24,11 +24,9 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
-BPY_VERSION = "5.0.1"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -50,6 +48,7 @@ class Problems:
 
 # The node table and the library signatures (one owner: blender_nodes.py).
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bpy_env import ensure_bpy  # noqa: E402
 from blender_nodes import (  # noqa: E402
     DEFAULT_SURFACE, LIBRARY, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED, PRINCIPLED_INPUTS,
     SHADERS, VECTOR_MATH_OPS, check_table, library_signatures, supported_nodes_text)
@@ -807,27 +806,6 @@ def short_floats(value):
 
 # --- Driver ---------------------------------------------------------------------------------
 
-def ensure_bpy():
-    try:
-        import bpy  # noqa: F401
-        return
-    except ImportError:
-        pass
-    venv_python = os.path.join(ROOT, ".venv", "bin", "python")
-    if os.path.realpath(sys.executable) == os.path.realpath(venv_python) and \
-            os.environ.get("TEXCC_BPY_INSTALLED"):
-        sys.exit("blender_export: error: bpy==%s did not install into .venv" % BPY_VERSION)
-    if not os.path.exists(venv_python):
-        subprocess.check_call([sys.executable, "-m", "venv", os.path.join(ROOT, ".venv")])
-    try:
-        subprocess.check_call([venv_python, "-c", "import bpy"], stdout=subprocess.DEVNULL,
-                              stderr=subprocess.DEVNULL)
-    except subprocess.CalledProcessError:
-        subprocess.check_call([venv_python, "-m", "pip", "install", "bpy==" + BPY_VERSION])
-        os.environ["TEXCC_BPY_INSTALLED"] = "1"
-    os.execv(venv_python, [venv_python] + sys.argv)
-
-
 def parse_args(argv, inside_blender):
     ap = argparse.ArgumentParser(prog="blender_export.py",
                                  description=__doc__.split("\n")[0])
@@ -879,7 +857,7 @@ def main():
         if not os.path.isdir(parent):
             raise ExportError("%s: the folder does not exist" % parent)
         if not inside_blender:
-            ensure_bpy()
+            ensure_bpy("blender_export", exact=False)
         import bpy
         if options.blend and os.path.abspath(options.blend) != os.path.abspath(
                 bpy.data.filepath or ""):

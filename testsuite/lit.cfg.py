@@ -76,5 +76,6 @@ if glob.glob(os.path.join(config.texcc_src_root, ".venv", "lib", "python3*", "si
                           "bpy-*.dist-info")):
     config.available_features.add("bpy")
 else:
-    lit_config.note("bpy is not installed in .venv/ (pip install bpy==5.0.1): tests that REQUIRE "
-                    "bpy (the Blender exporter on .blend files) are skipped")
+    lit_config.note("bpy is not installed in .venv/ (pip install -r "
+                    "scripts/requirements-blender.txt): tests that REQUIRE bpy (the Blender "
+                    "exporter on .blend files) are skipped")

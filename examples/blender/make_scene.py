@@ -31,30 +31,13 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
 
-BPY_VERSION = "5.0.1"
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from bpy_env import ensure_bpy  # noqa: E402
 VARIANTS = ("diffuse", "rust-model", "rust-all", "scratches-model")
-
-
-def ensure_bpy():
-    try:
-        import bpy  # noqa: F401
-        return
-    except ImportError:
-        pass
-    venv_python = os.path.join(ROOT, ".venv", "bin", "python")
-    if os.path.realpath(sys.executable) == os.path.realpath(venv_python) and \
-            os.environ.get("TEXCC_BPY_INSTALLED"):
-        sys.exit("make_scene: bpy==%s did not install into .venv" % BPY_VERSION)
-    if not os.path.exists(venv_python):
-        subprocess.check_call([sys.executable, "-m", "venv", os.path.join(ROOT, ".venv")])
-    subprocess.check_call([venv_python, "-m", "pip", "install", "bpy==" + BPY_VERSION])
-    os.environ["TEXCC_BPY_INSTALLED"] = "1"
-    os.execv(venv_python, [venv_python] + sys.argv)
 
 
 # --- Coordinates -------------------------------------------------------------------------------
@@ -387,7 +370,7 @@ def main():
     ap.add_argument("--spp", type=int, help="Cycles samples (default: the scene's spp)")
     ap.add_argument("--size", help="WxH (default: the scene's film)")
     args = ap.parse_args(argv)
-    ensure_bpy()
+    ensure_bpy("make_scene")
     build(args)
 
 
