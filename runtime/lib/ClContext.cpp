@@ -195,7 +195,9 @@ cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_fl
   // at their first use, and aborts the process (an assertion in PoCL) when that allocation
   // fails. So check first that the host's address space holds this buffer with the others
   // (their sum, reserved and released at once: nothing is touched).
-  if (Device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>()) {
+  // A buffer above the device's per-buffer limit is refused by the driver below, with the limits.
+  if (Device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>() &&
+      Bytes <= Device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>()) {
     size_t Total = Bytes;
     for (const auto &[Name, Size] : Memory)
       if (Name != Label)

@@ -170,8 +170,12 @@ TEST(CodegenWavefront, OneKernelPerNodeAndTheOutputsKernel) {
   EXPECT_TRUE(contains(K, "__kernel void texcc_wf_0("));
   EXPECT_TRUE(contains(K, "__kernel void texcc_wf_1("));
   EXPECT_TRUE(contains(K, "__kernel void texcc_wf_outputs("));
-  EXPECT_TRUE(contains(K, "{1, 1}, /* 0 'painted' */"));
-  EXPECT_TRUE(contains(K, "{0, 0}, /* 1 'plain' */"));
+  // Only 'painted' runs the nodes: each node kernel tests for it, 'plain' returns.
+  EXPECT_TRUE(contains(K, "static inline bool texcc_wf_uses_0(int mat) {"));
+  EXPECT_TRUE(contains(K, "static inline bool texcc_wf_uses_1(int mat) {"));
+  EXPECT_TRUE(contains(K, "case 0: /* 'painted' */"));
+  EXPECT_FALSE(contains(K, "/* 1 'plain' */"));
+  EXPECT_FALSE(contains(K, "case 1: /* 'plain' */"));
   // The constant comes from the record's parameter block: (48 + 16 + 16) / 4 = word 20.
   EXPECT_TRUE(contains(K, "as_float(fakeStack[20u])"));
   EXPECT_TRUE(contains(K, "(float3)(scratch[0u * (uint)numHits + (uint)gid].x)"));
