@@ -471,6 +471,29 @@ def per_hit_section(d):
     return lines
 
 
+def per_hit_nodes_section(d):
+    """Issue 21's rows: single Blender nodes, inline and interp (bench/per_hit.py --nodes)."""
+    title = "## 2f. Per-hit cost of single Blender nodes (textures/blender/)"
+    if not d or "textures" not in d:
+        return [title, "", "Not measured yet (`bench/per_hit.py --nodes`).", ""]
+    load = d["loadAverage"]["before"]
+    lines = [title, "",
+             "`bench/per_hit.py --nodes` (not part of `bench/run`): every node's inline and interp "
+             "kernels in one `texcc-eval --time %d --grid %d` process, rotating order, PoCL on one "
+             "thread; median (minimum) ns per textured hit and the median of per-round ratios to "
+             "the first row's inline. git %s, load average %.1f %.1f %.1f."
+             % (d["rounds"], d["grid"], d["git"], load[0], load[1], load[2]), "",
+             "| node graph | inline | interp | inline / first | interp / first |",
+             "|---|---|---|---|---|"]
+    for name, r in d["textures"].items():
+        c = r["configs"]
+        lines.append("| %s (`%s`) | %.0f (%.0f) | %.0f (%.0f) | %.3fx | %.3fx |" % (
+            name, r["graph"], c["inline"]["medianNsPerHit"], c["inline"]["minNsPerHit"],
+            c["interp"]["medianNsPerHit"], c["interp"]["minNsPerHit"],
+            c["inline"]["medianRatioToFirst"], c["interp"]["medianRatioToFirst"]))
+    return lines + [""]
+
+
 def instructions_section(d):
     if not d:
         return ["## 2d. Instructions per textured hit (callgrind)", "", "Not measured yet.", ""]
@@ -795,6 +818,7 @@ def write(args=None):
     lines += superinstructions_section(results["superinstructions"])
     lines += instructions_section(results["instructions"])
     lines += per_hit_section(results["per_hit"])
+    lines += per_hit_nodes_section(common.load("per_hit-blender"))  # a standalone run
     lines += resources_section(results["resources"]) + value_stack_section(results["value_stack"])
     lines += accuracy_section(results["accuracy"])
     lines += stability_section(results["stability"]) + ao_section(results["ao"])
