@@ -28,6 +28,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bpy_env import BPY_VERSION, ensure_bpy  # noqa: E402
+from blender_nodes import MATH_OPS, VECTOR_MATH_OPS  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "testsuite", "Inputs", "blender")
@@ -165,12 +166,7 @@ voronoi_variant("voronoi1d-edge", 1, "DISTANCE_TO_EDGE", scale=2.0, detail=1.5, 
 voronoi_variant("voronoi1d-nsphere", 1, "N_SPHERE_RADIUS", scale=2.0, randomness=0.8)
 
 # Cycles' NodeMathType order: textures/blender/math.cl's operation numbers.
-MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "SINE", "COSINE", "TANGENT", "ARCSINE",
-            "ARCCOSINE", "ARCTANGENT", "POWER", "LOGARITHM", "MINIMUM", "MAXIMUM", "ROUND",
-            "LESS_THAN", "GREATER_THAN", "MODULO", "ABSOLUTE", "ARCTAN2", "FLOOR", "CEIL",
-            "FRACT", "SQRT", "INVERSE_SQRT", "SIGN", "EXPONENT", "RADIANS", "DEGREES", "SINH",
-            "COSH", "TANH", "TRUNC", "SNAP", "WRAP", "COMPARE", "MULTIPLY_ADD", "PINGPONG",
-            "SMOOTH_MIN", "SMOOTH_MAX", "FLOORED_MODULO"]
+# (MATH_OPS: scripts/blender_nodes.py, shared with the exporter.)
 
 for number, op in enumerate(MATH_OPS):
     variant("math-" + op.lower().replace("_", "-"), "ShaderNodeMath",
@@ -297,10 +293,7 @@ variant("mix-vector-non-uniform", "ShaderNodeMix",
         {"factor": "P", "a": [0.25, 0.75, -0.5], "b": [0.5, -1.0, 2.0], "clampFactor": 1})
 
 # Cycles' NodeVectorMathType order: textures/blender/vector_math.cl's operation numbers.
-VECTOR_MATH_OPS = ["ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "CROSS_PRODUCT", "PROJECT", "REFLECT",
-                   "DOT_PRODUCT", "DISTANCE", "LENGTH", "SCALE", "NORMALIZE", "SNAP", "FLOOR",
-                   "CEIL", "MODULO", "FRACTION", "ABSOLUTE", "MINIMUM", "MAXIMUM", "WRAP", "SINE",
-                   "COSINE", "TANGENT", "REFRACT", "FACEFORWARD", "MULTIPLY_ADD", "POWER", "SIGN"]
+# (VECTOR_MATH_OPS: scripts/blender_nodes.py, shared with the exporter.)
 VM_B = (0.7, -1.3, 0.45)
 VM_C = (-0.6, 0.9, 1.4)
 VM_SCALE = 0.8
