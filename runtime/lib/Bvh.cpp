@@ -1,4 +1,5 @@
 #include "texrender/Bvh.h"
+#include "texcc/OutOfMemory.h"
 
 #include <algorithm>
 #include <chrono>
@@ -155,7 +156,14 @@ bool hitBox(const RtBvhNode &N, const Vec3 &O, const Vec3 &InvD, float TMax) {
 
 } // namespace
 
+static Bvh buildBvhSteps(const std::vector<Vec3> &Positions, unsigned MaxLeaf);
+
 Bvh buildBvh(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
+  return texcc::whileAllocating("building the BVH",
+                                [&] { return buildBvhSteps(Positions, MaxLeaf); });
+}
+
+static Bvh buildBvhSteps(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
   const auto T0 = std::chrono::steady_clock::now();
   Bvh Out;
   size_t N = Positions.size() / 3;

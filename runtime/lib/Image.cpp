@@ -1,4 +1,5 @@
 #include "texrender/Image.h"
+#include "texcc/OutOfMemory.h"
 #include "texcc/StaleTemporaries.h"
 #include "texcc/Support/AtomicWrite.h"
 #include "texcc/Support/File.h"
@@ -45,12 +46,27 @@ void checkImageFile(const std::string &Path, const char *What) {
 
 } // namespace
 
+static ImageRGBA readTexture(const std::string &Path);
+static ImageRGBA readExr(const std::string &Path);
+
 ImageRGBA loadTexture(const std::string &Path) {
+  const std::string Step = "reading image '" + Path + "'";
+  return texcc::whileAllocating(Step.c_str(), [&] { return readTexture(Path); });
+}
+
+ImageRGBA loadExr(const std::string &Path) {
+  const std::string Step = "reading image '" + Path + "'";
+  return texcc::whileAllocating(Step.c_str(), [&] { return readExr(Path); });
+}
+
+static ImageRGBA readTexture(const std::string &Path) {
   checkImageFile(Path, "image");
   ImageRGBA Img;
   int N = 0;
   if (stbi_is_hdr(Path.c_str())) {
     float *D = stbi_loadf(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
+    if (!D && std::string(stbi_failure_reason()) == "outofmem")
+      throw std::bad_alloc(); // named by loadTexture's step
     if (!D)
       throw Error(Path + ": cannot load image: " + stbi_failure_reason());
     Img.Pixels.assign(D, D + size_t(Img.Width) * Img.Height * 4);
@@ -58,6 +74,8 @@ ImageRGBA loadTexture(const std::string &Path) {
     return Img;
   }
   unsigned char *D = stbi_load(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
+  if (!D && std::string(stbi_failure_reason()) == "outofmem")
+    throw std::bad_alloc(); // named by loadTexture's step
   if (!D)
     throw Error(Path + ": cannot load image: " + stbi_failure_reason());
   // A lookup table: 256 pow() calls instead of one per texel.
@@ -75,7 +93,7 @@ ImageRGBA loadTexture(const std::string &Path) {
   return Img;
 }
 
-ImageRGBA loadExr(const std::string &Path) {
+static ImageRGBA readExr(const std::string &Path) {
   checkImageFile(Path, "EXR");
   ImageRGBA Img;
   float *D = nullptr;
@@ -155,9 +173,12 @@ void writeImage(const std::string &Path, int Width, int Height, const std::vecto
   std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
   if (Ext != ".exr" && Ext != ".png")
     throw Error(Path + ": unknown image format '" + Ext + "' (expected .png or .exr)");
-  std::vector<float> Finite = finiteValues(RGB);
-  writeAtomically(Path, [&](const std::string &Temp) {
-    (Ext == ".exr" ? writeExr : writePng)(Path, Temp, Width, Height, Finite);
+  const std::string Step = "writing the image '" + Path + "'";
+  texcc::whileAllocating(Step.c_str(), [&] {
+    std::vector<float> Finite = finiteValues(RGB);
+    writeAtomically(Path, [&](const std::string &Temp) {
+      (Ext == ".exr" ? writeExr : writePng)(Path, Temp, Width, Height, Finite);
+    });
   });
 }
 

@@ -1,6 +1,7 @@
 // OBJ loading through tinyobjloader, with gzip support (zlib) and generated normals.
 #include "texrender/Error.h"
 #include "texrender/Scene.h"
+#include "texcc/OutOfMemory.h"
 #include "texcc/Support/File.h"
 #include "texcc/Support/Numbers.h"
 
@@ -184,7 +185,14 @@ void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
 
 } // namespace
 
+static TriangleMesh readObj(const std::string &Path);
+
 TriangleMesh loadObj(const std::string &Path) {
+  const std::string Step = "loading OBJ '" + Path + "'";
+  return texcc::whileAllocating(Step.c_str(), [&] { return readObj(Path); });
+}
+
+static TriangleMesh readObj(const std::string &Path) {
   std::string Text = readMaybeGzipped(Path);
   checkVertexNumbers(Path, Text);
   blankSkinWeightLines(Text);

@@ -1,6 +1,7 @@
 #include "texrender/Scene.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
+#include "texcc/OutOfMemory.h"
 #include "texcc/Support/Numbers.h"
 
 #include <nlohmann/json.hpp>
@@ -224,7 +225,14 @@ std::string jsonReason(const json::exception &E) {
 
 } // namespace
 
+static Scene readScene(const std::string &Path);
+
 Scene loadScene(const std::string &Path) {
+  const std::string Step = "reading '" + Path + "'";
+  return texcc::whileAllocating(Step.c_str(), [&] { return readScene(Path); });
+}
+
+static Scene readScene(const std::string &Path) {
   std::string Text = readWholeFile(Path, " scene file");
   json J;
   try {

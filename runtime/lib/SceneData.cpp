@@ -1,5 +1,6 @@
 #include "texrender/SceneData.h"
 #include "texrender/Error.h"
+#include "texcc/OutOfMemory.h"
 
 #include <cmath>
 #include <filesystem>
@@ -230,7 +231,15 @@ void buildMaterials(const Layout &L, std::vector<RtMaterial> &Materials,
   }
 }
 
+static SceneData gatherSceneData(const Scene &S, const Layout &L);
+
 SceneData buildSceneData(const Scene &S, const Layout &L) {
+  // Loading an OBJ and building the BVH name their own steps inside this one.
+  return texcc::whileAllocating("gathering the scene's triangles",
+                                [&] { return gatherSceneData(S, L); });
+}
+
+static SceneData gatherSceneData(const Scene &S, const Layout &L) {
   SceneData D;
   GatheredMesh G;
   gatherMeshes(S, L, D, G);

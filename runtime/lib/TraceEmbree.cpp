@@ -8,6 +8,7 @@
 
 #include "texrender/Trace.h"
 #include "texrender/Error.h"
+#include "texcc/OutOfMemory.h"
 
 #include <embree3/rtcore.h>
 
@@ -71,8 +72,12 @@ constexpr size_t Chunk = 2048;   // rays per work unit of a thread
 
 void embreeError(void *User, RTCError Code, const char *Message) {
   auto *Last = static_cast<std::string *>(User);
-  if (Last->empty())
-    *Last = std::string(Message ? Message : "") + " (Embree error " + std::to_string(int(Code)) + ")";
+  try {
+    if (Last->empty())
+      *Last = std::string(Message ? Message : "") + " (Embree error " + std::to_string(int(Code)) + ")";
+  } catch (const std::bad_alloc &) {
+    // Out of memory: check() reads the code from rtcGetDeviceError; nothing may unwind into Embree.
+  }
 }
 
 class EmbreeTrace final : public Trace {
@@ -260,6 +265,8 @@ private:
   }
 
   void check(const char *What) {
+    if (rtcGetDeviceError(Device) == RTC_ERROR_OUT_OF_MEMORY)
+      throw std::bad_alloc(); // named by makeEmbreeTrace's step
     if (!LastError.empty())
       throw Error(std::string(What) + ": " + LastError);
   }
@@ -274,7 +281,8 @@ private:
 } // namespace
 
 std::unique_ptr<Trace> makeEmbreeTrace(const TraceContext &C) {
-  return std::make_unique<EmbreeTrace>(C);
+  return texcc::whileAllocating("building the BVH (Embree)",
+                                [&] { return std::make_unique<EmbreeTrace>(C); });
 }
 
 } // namespace texrender

@@ -39,17 +39,21 @@ inline char *&reserve() {
 }
 } // namespace detail
 
-/// A std::bad_alloc that says what was being allocated (static text: reporting allocates
-/// nothing).
+/// A std::bad_alloc that says what was being allocated. It keeps its own copy of the text
+/// (a step may name a file, "loading OBJ 'mesh.obj'", in a string that unwinding destroys),
+/// in a fixed buffer: neither making nor reporting it allocates. Longer text is cut.
 class OutOfMemory : public std::bad_alloc {
 public:
-  explicit OutOfMemory(const char *While) : While(While) {}
+  explicit OutOfMemory(const char *Step) {
+    std::snprintf(While, sizeof(While), "%s", Step ? Step : "");
+  }
   const char *what() const noexcept override { return "out of memory"; }
-  const char *While;
+  char While[512];
 };
 
 /// Runs F as the step While: a failed allocation inside is reported as "out of memory while
-/// <While>" (the innermost step wins).
+/// <While>" (the innermost step wins). While must live until F returns (a string the caller
+/// built before the call, or static text).
 template <typename Fn> decltype(auto) whileAllocating(const char *While, Fn &&F) {
   struct Scope {
     const char *Outer;
