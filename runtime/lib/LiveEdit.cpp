@@ -5,6 +5,7 @@
 
 #include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
+#include "texcc/OutOfMemory.h"
 
 #include <algorithm>
 #include <chrono>
@@ -358,8 +359,10 @@ EditAction LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
   if (!Lay.Caps.ReEncodes)
     return planEdit({}, Lay.Caps, {});
   texcc::graph::DiagnosticSink Diags;
-  bool Ok = E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
-                                   : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
+  bool Ok = texcc::whileAllocating("encoding the graph for a live edit", [&] {
+    return E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
+                                  : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
+  });
   if (!Ok)
     throw Error("edit '" + E.Text + "': " + firstError(Diags));
   const auto &CG = Editor->compiled();
