@@ -46,6 +46,12 @@ void checkImageFile(const std::string &Path, const char *What) {
 
 } // namespace
 
+/// stb_image's reason for a failed allocation ("outofmem", or its user message).
+static bool stbiOutOfMemory() {
+  const std::string Why = stbi_failure_reason() ? stbi_failure_reason() : "";
+  return Why == "outofmem" || Why == "Out of memory";
+}
+
 static ImageRGBA readTexture(const std::string &Path);
 static ImageRGBA readExr(const std::string &Path);
 
@@ -65,7 +71,7 @@ static ImageRGBA readTexture(const std::string &Path) {
   int N = 0;
   if (stbi_is_hdr(Path.c_str())) {
     float *D = stbi_loadf(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
-    if (!D && std::string(stbi_failure_reason()) == "outofmem")
+    if (!D && stbiOutOfMemory())
       throw std::bad_alloc(); // named by loadTexture's step
     if (!D)
       throw Error(Path + ": cannot load image: " + stbi_failure_reason());
@@ -74,7 +80,7 @@ static ImageRGBA readTexture(const std::string &Path) {
     return Img;
   }
   unsigned char *D = stbi_load(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
-  if (!D && std::string(stbi_failure_reason()) == "outofmem")
+  if (!D && stbiOutOfMemory())
     throw std::bad_alloc(); // named by loadTexture's step
   if (!D)
     throw Error(Path + ": cannot load image: " + stbi_failure_reason());
