@@ -25,7 +25,7 @@ With --nodes it measures instead single Blender nodes (NODE_GRAPHS: Noise 3D fBM
 Voronoi 3D F1 Euclidean, and the old fbm3 with 9 octaves) in inline and interp, all six in one
 process (bench/results/per_hit-blender.json).
 
-usage: bench/per_hit.py [--build DIR] [--rounds N] [--grid N] [--only rust,scratches]
+usage: bench/per_hit.py [--build DIR] [--rounds N] [--grid N] [--only rust,scratches,marble,wood]
                         [--nodes] [--out FILE]
 """
 import argparse
@@ -49,7 +49,9 @@ CONFIGS = (("inline", "inline", []),
            ("interp-unchecked", "interp", ["--no-checks"]),
            ("shape-unchecked", "shape", ["--no-checks"]))
 GRAPHS = {"rust": os.path.join("examples", "rust", "graph.json"),
-          "scratches": os.path.join("examples", "scratches", "graph.json")}
+          "scratches": os.path.join("examples", "scratches", "graph.json"),
+          "marble": os.path.join("examples", "marble", "graph.json"),
+          "wood": os.path.join("examples", "wood", "graph.json")}
 # Blender nodes of textures/blender/ (issue 21), one node each, in inline and interp only: a
 # Noise Texture 3D fBM of Detail 8 and a Voronoi Texture 3D F1 Euclidean, beside the old
 # library's fbm3 (9 octaves, as Detail 8 sums) that the noise replaces. Not part of bench/run's
@@ -156,7 +158,7 @@ def main():
     ap.add_argument("--work", default=None)
     ap.add_argument("--rounds", type=int, default=101)
     ap.add_argument("--grid", type=int, default=4096)
-    ap.add_argument("--only", default=",".join(GRAPHS))
+    ap.add_argument("--only", default="rust,scratches")
     ap.add_argument("--nodes", action="store_true",
                     help="the Blender node rows (NODE_GRAPHS) instead, in one process")
     ap.add_argument("--out", default=os.path.join(common.RESULTS, "per_hit.json"))

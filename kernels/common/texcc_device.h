@@ -80,6 +80,23 @@ static inline bool texcc_loop_continues(const TexccCtx *c, int line) {
   return false;
 }
 
+/* A loop whose trip count texcc knows (a constant `for`) is charged once before it runs:
+ * `if (!texcc_loop_charge(texcc_ctx, N, __LINE__)) {} else for (...)`. Not enough budget left:
+ * the loop does not run, none is left, and its line is kept as for texcc_loop_continues. */
+static inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
+  TexccGuard *g = c->guard;
+  if (!TEXCC_CHECKS || g->loopsLeft >= n) {
+    g->loopsLeft -= n;
+    return true;
+  }
+  g->loopsLeft = 0u;
+  if (g->line == 0) {
+    g->line = line;
+    g->lineAt = g->at;
+  }
+  return false;
+}
+
 /* texcc turns every read `p[i]` of a __global array parameter into
  * `texcc_read_T(texcc_ctx, p, (i), texcc_n_p, __LINE__)`, texcc_n_p being the array's length
  * (a hidden parameter texcc adds). Out of range: 0, and the first such read's line, node, index

@@ -361,6 +361,20 @@ inline bool texcc_loop_continues(const TexccCtx *c, int line) {
   return false;
 }
 
+inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
+  TexccGuard *g = c->guard;
+  if (!TEXCC_CHECKS || g->loopsLeft >= n) {
+    g->loopsLeft -= n;
+    return true;
+  }
+  g->loopsLeft = 0u;
+  if (g->line == 0) {
+    g->line = line;
+    g->lineAt = g->at;
+  }
+  return false;
+}
+
 inline bool texcc_index_ok(const TexccCtx *c, long long i, uint n, int line) {
   if (!TEXCC_CHECKS || (i >= 0 && static_cast<unsigned long long>(i) < n))
     return true;

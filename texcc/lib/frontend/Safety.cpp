@@ -22,6 +22,81 @@ void LoopBudget::registerMatchers(MatchFinder &Finder) {
       this);
 }
 
+/// Charged once before a loop whose trip count the front end knows (constantTripCount).
+static const char *const LoopCharge = "texcc_loop_charge(texcc_ctx, ";
+
+/// True when every use of V under S only reads it (an lvalue-to-rvalue conversion): no
+/// assignment, increment or address taken.
+static bool onlyReads(const Stmt *S, const Stmt *Parent, const VarDecl *V) {
+  if (!S)
+    return true;
+  if (const auto *Ref = dyn_cast<DeclRefExpr>(S); Ref && Ref->getDecl() == V) {
+    const auto *Cast = dyn_cast_or_null<ImplicitCastExpr>(Parent);
+    return Cast && Cast->getCastKind() == CK_LValueToRValue;
+  }
+  for (const Stmt *Child : S->children())
+    if (!onlyReads(Child, S, V))
+      return false;
+  return true;
+}
+
+/// The number of iterations of `for (int i = A; i OP B; ++i / i++ / --i / i--)` with integer
+/// constants A and B, i a signed integer of at least 32 bits that the body only reads and
+/// OP one of < <= > >= !=; std::nullopt for any other loop (or one that would not end).
+static std::optional<uint64_t> constantTripCount(const ForStmt *F, const ASTContext &Ctx) {
+  const auto *Init = dyn_cast_or_null<DeclStmt>(F->getInit());
+  if (!Init || !Init->isSingleDecl())
+    return std::nullopt;
+  const auto *V = dyn_cast<VarDecl>(Init->getSingleDecl());
+  if (!V || !V->getInit() || !V->getType()->isSignedIntegerType() ||
+      Ctx.getTypeSize(V->getType()) < 32 || V->getType().isVolatileQualified())
+    return std::nullopt;
+  auto constant = [&](const Expr *E) -> std::optional<int64_t> {
+    if (!E || E->isValueDependent())
+      return std::nullopt;
+    Expr::EvalResult R;
+    if (!E->EvaluateAsInt(R, Ctx))
+      return std::nullopt;
+    const llvm::APSInt &I = R.Val.getInt();
+    if (I.getMinSignedBits() > 32)
+      return std::nullopt;
+    return I.getExtValue();
+  };
+  std::optional<int64_t> Start = constant(V->getInit());
+  const auto *Cond = dyn_cast_or_null<BinaryOperator>(F->getCond());
+  const auto *Inc = dyn_cast_or_null<UnaryOperator>(F->getInc());
+  if (!Start || !Cond || !Inc || !Inc->isIncrementDecrementOp())
+    return std::nullopt;
+  const auto *IncRef = dyn_cast<DeclRefExpr>(Inc->getSubExpr()->IgnoreParens());
+  const auto *CondRef = dyn_cast<DeclRefExpr>(Cond->getLHS()->IgnoreParenImpCasts());
+  if (!IncRef || IncRef->getDecl() != V || !CondRef || CondRef->getDecl() != V)
+    return std::nullopt;
+  std::optional<int64_t> End = constant(Cond->getRHS());
+  if (!End || !onlyReads(F->getBody(), F, V) || !onlyReads(Cond->getRHS(), Cond, V))
+    return std::nullopt;
+  const int64_t A = *Start, B = *End;
+  const bool Up = Inc->isIncrementOp();
+  switch (Cond->getOpcode()) {
+  case BO_LT:
+    return Up ? std::optional<uint64_t>(B > A ? B - A : 0) : std::nullopt;
+  case BO_LE:
+    return Up && B < INT32_MAX ? std::optional<uint64_t>(B >= A ? B - A + 1 : 0) : std::nullopt;
+  case BO_GT:
+    return !Up ? std::optional<uint64_t>(A > B ? A - B : 0) : std::nullopt;
+  case BO_GE:
+    return !Up && B > INT32_MIN ? std::optional<uint64_t>(A >= B ? A - B + 1 : 0)
+                                : std::nullopt;
+  case BO_NE:
+    if (Up && A <= B)
+      return B - A;
+    if (!Up && A >= B)
+      return A - B;
+    return std::nullopt;
+  default:
+    return std::nullopt;
+  }
+}
+
 /// The tokens of a loop head, from its '(' to its ')', spelled in one file.
 struct LoopHead {
   FileID File;
@@ -85,6 +160,17 @@ void LoopBudget::run(const MatchFinder::MatchResult &Result) {
     // condition ends does not count.
     FC.Edits.replaceToken(LParen, "((");
     FC.Edits.replaceToken(RParen, ") && " + Tick + ")");
+    return;
+  }
+  // A loop of a known trip count N is charged once before it runs, so that its iterations carry
+  // no test (and the device compiler can unroll it): for (...) -> if (!charge(N)) {} else
+  // for (...), the empty branch first so that an `else` after the loop keeps its `if`.
+  const auto *For = cast<ForStmt>(Loop);
+  SourceLocation ForLoc = For->getForLoc();
+  if (std::optional<uint64_t> Trips = constantTripCount(For, FC.Ctx);
+      Trips && ForLoc.isFileID() && FC.SM.getFileID(ForLoc) == Head->File) {
+    FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopCharge) + std::to_string(*Trips) +
+                                      "u, __LINE__)) {} else for");
     return;
   }
   // for (init; c; inc) -> for (init; (c) && tick; inc); for (init;; inc) -> for (init; tick; inc).
