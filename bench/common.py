@@ -189,3 +189,14 @@ def load(name):
 
 def log(msg):
     print("bench: " + msg, flush=True)
+
+
+# Number formats of the report (bench/report.py, bench/report_peers.py).
+def fmt(x, digits=3):
+    if x is None:
+        return "n/a"
+    return ("%%.%dg" % digits) % x
+
+
+def pct(x):
+    return ("%+.1f%%" if abs(x) < 10 else "%+.0f%%") % x

@@ -1,0 +1,126 @@
+"""BENCHMARKS.md's sections on texrender beside Blender Cycles (bench/cycles.py) and on single
+Blender nodes (bench/per_hit.py --nodes); bench/report.py assembles the page."""
+import common
+from common import fmt, pct
+
+
+def cycles_overheads():
+    """{"rust": %, "scratches": %}: measured Cycles' overhead over diffuse at 1 spp
+    (bench/results/cycles.json), the model textured as in Table 1."""
+    d = common.load("cycles") or {}
+    rows = {(r["renderer"], r["spp"], r["variant"]): r for r in d.get("rows", [])}
+    base = rows.get(("cycles", 1, "diffuse"))
+    out = {}
+    for v in ("rust-model", "scratches-model"):
+        r = rows.get(("cycles", 1, v))
+        if r and base:
+            f, fb = d["cyclesFixedSeconds"][v], d["cyclesFixedSeconds"]["diffuse"]
+            out[v.split("-")[0]] = 100 * (common.median(
+                [(t - f) / (b - fb) for t, b in zip(r["raw"], base["raw"])]) - 1)
+    return out
+
+
+def cycles_section(d):
+    """bench/cycles.py: texrender against measured Cycles on the atrium (issues 22 and 24)."""
+    lines = ["## Side by side with Cycles (atrium)", ""]
+    if not d or not d.get("rows"):
+        return lines + ["Not measured yet: run `python3 bench/cycles.py` (or `bench/run --only "
+                        "cycles`); how to run it and what it measures: "
+                        "[bench/cycles.md](bench/cycles.md).", ""]
+    loads = d.get("loadAverage1min") or [0.0]
+    lines += ["`%s`, %s, Cycles %s (bpy, CPU, both threads), %s, max depth %d (Cycles "
+              "max_bounces %d), %d repetitions interleaved (every renderer and variant in each, "
+              "rotating order), medians; 1-minute load average %.1f-%.1f on 2 cores%s. Cycles: "
+              "`render.render()` in one warm process, which includes Cycles' scene sync and BVH "
+              "build (a 16x16 1-spp render of the same file, median %.2f-%.2f s, is that fixed "
+              "part; \"Cycles less fixed\" subtracts it). texrender: `renderSeconds` (the frame, "
+              "without BVH and kernel builds), default mode; rust and scratches are the examples' "
+              "texcc graphs, not the Blender node trees, so their rows compare work, not pixels. "
+              "Method and caveats: [bench/cycles.md](bench/cycles.md)." % (
+                  d["command"], d["date"], d.get("cyclesVersion", "?"), d["size"], d["maxDepth"],
+                  d["cyclesMaxBounces"], d["repetitions"], min(loads), max(loads),
+                  "" if d.get("complete", True) else " (run cut short: only the rows below)",
+                  min(d["cyclesFixedSeconds"].values()), max(d["cyclesFixedSeconds"].values())),
+              ""]
+    for part in d.get("parts", []):
+        pl = part.get("loadAverage1min") or [0.0]
+        lines += ["Added by `%s` (%s, %s, %d repetitions, 1-minute load %.1f-%.1f%s): its rows "
+                  "replace the first run's at %s spp." % (
+                      part["command"], part["date"], part["size"], part["repetitions"], min(pl),
+                      max(pl), "" if part.get("complete") else ", cut short",
+                      ", ".join(str(x) for x in part["spps"])), ""]
+    lines += ["| spp | variant | Cycles | Cycles less fixed | texrender auto (Embree) | "
+              "texrender opencl | auto / Cycles | auto / Cycles less fixed | overhead over diffuse: "
+              "Cycles | auto | opencl |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    rows = {(r["spp"], r["renderer"], r["variant"]): r for r in d["rows"]}
+    for spp in sorted({r["spp"] for r in d["rows"]}):
+        for v in ("diffuse", "rust-model", "rust-all", "scratches-model"):
+            c, a, o = (rows.get((spp, n, v)) for n in ("cycles", "texrender-auto",
+                                                      "texrender-opencl"))
+            if not (c and a):
+                continue
+            lines.append("| %d | %s | %.2f s | %.2f s | %.2f s | %s | **%.2fx** | %.2fx | %s | "
+                         "%s | %s |"
+                         % (spp, v, c["median"], c["medianWithoutFixed"], a["median"],
+                            "%.2f s" % o["median"] if o else "not run", a["overCyclesRender"],
+                            a["overCyclesFrame"], pct(c["overheadPercent"]),
+                            pct(a["overheadPercent"]), pct(o["overheadPercent"]) if o else "-"))
+    top = max(r["spp"] for r in d["rows"])
+    lines += ["", "Where texrender's time goes at %d spp (median stage seconds, stats.json; the "
+              "Embree stages are wall time, the OpenCL ones device time):" % top, ""]
+    for r in d["rows"]:
+        if r["spp"] == top and r["renderer"] != "cycles" and r["variant"] in ("diffuse",
+                                                                               "rust-all"):
+            total = sum(r["stages"].values()) or 1.0
+            big = sorted(r["stages"].items(), key=lambda kv: -kv[1])[:5]
+            lines.append("- %s, %s: %s" % (r["variant"], r["renderer"], ", ".join(
+                "`%s` %.2f s (%.0f%%)" % (n, t, 100 * t / total) for n, t in big)))
+    lines += ["", "Raw times (seconds, in repetition order):", ""]
+    for r in d["rows"]:
+        lines.append("- %d spp, %s, %s: %s" % (r["spp"], r["variant"], r["renderer"],
+                                               ", ".join("%.2f" % t for t in r["raw"])))
+    ag = d.get("agreement")
+    if ag:
+        lines += ["", "Image agreement: each renderer at high spp; mean linear RGB, texrender "
+                  "relative to Cycles, per region (model: pixels wholly on the gears; rest: "
+                  "pixels wholly off them), and mean HDR-FLIP between the two images (noise "
+                  "included). Diffuse: texrender's own atrium scene; rust and scratches: what "
+                  "`scripts/blender_export.py` exports from the very .blend Cycles renders "
+                  "(the Blender node trees through textures/blender/).", "",
+                  "| variant | size, spp | region | pixels | Cycles RGB | texrender RGB | "
+                  "difference | FLIP |", "|---|---|---|---|---|---|---|---|"]
+        for v, res in ag["results"].items():
+            if "error" in res:
+                lines.append("| %s | - | not measured: %s | | | | | |" % (
+                    v, res["error"].replace("|", "/")))
+                continue
+            for name, g in res["regions"].items():
+                lines.append("| %s | %s, %d | %s | %d | %s | %s | %s | %s |" % (
+                    v, res.get("size", ag.get("size")), res.get("spp", ag.get("spp")), name,
+                    g["pixels"], ", ".join("%.4f" % x for x in g["a"]),
+                    ", ".join("%.4f" % x for x in g["b"]),
+                    ", ".join(pct(x) for x in g["relDiffPercent"]), fmt(res.get("flip"))))
+    return lines + [""]
+
+
+def per_hit_nodes_section(d):
+    """Issue 21's rows: single Blender nodes, inline and interp (bench/per_hit.py --nodes)."""
+    title = "## 2f. Per-hit cost of single Blender nodes (textures/blender/)"
+    if not d or "textures" not in d:
+        return [title, "", "Not measured yet (`bench/per_hit.py --nodes`).", ""]
+    load = d["loadAverage"]["before"]
+    lines = [title, "",
+             "`bench/per_hit.py --nodes` (not part of `bench/run`): every node's inline and interp "
+             "kernels in one `texcc-eval --time %d --grid %d` process, rotating order, PoCL on one "
+             "thread; median (minimum) ns per textured hit and the median of per-round ratios to "
+             "the first row's inline. git %s, load average %.1f %.1f %.1f."
+             % (d["rounds"], d["grid"], d["git"], load[0], load[1], load[2]), "",
+             "| node graph | inline | interp | inline / first | interp / first |",
+             "|---|---|---|---|---|"]
+    for name, r in d["textures"].items():
+        c = r["configs"]
+        lines.append("| %s (`%s`) | %.0f (%.0f) | %.0f (%.0f) | %.3fx | %.3fx |" % (
+            name, r["graph"], c["inline"]["medianNsPerHit"], c["inline"]["minNsPerHit"],
+            c["interp"]["medianNsPerHit"], c["interp"]["minNsPerHit"],
+            c["inline"]["medianRatioToFirst"], c["interp"]["medianRatioToFirst"]))
+    return lines + [""]
