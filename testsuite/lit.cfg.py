@@ -79,3 +79,19 @@ else:
     lit_config.note("bpy is not installed in .venv/ (pip install -r "
                     "scripts/requirements-blender.txt): tests that REQUIRE bpy (the Blender "
                     "exporter on .blend files) are skipped")
+
+# REQUIRES: aiohttp — the browser preview's server (scripts/serve.py) and its tests;
+# `scripts/serve.sh --install` puts it into .venv/ (scripts/requirements-serve.txt).
+# REQUIRES: chromium — the browser test drives Debian's chromium + chromium-driver with selenium.
+import importlib.util  # noqa: E402
+import shutil  # noqa: E402
+if importlib.util.find_spec("aiohttp"):
+    config.available_features.add("aiohttp")
+else:
+    lit_config.note("aiohttp is not installed (scripts/serve.sh --install): the browser "
+                    "preview's tests (REQUIRES: aiohttp) are skipped")
+if shutil.which("chromium") and shutil.which("chromedriver") and importlib.util.find_spec("selenium"):
+    config.available_features.add("chromium")
+else:
+    lit_config.note("chromium, chromium-driver (apt) or selenium (scripts/serve.sh --install) "
+                    "is missing: the browser test (REQUIRES: chromium) is skipped")

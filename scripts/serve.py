@@ -1,0 +1,424 @@
+"""texrender --serve: the browser preview's front end (docs/live.md, "Browser preview").
+
+  serve.py [--port P] [--listen ADDR] [--allow-host NAME] --texrender PATH [--texcc PATH]
+           -- SCENE --textures DIR [texrender options]
+
+Runs `texrender SCENE ... --watch --control -o TMPDIR/frame.png` (docs/live.md, protocol B),
+serves the page (scripts/serve/) over HTTP and a WebSocket at /ws, forwards every frame
+texrender writes to every page, and turns the page's edit messages into texrender's control
+lines after checking them strictly against the graph (serve/schema.py). The renderer keeps no
+network code; this process has no rendering code.
+"""
+import argparse
+import asyncio
+import json
+import os
+import signal
+import socket
+import sys
+import tempfile
+
+from aiohttp import WSMsgType, web
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve"))
+import schema  # noqa: E402
+
+STATIC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve")
+PAGE_FILES = {"/": ("index.html", "text/html"), "/app.js": ("app.js", "text/javascript"),
+              "/style.css": ("style.css", "text/css")}
+# A page message larger than this is answered with an error and dropped; one larger than
+# WS_HARD_LIMIT closes that page's socket (aiohttp refuses to buffer it: code 1009).
+MAX_MESSAGE = 64 * 1024
+WS_HARD_LIMIT = 1024 * 1024
+# Messages queued for one page; a page that does not read them is disconnected (frames are
+# not queued: a page gets the newest frame only).
+MAX_OUTBOX = 256
+CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; "
+       "connect-src 'self' ws://{host}")
+
+
+def log(message):
+    print(f"serve: {message}", file=sys.stderr, flush=True)
+
+
+class Page:
+    """One connected browser page: its socket and what is waiting to be sent to it."""
+
+    def __init__(self, ws):
+        self.ws = ws
+        self.outbox = []
+        self.frame = None  # (meta, png): replaced by a newer frame before it is sent
+        self.wake = asyncio.Event()
+        self.closed = False
+
+    def send(self, message):
+        if self.closed:
+            return
+        if len(self.outbox) >= MAX_OUTBOX:
+            log("a page does not read its messages: disconnecting it")
+            self.closed = True
+            asyncio.ensure_future(self.ws.close())
+            return
+        self.outbox.append(message)
+        self.wake.set()
+
+    def send_frame(self, meta, png):
+        self.frame = (meta, png)
+        self.wake.set()
+
+    async def pump(self):
+        while not self.closed:
+            await self.wake.wait()
+            self.wake.clear()
+            while self.outbox:
+                await self.ws.send_str(json.dumps(self.outbox.pop(0)))
+            if self.frame is not None:
+                (meta, png), self.frame = self.frame, None
+                await self.ws.send_str(json.dumps(meta))
+                await self.ws.send_bytes(png)
+
+
+class Edits:
+    """The edits waiting for texrender: at most one in flight; the others wait keyed by
+    NODE.ARG, so a newer edit of the same argument replaces an older one (a burst of slider
+    moves collapses to the latest). The number waiting is bounded by the graph's arguments."""
+
+    def __init__(self, write_line):
+        self.write_line = write_line
+        self.waiting = {}  # key -> (line, page, page id, coalesced count)
+        self.in_flight = None  # server id
+        self.owners = {}  # server id -> (page, page id, line, coalesced count)
+        self.next_id = 1
+
+    def submit(self, key, line, page, page_id):
+        old = self.waiting.pop(key, None)
+        coalesced = old[3] + 1 if old else 0
+        self.waiting[key] = (line, page, page_id, coalesced)
+        self.pump()
+
+    def pump(self):
+        if self.in_flight is not None or not self.waiting:
+            return
+        key = next(iter(self.waiting))
+        line, page, page_id, coalesced = self.waiting.pop(key)
+        sid = self.next_id
+        self.next_id += 1
+        self.owners[sid] = (page, page_id, line, coalesced)
+        self.in_flight = sid
+        self.write_line(f"{sid} {line}")
+
+    def answered(self, sid):
+        """texrender answered edit SID: returns its owner, lets the next edit go."""
+        owner = self.owners.pop(sid, None)
+        if sid == self.in_flight:
+            self.in_flight = None
+            self.pump()
+        return owner
+
+    def drop_page(self, page):
+        for key in [k for k, v in self.waiting.items() if v[1] is page]:
+            del self.waiting[key]
+
+
+class Server:
+    """texrender's process, the graph it renders and the connected pages."""
+
+    def __init__(self, opts, tmpdir):
+        self.opts = opts
+        self.frame_path = os.path.join(tmpdir, "frame.png")
+        self.pages = set()
+        self.proc = None
+        self.model = None  # schema.Model once texrender is ready
+        self.ready = None  # texrender's ready event
+        self.last_error = None  # the last failed file change, until a reload
+        self.last_frame = None
+        self.last_edit = None  # (server id, page, page id) of the last applied edit
+        self.edits = Edits(self.write_line)
+        self.exit_code = None
+        self.done = asyncio.Event()
+
+    async def start(self):
+        cmd = [self.opts.texrender] + self.opts.render_args + [
+            "--watch", "--control", "-o", self.frame_path]
+        log("runs " + " ".join(cmd))
+        self.proc = await asyncio.create_subprocess_exec(
+            *cmd, stdin=asyncio.subprocess.PIPE, stdout=asyncio.subprocess.PIPE,
+            stderr=asyncio.subprocess.PIPE, limit=4 * 1024 * 1024)
+        asyncio.ensure_future(self.read_events())
+        asyncio.ensure_future(self.read_log())
+
+    def write_line(self, line):
+        if self.proc and self.proc.returncode is None and not self.proc.stdin.is_closing():
+            self.proc.stdin.write((line + "\n").encode())
+
+    async def read_log(self):
+        async for line in self.proc.stderr:
+            sys.stderr.write(line.decode(errors="replace"))
+            sys.stderr.flush()
+
+    async def read_events(self):
+        async for raw in self.proc.stdout:
+            try:
+                event = json.loads(raw)
+            except ValueError:
+                log("texrender wrote a line that is not JSON: " + raw[:200].decode(errors="replace"))
+                continue
+            try:
+                await self.on_event(event)
+            except Exception as e:  # a bad event must not end the preview
+                log(f"event {event.get('event')!r} not handled: {e!r}")
+        self.exit_code = await self.proc.wait()
+        log(f"texrender ended (exit {self.exit_code})")
+        self.broadcast({"type": "error", "id": None,
+                        "message": f"texrender ended (exit {self.exit_code})"})
+        await asyncio.sleep(0.2)  # lets the pages receive it
+        self.done.set()
+
+    async def load_model(self):
+        self.model = await asyncio.get_running_loop().run_in_executor(
+            None, schema.Model.load, self.ready["graph"], self.ready["sources"], self.opts.texcc)
+
+    async def reload(self, what):
+        """graph.json changed: its values replace the page's edits; a source changed: the
+        signatures are read again, the edits stay (texrender keeps them too)."""
+        loop = asyncio.get_running_loop()
+        if what == "graph":
+            await self.load_model()
+        elif what == "source":
+            await loop.run_in_executor(None, self.model.read_signatures)
+
+    async def on_event(self, event):
+        kind = event.get("event")
+        if kind == "ready":
+            self.ready = event
+            await self.load_model()
+            for page in self.pages:
+                page.send(self.hello())
+        elif kind == "frame":
+            self.on_frame(event)
+        elif kind in ("applied", "error"):
+            self.on_answer(kind, event)
+        elif kind == "reload":
+            self.last_error = None
+            if self.ready:
+                await self.reload(event.get("what"))
+                for page in self.pages:
+                    page.send(self.hello())
+
+    def on_frame(self, event):
+        try:
+            with open(event["path"], "rb") as f:
+                png = f.read()
+        except OSError as e:
+            log(f"frame {event.get('path')!r} not readable: {e}")
+            return
+        self.last_frame = event
+        edit = event.get("edit")
+        origin = self.last_edit if self.last_edit and self.last_edit[0] == edit else None
+        for page in self.pages:
+            meta = {"type": "frame", "spp": event.get("spp"), "tier": event.get("tier"),
+                    "builds": event.get("builds"), "latency_ms": event.get("latency_ms"),
+                    "edit": origin[2] if origin and origin[1] is page else None,
+                    "size": len(png)}
+            page.send_frame(meta, png)
+
+    def on_answer(self, kind, event):
+        sid = event.get("id")
+        if sid is None:  # a watched file failed to compile: every page shows it
+            self.last_error = event.get("message", "")
+            self.broadcast({"type": "error", "id": None, "message": self.last_error})
+            return
+        owner = self.edits.answered(sid)
+        if owner is None:
+            return
+        page, page_id, line, coalesced = owner
+        if kind == "error":
+            if page in self.pages:
+                page.send({"type": "error", "id": page_id, "message": event.get("message", "")})
+            return
+        self.last_edit = (sid, page, page_id)
+        change = self.model.applied(line)
+        for other in self.pages:
+            other.send(dict(change, type="applied", id=page_id if other is page else None,
+                            ms=event.get("ms"), builds=event.get("builds"), coalesced=coalesced))
+
+    def broadcast(self, message):
+        for page in self.pages:
+            page.send(message)
+
+    def hello(self):
+        r = self.ready
+        return {"type": "hello", "graph": self.model.graph_for_page(),
+                "controls": self.model.controls(), "sources": r.get("sources", []),
+                "width": r.get("width"), "height": r.get("height"), "error": self.last_error}
+
+    def on_message(self, page, data):
+        """One page message: checked, then queued for texrender, or answered with an error."""
+        try:
+            if len(data) > MAX_MESSAGE:
+                raise schema.Invalid(f"message of {len(data)} bytes; at most {MAX_MESSAGE}")
+            msg = schema.parse_message(data)
+        except schema.Invalid as e:
+            page.send({"type": "error", "id": None, "message": str(e)})
+            return
+        try:
+            if self.model is None:
+                raise schema.Invalid("texrender is not ready yet")
+            key, line = self.model.check(msg)
+        except schema.Invalid as e:
+            page.send({"type": "error", "id": msg.get("id"), "message": str(e)})
+            return
+        self.edits.submit(key, line, page, msg["id"])
+
+    async def quit(self):
+        if self.proc and self.proc.returncode is None:
+            self.write_line("quit")
+            try:
+                await asyncio.wait_for(self.proc.wait(), 5)
+            except asyncio.TimeoutError:
+                self.proc.terminate()
+                await self.proc.wait()
+
+
+def allowed_hosts(listen, port, extra):
+    """The Host values this server answers to: its port on the loopback names, on the address
+    it listens on, and on the names given with --allow-host. Anything else is DNS rebinding or
+    a misdirected request."""
+    names = {"localhost", "127.0.0.1", "[::1]"} | set(extra)
+    if listen not in ("0.0.0.0", "::"):
+        names.add(f"[{listen}]" if ":" in listen else listen)
+    return {f"{n.lower()}:{port}" for n in names}
+
+
+def make_app(server, hosts):
+    @web.middleware
+    async def guard(request, handler):
+        host = request.headers.get("Host", "").lower()
+        origin = request.headers.get("Origin")
+        if host not in hosts:
+            log(f"refused a request for Host {host!r}")
+            return web.Response(status=403, text="403: unknown Host\n")
+        if origin is not None and origin.lower() not in {"http://" + h for h in hosts}:
+            log(f"refused a request from Origin {origin!r}")
+            return web.Response(status=403, text="403: foreign Origin\n")
+        response = await handler(request)
+        if not isinstance(response, web.WebSocketResponse):
+            response.headers["Content-Security-Policy"] = CSP.format(host=host)
+            response.headers["X-Frame-Options"] = "DENY"
+            response.headers["X-Content-Type-Options"] = "nosniff"
+            response.headers["Cache-Control"] = "no-store"
+            response.headers["Referrer-Policy"] = "no-referrer"
+        return response
+
+    async def static(request):
+        name, kind = PAGE_FILES[request.path]
+        with open(os.path.join(STATIC, name), "rb") as f:
+            return web.Response(body=f.read(), content_type=kind, charset="utf-8")
+
+    async def websocket(request):
+        ws = web.WebSocketResponse(max_msg_size=WS_HARD_LIMIT, heartbeat=30)
+        await ws.prepare(request)
+        await serve_page(server, ws)
+        return ws
+
+    app = web.Application(middlewares=[guard], client_max_size=MAX_MESSAGE)
+    for path in PAGE_FILES:
+        app.router.add_get(path, static)
+    app.router.add_get("/ws", websocket)
+    return app
+
+
+async def serve_page(server, ws):
+    page = Page(ws)
+    server.pages.add(page)
+    pump = asyncio.ensure_future(page.pump())
+    if server.model is not None:
+        page.send(server.hello())
+        if server.last_frame is not None:
+            server.on_frame(server.last_frame)
+    try:
+        async for msg in ws:
+            if msg.type == WSMsgType.TEXT:
+                server.on_message(page, msg.data.encode())
+            elif msg.type == WSMsgType.BINARY:
+                page.send({"type": "error", "id": None,
+                           "message": "binary messages are not accepted"})
+            elif msg.type == WSMsgType.ERROR:
+                break
+    except (ConnectionError, asyncio.CancelledError):
+        pass
+    finally:
+        page.closed = True
+        page.wake.set()
+        server.pages.discard(page)
+        server.edits.drop_page(page)
+        pump.cancel()
+
+
+def listening_socket(listen, port):
+    family = socket.AF_INET6 if ":" in listen else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    sock.bind((listen, port))
+    sock.listen(64)
+    sock.setblocking(False)
+    return sock
+
+
+async def run(opts):
+    with tempfile.TemporaryDirectory(prefix="texrender-serve-") as tmpdir:
+        server = Server(opts, tmpdir)
+        sock = listening_socket(opts.listen, opts.port)
+        port = sock.getsockname()[1]
+        app = make_app(server, allowed_hosts(opts.listen, port, opts.allow_host))
+        runner = web.AppRunner(app, access_log=None)
+        await runner.setup()
+        await web.SockSite(runner, sock).start()
+        host = f"[{opts.listen}]" if ":" in opts.listen else opts.listen
+        if opts.listen in ("0.0.0.0", "::"):
+            host = "127.0.0.1"
+        log(f"preview at http://{host}:{port}/ (Ctrl-C ends)")
+        await server.start()
+        loop = asyncio.get_running_loop()
+        stop = asyncio.Event()
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            loop.add_signal_handler(sig, stop.set)
+        waiters = [asyncio.ensure_future(stop.wait()), asyncio.ensure_future(server.done.wait())]
+        await asyncio.wait(waiters, return_when=asyncio.FIRST_COMPLETED)
+        await server.quit()
+        await runner.cleanup()
+        if stop.is_set():
+            return 0
+        return 1 if server.exit_code else 0
+
+
+def parse_args(argv):
+    if "--" not in argv:
+        sys.exit("serve: usage: serve.py [--port P] [--listen ADDR] --texrender PATH -- SCENE "
+                 "--textures DIR [texrender options]")
+    cut = argv.index("--")
+    p = argparse.ArgumentParser(prog="serve.py")
+    p.add_argument("--port", type=int, default=8642, help="0: any free port")
+    p.add_argument("--listen", default="127.0.0.1",
+                   help="address to listen on (default loopback only)")
+    p.add_argument("--allow-host", action="append", default=[],
+                   help="another host name the page may be opened under (with --listen)")
+    p.add_argument("--texrender", required=True)
+    p.add_argument("--texcc", help="default: texcc next to texrender")
+    opts = p.parse_args(argv[:cut])
+    opts.render_args = argv[cut + 1:]
+    if not opts.texcc:
+        opts.texcc = os.path.join(os.path.dirname(os.path.abspath(opts.texrender)), "texcc")
+    return opts
+
+
+def main():
+    opts = parse_args(sys.argv[1:])
+    try:
+        sys.exit(asyncio.run(run(opts)))
+    except OSError as e:
+        sys.exit(f"serve: error: {e}")
+
+
+if __name__ == "__main__":
+    main()
