@@ -2,6 +2,7 @@
 #include "texrender/Error.h"
 #include "texrender/Image.h"
 #include "texrender/TextureTiers.h"
+#include "texcc/Kernel/Attributes.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -55,14 +56,12 @@ double now() {
 } // namespace
 
 uint32_t attributeMaskOf(const Layout &L) {
-  static const char *Names[TEXCC_ATTR_COUNT] = {"WorldPos", "ObjectPos", "Normal", "GeomNormal",
-                                                "Tangent", "TexCoord0", "AO", "ViewDir"};
   uint32_t Mask = 0;
   for (const std::string &A : L.Attributes) {
-    auto It = std::find_if(std::begin(Names), std::end(Names), [&](const char *N) { return A == N; });
-    if (It == std::end(Names))
+    const int Id = texcc::kernel::attributeId(A);
+    if (Id < 0)
       throw Error(L.Dir + "/layout.json: /attributes: unknown attribute '" + A + "'");
-    Mask |= 1u << (It - std::begin(Names));
+    Mask |= 1u << Id;
   }
   return Mask;
 }

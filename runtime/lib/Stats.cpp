@@ -1,4 +1,5 @@
 #include "texrender/Stats.h"
+#include "texcc/Kernel/Attributes.h"
 
 namespace texrender {
 
@@ -82,11 +83,9 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
                                          ? json(R.tracer().buildSeconds()) : json(nullptr)}};
   J["lights"] = R.sceneData().Lights.size();
   std::vector<std::string> Attrs;
-  static const char *Names[TEXCC_ATTR_COUNT] = {"WorldPos", "ObjectPos", "Normal", "GeomNormal",
-                                                "Tangent", "TexCoord0", "AO", "ViewDir"};
-  for (int I = 0; I < TEXCC_ATTR_COUNT; ++I)
+  for (unsigned I = 0; I < texcc::kernel::NumAttributes; ++I)
     if (R.attributeMask() & (1u << I))
-      Attrs.push_back(Names[I]);
+      Attrs.push_back(texcc::kernel::attributeName(I));
   J["attributesComputed"] = Attrs;
   J["aoEnabled"] = R.runsAo();
   J["aoSamples"] = S.AoSamples;

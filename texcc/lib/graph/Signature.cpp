@@ -1,27 +1,24 @@
-// The attribute and setting tables of DESIGN.md. The attribute order is ABI: the index is the
-// id the kernel and args.bin use (TEXCC_ATTR_* in kernels/common/texcc_abi.h).
+// The attribute and setting tables of DESIGN.md. The attributes are the kernel library's one
+// table (texcc/Kernel/Attributes.def, checked against kernels/common/texcc_abi.h), typed here.
 
 #include "texcc/Graph/Signature.h"
+#include "texcc/Kernel/Attributes.h"
 
 namespace texcc::graph {
 
 const std::vector<std::pair<std::string, BaseType>> &attributeTable() {
-  static const std::vector<std::pair<std::string, BaseType>> Table = {
-      {"WorldPos", BaseType::Float3},   {"ObjectPos", BaseType::Float3},
-      {"Normal", BaseType::Float3},     {"GeomNormal", BaseType::Float3},
-      {"Tangent", BaseType::Float3},    {"TexCoord0", BaseType::Float2},
-      {"AO", BaseType::Float},          {"ViewDir", BaseType::Float3},
-  };
+  static const std::vector<std::pair<std::string, BaseType>> Table = [] {
+    std::vector<std::pair<std::string, BaseType>> T;
+    for (const kernel::AttributeInfo &A : kernel::AttributeTable)
+      T.push_back({A.Name, A.Components == 1   ? BaseType::Float
+                           : A.Components == 2 ? BaseType::Float2
+                                               : BaseType::Float3});
+    return T;
+  }();
   return Table;
 }
 
-int attributeId(const std::string &Name) {
-  const auto &Table = attributeTable();
-  for (size_t I = 0; I < Table.size(); ++I)
-    if (Table[I].first == Name)
-      return static_cast<int>(I);
-  return -1;
-}
+int attributeId(const std::string &Name) { return kernel::attributeId(Name); }
 
 const std::vector<std::pair<std::string, BaseType>> &settingTable() {
   static const std::vector<std::pair<std::string, BaseType>> Table = {
