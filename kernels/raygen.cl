@@ -1,8 +1,11 @@
 /* raygen.cl: one camera ray per path. Path i of a pass samples pixel i / sppPerPass of the
  * region (regionX, regionY, regionWidth wide, inside the width x height film) with the sample
  * index passStart + i % sppPerPass; the pixel position is uniform in the pixel (box filter, as
- * Mitsuba's `box` rfilter). The random stream and RtPath.pixel use the full-film pixel index, so
- * that a region renders exactly the pixels of a whole render (texrender --region). */
+ * Mitsuba's `box` rfilter), from the camera pattern of the Owen-scrambled Sobol sampler
+ * (rt_sampling.h). The random stream, the sampler's pixel key and RtPath.pixel use the
+ * full-film pixel index, so that a region renders exactly the pixels of a whole render
+ * (texrender --region). The path keeps its sample index in origin.w and the pixel key in
+ * throughput.w (as uint bits) for the sampler's later dimensions (shade.cl). */
 #include "rt_sampling.h"
 #include "rt_types.h"
 
@@ -17,16 +20,18 @@ __kernel void raygen(__global RtPath *paths, __global int *active, __global cons
   int pixel = y * width + x;
   int sample = passStart + i % sppPerPass;
   uint rng = rt_seed((uint)pixel, (uint)sample, seed);
-  float px = (float)x + rt_rand(&rng);
-  float py = (float)y + rt_rand(&rng);
+  uint key = rt_pixel_key((uint)pixel, seed);
+  float2 j = rt_sobol2((uint)sample, rt_pattern_seed(key, RT_PATTERN_CAMERA));
+  float px = (float)x + j.x;
+  float py = (float)y + j.y;
   float sx = 2.0f * px / (float)width - 1.0f;
   float sy = 1.0f - 2.0f * py / (float)height;
-  RtCamera cam = *camera;
-  float3 d = normalize(cam.forward.xyz + sx * cam.right.xyz + sy * cam.up.xyz);
+  RtCamera c = *camera;
+  float3 d = normalize(c.forward.xyz + sx * c.right.xyz + sy * c.up.xyz);
   RtPath p;
-  p.origin = (float4)(cam.position.xyz, 0.0f);
+  p.origin = (float4)(c.position.xyz, as_float((uint)sample));
   p.dir = (float4)(d, 0.0f);
-  p.throughput = (float4)(1.0f, 1.0f, 1.0f, 0.0f);
+  p.throughput = (float4)(1.0f, 1.0f, 1.0f, as_float(key));
   p.radiance = (float4)(0.0f);
   p.pixel = (uint)pixel;
   p.rng = rng;

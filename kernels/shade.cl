@@ -6,6 +6,31 @@
 #include "rt_bsdf.h"
 #include "rt_surface.h"
 
+/* Bench-only split of the image by light and by path length (bench/sampling.py,
+ * docs/sampling.md): compiled with -D RT_SPLIT_LIGHTS=mask (RT_SPLIT_* below) and optionally
+ * RT_SPLIT_MIN_LENGTH / RT_SPLIT_MAX_LENGTH (path length in segments: 1 = an emitter seen
+ * from the camera, 2 = direct light), only those contributions reach the image; the sampling
+ * (and so the random stream) is unchanged. Without RT_SPLIT_LIGHTS RT_KEEP is the constant 1. */
+#define RT_SPLIT_MESH 1     /* emissive meshes (area lights) */
+#define RT_SPLIT_SUN 2
+#define RT_SPLIT_SKY 4
+#define RT_SPLIT_MATERIAL 8 /* emission of materials (emission leaves, principled emission) */
+#ifdef RT_SPLIT_LIGHTS
+#ifndef RT_SPLIT_MIN_LENGTH
+#define RT_SPLIT_MIN_LENGTH 0
+#endif
+#ifndef RT_SPLIT_MAX_LENGTH
+#define RT_SPLIT_MAX_LENGTH 1000000
+#endif
+#define RT_KEEP(kind, length)                                                                  \
+  (((RT_SPLIT_LIGHTS) & (kind)) && (length) >= RT_SPLIT_MIN_LENGTH &&                          \
+           (length) <= RT_SPLIT_MAX_LENGTH                                                     \
+       ? 1.0f                                                                                  \
+       : 0.0f)
+#else
+#define RT_KEEP(kind, length) 1.0f
+#endif
+
 static inline float4 rt_input(RtBsdfInput in, __global const float4 *outputs, int base) {
   if (in.output < 0)
     return in.value;
@@ -40,31 +65,32 @@ static inline int rt_pick_light(__global const float *cdf, int n, float u) {
 /* Radiance arriving from the environment (sky and sun) along d, MIS-weighted against the pdf
  * with which next-event estimation would have chosen d. */
 static inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, float3 d,
-                             float bsdfPdf, int specular) {
+                             float bsdfPdf, int specular, int length) {
   float3 le = (float3)(0.0f);
   if (prm.skyLight >= 0) {
     RtLight l = lights[prm.skyLight];
     float lp = l.select / (4.0f * RT_PI);
-    le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp));
+    le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp)) * RT_KEEP(RT_SPLIT_SKY, length);
   }
   if (prm.sunLight >= 0) {
     RtLight l = lights[prm.sunLight];
     if (dot(d, l.dir.xyz) >= l.dir.w) {
       float lp = l.select / (2.0f * RT_PI * (1.0f - l.dir.w));
-      le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp));
+      le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp)) * RT_KEEP(RT_SPLIT_SUN, length);
     }
   }
   return le;
 }
 
-/* Samples a light from the surface point; returns the direction, the distance limit, the
+/* Samples a light from the surface point (u.z chooses the light, u.xy the point on it); returns the direction, the distance limit, the
  * emitted radiance and the solid-angle pdf (0: no contribution). */
 static inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
                              __global const RtTri *tris, RtShadeParams prm, float3 p,
-                             uint *rng, float3 *wi, float *tmax, float3 *le) {
-  int li = rt_pick_light(cdf, prm.numLights, rt_rand(rng));
+                             float3 u, float3 *wi, float *tmax, float3 *le, int *type) {
+  int li = rt_pick_light(cdf, prm.numLights, u.z);
   RtLight l = lights[li];
-  float u1 = rt_rand(rng), u2 = rt_rand(rng);
+  *type = l.type;
+  float u1 = u.x, u2 = u.y;
   *le = l.radiance.xyz;
   if (l.type == RT_LIGHT_TRIANGLE) {
     __global const RtTri *t = &tris[l.tri];
@@ -112,7 +138,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   p.flags &= ~RT_PATH_ALIVE;
 
   if (h.tri < 0) {
-    p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, specular);
+    p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, specular, p.depth);
     paths[pid] = p;
     return;
   }
@@ -127,7 +153,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       float lp = l.select * h.t * h.t / (l.area * fmax(cosL, 1e-8f));
       w = rt_mis(bsdfPdf, lp);
     }
-    p.radiance.xyz += thr * mesh.emission.xyz * w;
+    p.radiance.xyz += thr * mesh.emission.xyz * w * RT_KEEP(RT_SPLIT_MESH, p.depth);
   }
 
   /* Choose a leaf of the BSDF tree. */
@@ -152,7 +178,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   }
   color = fmax(color, (float3)(0.0f));
   if (leaf.type == RT_BSDF_EMISSION) {
-    p.radiance.xyz += thr * color * param;
+    p.radiance.xyz += thr * color * param * RT_KEEP(RT_SPLIT_MATERIAL, p.depth);
     p.rng = rng;
     paths[pid] = p;
     return;
@@ -174,7 +200,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     pr.f0 = clamp(0.08f * spec, 0.0f, 1.0f);
     pr.base = fmin(color, (float3)(1.0f));
     if (es > 0.0f)
-      p.radiance.xyz += thr * fmax(ec, (float3)(0.0f)) * es;
+      p.radiance.xyz += thr * fmax(ec, (float3)(0.0f)) * es * RT_KEEP(RT_SPLIT_MATERIAL, p.depth);
   }
   /* A shading normal from the material (a bump node): kept on the side of the geometric
    * normal, and tilted towards it so that it is at least a little above the surface. */
@@ -194,13 +220,17 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     }
   }
   float3 wo = -d;
+  uint sample = as_uint(p.origin.w), key = as_uint(p.throughput.w);
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
 
   /* Next-event estimation. */
   if (canExtend && prm.numLights > 0 && leaf.type != RT_BSDF_MIRROR) {
     float3 wi, le;
     float tmax;
-    float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, &rng, &wi, &tmax, &le);
+    int type;
+    float2 lu = rt_sobol2(sample, rt_pattern_seed(key, RT_PATTERN_LIGHT(p.depth)));
+    float3 u = (float3)(lu, rt_sobol1d(sample, rt_pattern_seed(key, RT_PATTERN_LIGHT_CHOICE(p.depth))));
+    float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, u, &wi, &tmax, &le, &type);
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
       float3 f = leaf.type == RT_BSDF_PRINCIPLED
@@ -208,6 +238,12 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
                      : rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
       float cosI = dot(wi, s.ns);
       float3 c = thr * f * le * (cosI * rt_mis(lp, bp) / lp);
+#ifdef RT_SPLIT_LIGHTS
+      c *= RT_KEEP(type == RT_LIGHT_TRIANGLE ? RT_SPLIT_MESH
+                   : type == RT_LIGHT_SUN    ? RT_SPLIT_SUN
+                                             : RT_SPLIT_SKY,
+                   p.depth + 1);
+#endif
       if (!rt_finite3(c)) {
         rt_poison(paths, pid, p, rng);
         return;
@@ -228,7 +264,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float3 wi;
     float pdf;
     int delta;
-    float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
+    float2 bu = rt_sobol2(sample, rt_pattern_seed(key, RT_PATTERN_BSDF(p.depth)));
+    float u1 = bu.x, u2 = bu.y;
     float3 wgt = (float3)(0.0f);
     if (leaf.type == RT_BSDF_PRINCIPLED) {
       delta = 0;
@@ -251,9 +288,9 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
           thr /= q;
       }
       if (alive) {
-        p.origin = (float4)(rt_offset(s, wi, prm.epsilon), 0.0f);
+        p.origin = (float4)(rt_offset(s, wi, prm.epsilon), as_float(sample));
         p.dir = (float4)(wi, delta ? -1.0f : pdf);
-        p.throughput = (float4)(thr, 0.0f);
+        p.throughput = (float4)(thr, as_float(key));
         p.flags = RT_PATH_ALIVE | (delta ? RT_PATH_SPECULAR : 0);
         p.depth += 1;
       }

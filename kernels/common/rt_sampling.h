@@ -1,4 +1,5 @@
-/* rt_sampling.h: random numbers (PCG), sample warps and orthonormal frames for the fixed
+/* rt_sampling.h: random numbers (PCG; Owen-scrambled Sobol for the first dimensions of each
+ * vertex, docs/sampling.md), sample warps and orthonormal frames for the fixed
  * kernels. OpenCL C 1.2. */
 #ifndef RT_SAMPLING_H
 #define RT_SAMPLING_H
@@ -25,6 +26,84 @@ static inline float rt_rand(uint *state) {
   word = (word >> 22u) ^ word;
   return (float)(word >> 8) * (1.0f / 16777216.0f);
 }
+
+/* The low-discrepancy sampler: the first dimensions of a path vertex (the pixel position, the
+ * light choice and the point on the light, the BSDF sample) come from the first two dimensions
+ * of the Sobol sequence with Owen scrambling by hashing (Burley 2020, "Practical Hash-based
+ * Owen Scrambling"). A pattern is one or two dimensions used together (a 2D point or a 1D
+ * choice); its sample `index` is the pixel's sample index after a nested uniform scramble (a
+ * shuffle of the order that keeps the power-of-two prefixes stratified), and each coordinate
+ * is Owen-scrambled with its own seed. Every pattern (the camera's, each vertex's light choice,
+ * light point and BSDF sample) has its own seed derived from the pixel's key (the full-film
+ * pixel index and --seed): patterns and pixels are as decorrelated as independent random
+ * numbers, while the samples of one pixel within a pattern are stratified. Dimension 0 is the
+ * van der Corput sequence (bit reversal); dimension 1 is Sobol's second (generator matrix:
+ * Pascal's triangle mod 2, computed as a superset XOR over the index's bit positions). */
+
+/* Bit i of x goes to bit 31 - i. */
+static inline uint rt_reverse_bits(uint x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+/* Owen scrambling of a 32-bit fixed-point value by hashing: a bijection in which each bit is
+ * flipped by a function of the seed and of the bits above it only (a Laine-Karras style
+ * permutation on the reversed bits, with Vegdahl's constants). */
+static inline uint rt_owen(uint x, uint seed) {
+  x = rt_reverse_bits(x);
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return rt_reverse_bits(x);
+}
+
+/* Sobol's dimension 1 of point `index` as 32-bit fixed point: output bit 31 - j is the XOR of
+ * the index bits k with C(k, j) odd, i.e. k a superset of j's bits (Lucas). */
+static inline uint rt_sobol1(uint index) {
+  uint y = index;
+  y ^= (y >> 1) & 0x55555555u;
+  y ^= (y >> 2) & 0x33333333u;
+  y ^= (y >> 4) & 0x0f0f0f0fu;
+  y ^= (y >> 8) & 0x00ff00ffu;
+  y ^= (y >> 16) & 0x0000ffffu;
+  return rt_reverse_bits(y);
+}
+
+static inline float rt_unit(uint x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
+
+/* The seed of pattern `pattern` of a pixel whose key is `key` (rt_pixel_key). */
+static inline uint rt_pattern_seed(uint key, uint pattern) {
+  return rt_hash(key ^ rt_hash(pattern));
+}
+
+/* Sample `index` of a 2D pattern, in [0, 1)^2. */
+static inline float2 rt_sobol2(uint index, uint seed) {
+  uint i = rt_owen(index, seed);
+  return (float2)(rt_unit(rt_owen(rt_reverse_bits(i), rt_hash(seed ^ 0x68bc21ebu))),
+                  rt_unit(rt_owen(rt_sobol1(i), rt_hash(seed ^ 0x02e5be93u))));
+}
+
+/* Sample `index` of a 1D pattern, in [0, 1). */
+static inline float rt_sobol1d(uint index, uint seed) {
+  return rt_unit(rt_owen(rt_reverse_bits(rt_owen(index, seed)), rt_hash(seed ^ 0x68bc21ebu)));
+}
+
+/* The key of a full-film pixel under --seed: the same whatever the region or pass. */
+static inline uint rt_pixel_key(uint pixel, uint seed) {
+  return rt_hash(pixel ^ rt_hash(seed ^ 0x2c1b3c6du));
+}
+
+/* Patterns of a path: the camera's pixel position; at each vertex (depth = segments traced so
+ * far) the light choice, the point on the light and the BSDF sample. */
+#define RT_PATTERN_CAMERA 0u
+#define RT_PATTERN_LIGHT_CHOICE(depth) (4u * (uint)(depth) + 1u)
+#define RT_PATTERN_LIGHT(depth) (4u * (uint)(depth) + 2u)
+#define RT_PATTERN_BSDF(depth) (4u * (uint)(depth) + 3u)
 
 /* Builds tangents t, b so that (t, b, n) is orthonormal (Duff et al. 2017). */
 static inline void rt_frame(float3 n, float3 *t, float3 *b) {

@@ -1,0 +1,217 @@
+"""Where texrender's variance comes from (issue 26): the per-pixel variance of the image split by
+light (sun, sky, emissive meshes) and by path length, for texrender and for Cycles on the same
+scene (the atrium, examples/blender/make_scene.py).
+
+texrender: the kernels are copied into a scratch folder with `#define RT_SPLIT_LIGHTS mask`
+(and RT_SPLIT_MIN_LENGTH / RT_SPLIT_MAX_LENGTH) put in front of shade.cl (kernels/shade.cl: only
+those contributions reach the image, the random stream is unchanged), and rendered with
+`--kernels` once per part; every part is rendered with `--seed 1..S`.
+Cycles (bpy, .venv): one render per seed with light groups (sun, sky) and the Diffuse / Glossy
+Direct / Indirect and Environment passes (direct = path length 2, indirect = 3 and more,
+environment = the sky seen from the camera, length 1).
+For each part: the mean per-pixel variance of the image across the S seeds (unbiased, mean over
+pixels and RGB), which is what the error of one image at that spp is made of.
+
+    python3 bench/sampling.py [--size 128x128] [--spp 64] [--seeds 4] [--variant diffuse]
+        [--build build] [--work /tmp/texcc-sampling] [--no-cycles] [--json bench/results/sampling.json]
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import common  # noqa: E402
+
+VENV_PYTHON = os.path.join(common.ROOT, ".venv", "bin", "python")
+MAKE_SCENE = os.path.join(common.ROOT, "examples", "blender", "make_scene.py")
+SCENES = {"diffuse": ("bench/inputs/diffuse/graph.json", "examples/atrium/scene-diffuse.json"),
+          "rust-model": ("examples/rust/graph.json", "examples/atrium/scene.json")}
+# kernels/shade.cl's RT_SPLIT_* bits
+MESH, SUN, SKY, MATERIAL = 1, 2, 4, 8
+# part: (light mask, min length, max length)
+PARTS = {"all": (15, 0, 1000000), "sun": (SUN, 0, 1000000), "sky": (SKY, 0, 1000000),
+         "meshes": (MESH | MATERIAL, 0, 1000000), "length1": (15, 1, 1), "direct": (15, 2, 2),
+         "indirect": (15, 3, 1000000), "sun-direct": (SUN, 2, 2), "sky-direct": (SKY, 2, 2),
+         "sun-indirect": (SUN, 3, 1000000), "sky-indirect": (SKY, 3, 1000000)}
+TAG = "SAMPLINGJSON "
+
+
+def split_kernels(work, part):
+    """A copy of kernels/ whose shade.cl keeps only `part`."""
+    mask, lo, hi = PARTS[part]
+    out = os.path.join(work, "kernels-" + part)
+    shutil.rmtree(out, ignore_errors=True)
+    shutil.copytree(os.path.join(common.ROOT, "kernels"), out)
+    path = os.path.join(out, "shade.cl")
+    with open(path) as f:
+        src = f.read()
+    with open(path, "w") as f:
+        f.write("#define RT_SPLIT_LIGHTS %d\n#define RT_SPLIT_MIN_LENGTH %d\n"
+                "#define RT_SPLIT_MAX_LENGTH %d\n" % (mask, lo, hi) + src)
+    return out
+
+
+def read_exr(path):
+    import OpenEXR
+    import numpy as np
+    with OpenEXR.File(path) as f:
+        ch = f.channels()
+        if "RGB" in ch:
+            return np.array(ch["RGB"].pixels, dtype=np.float64)[:, :, :3]
+        return np.stack([np.array(ch[c].pixels, dtype=np.float64) for c in "RGB"], axis=-1)
+
+
+def spread(imgs):
+    """Mean per-pixel variance across seeds (unbiased), the image mean, and the mean pair RMSE."""
+    import numpy as np
+    imgs = np.stack(imgs)
+    pairs = [float(np.sqrt(((imgs[i] - imgs[j]) ** 2).mean()))
+             for i in range(len(imgs)) for j in range(i + 1, len(imgs))]
+    return {"meanPixelVariance": float(imgs.var(axis=0, ddof=1).mean()),
+            "mean": float(imgs.mean()), "meanPairRmse": float(np.mean(pairs))}
+
+
+def texrender_split(tools, args, textures, scene):
+    out = {}
+    for part in PARTS:
+        kdir = split_kernels(tools.work, part)
+        imgs, seconds, inner = [], [], []
+        for seed in range(1, args.seeds + 1):
+            common.log("sampling: texrender %s seed %d" % (part, seed))
+            stats, path, _ = common.texrender(
+                tools, scene, textures, "split-%s-%d" % (part, seed),
+                ["--size", args.size, "--spp", str(args.spp), "--seed", str(seed),
+                 "--kernels", kdir, "--variance",
+                 os.path.join(tools.work, "split-%s-%d.var.exr" % (part, seed))],
+                image="exr", cache=os.path.join(tools.work, "cache-" + part))
+            imgs.append(read_exr(path))
+            inner.append(float(read_exr(os.path.join(
+                tools.work, "split-%s-%d.var.exr" % (part, seed))).mean()))
+            seconds.append(stats["renderSeconds"])
+        out[part] = spread(imgs)
+        # texrender --variance: the sample variance / spp of each pixel, mean over the seeds
+        out[part]["meanPixelVarianceWithinImage"] = sum(inner) / len(inner)
+        out[part]["renderSeconds"] = common.median(seconds)
+    return out
+
+
+# --- Cycles (runs under .venv's Python: python3 bench/sampling.py --cycles-worker REQUEST) -------
+
+def cycles_worker(req):
+    channel = os.fdopen(os.dup(1), "w")
+    os.dup2(2, 1)
+    sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != HERE]
+    import bpy
+    import numpy as np
+    import OpenEXR
+    bpy.ops.wm.open_mainfile(filepath=req["blend"])
+    scene = bpy.context.scene
+    scene.render.resolution_x, scene.render.resolution_y = req["size"]
+    scene.render.resolution_percentage = 100
+    scene.cycles.samples = req["spp"]
+    vl = scene.view_layers[0]
+    for name in ("sun", "sky"):
+        vl.lightgroups.add(name=name)
+    for obj in scene.objects:
+        if obj.type == "LIGHT":
+            obj.lightgroup = "sun"
+    scene.world.lightgroup = "sky"
+    vl.use_pass_diffuse_direct = vl.use_pass_diffuse_indirect = vl.use_pass_diffuse_color = True
+    vl.use_pass_glossy_direct = vl.use_pass_glossy_indirect = vl.use_pass_glossy_color = True
+    vl.use_pass_environment = vl.use_pass_emit = True
+    if hasattr(scene.render.image_settings, "media_type"):  # Blender 5
+        scene.render.image_settings.media_type = "MULTI_LAYER_IMAGE"
+    scene.render.image_settings.file_format = "OPEN_EXR_MULTILAYER"
+    scene.render.image_settings.color_depth = "32"
+    parts = {}
+    seconds = []
+    for seed in range(1, req["seeds"] + 1):
+        scene.cycles.seed = seed
+        scene.render.filepath = os.path.join(req["work"], "cycles-split-%d.exr" % seed)
+        t0 = time.perf_counter()
+        bpy.ops.render.render(write_still=True)
+        seconds.append(time.perf_counter() - t0)
+        with OpenEXR.File(scene.render.filepath) as f:
+            ch = {}
+            for part in f.parts:
+                for name, c in part.channels.items():
+                    ch[name] = c.pixels
+        def rgb(pass_name):
+            px = np.asarray(ch["ViewLayer." + pass_name], np.float64)
+            return px[:, :, :3]
+        d = {"all": rgb("Combined"), "sun": rgb("Combined_sun"), "sky": rgb("Combined_sky"),
+             "length1": rgb("Environment") + rgb("Emission"),
+             "direct": rgb("Diffuse Direct") * rgb("Diffuse Color")
+             + rgb("Glossy Direct") * rgb("Glossy Color"),
+             "indirect": rgb("Diffuse Indirect") * rgb("Diffuse Color")
+             + rgb("Glossy Indirect") * rgb("Glossy Color")}
+        for k, v in d.items():
+            parts.setdefault(k, []).append(v)
+    out = {k: spread(v) for k, v in parts.items()}
+    for k in out:
+        out[k]["renderSeconds"] = float(np.median(seconds))
+    channel.write(TAG + json.dumps({"parts": out, "version": bpy.app.version_string}) + "\n")
+    channel.flush()
+
+
+def cycles_split(tools, args):
+    blend = os.path.join(tools.work, "atrium-%s.blend" % args.variant)
+    common.run([VENV_PYTHON, MAKE_SCENE, blend, "--variant", args.variant])
+    w, h = (int(x) for x in args.size.split("x"))
+    req = {"blend": blend, "size": [w, h], "spp": args.spp, "seeds": args.seeds,
+           "work": tools.work}
+    common.log("sampling: Cycles, %d seeds" % args.seeds)
+    p = subprocess.run([VENV_PYTHON, os.path.abspath(__file__), "--cycles-worker",
+                        json.dumps(req)], stdout=subprocess.PIPE, text=True)
+    for line in p.stdout.splitlines():
+        if line.startswith(TAG):
+            return json.loads(line[len(TAG):])
+    raise common.BenchError("cycles split worker failed (exit %d)" % p.returncode)
+
+
+def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--cycles-worker":
+        cycles_worker(json.loads(sys.argv[2]))
+        return
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--size", default="128x128")
+    ap.add_argument("--spp", type=int, default=64)
+    ap.add_argument("--seeds", type=int, default=4)
+    ap.add_argument("--variant", default="diffuse", choices=sorted(SCENES))
+    ap.add_argument("--work", default="/tmp/texcc-sampling")
+    ap.add_argument("--no-cycles", action="store_true")
+    ap.add_argument("--no-texrender", action="store_true")
+    ap.add_argument("--json", default=os.path.join(common.ROOT, "bench", "results",
+                                                   "sampling.json"))
+    args = ap.parse_args()
+    tools = common.Tools(args.build, args.work)
+    graph, scene = SCENES[args.variant]
+    result = {"size": args.size, "spp": args.spp, "seeds": args.seeds, "variant": args.variant,
+              "loadBefore": os.getloadavg()[0], "machine": common.machine()}
+    if not args.no_texrender:
+        textures = os.path.join(tools.work, "tex-" + args.variant)
+        common.texcc(tools, os.path.join(common.ROOT, graph), textures, "interp")
+        result["texrender"] = texrender_split(tools, args, textures,
+                                              os.path.join(common.ROOT, scene))
+    if not args.no_cycles:
+        result["cycles"] = cycles_split(tools, args)
+    result["loadAfter"] = os.getloadavg()[0]
+    os.makedirs(os.path.dirname(args.json), exist_ok=True)
+    with open(args.json, "w") as f:
+        json.dump(result, f, indent=1)
+    for r in ("texrender", "cycles"):
+        parts = result.get(r, {}).get("parts", result.get(r, {}))
+        for k, v in parts.items():
+            if isinstance(v, dict) and "meanPixelVariance" in v:
+                print("%-10s %-13s var %.3e  mean %.4f" % (r, k, v["meanPixelVariance"],
+                                                          v["mean"]))
+
+
+if __name__ == "__main__":
+    main()
