@@ -315,6 +315,9 @@ def make_app(server, hosts):
         with open(os.path.join(STATIC, name), "rb") as f:
             return web.Response(body=f.read(), content_type=kind, charset="utf-8")
 
+    async def no_icon(request):
+        return web.Response(status=204)
+
     async def websocket(request):
         ws = web.WebSocketResponse(max_msg_size=WS_HARD_LIMIT, heartbeat=30)
         await ws.prepare(request)
@@ -325,6 +328,7 @@ def make_app(server, hosts):
     for path in PAGE_FILES:
         app.router.add_get(path, static)
     app.router.add_get("/ws", websocket)
+    app.router.add_get("/favicon.ico", no_icon)
     return app
 
 

@@ -4,7 +4,7 @@
 // browser test (testsuite/live/Inputs/serve_browser.py) reads.
 "use strict";
 
-const preview = { frames: 0, lastMeta: null, lastPng: null, sent: [], edits: {}, errors: [] };
+const preview = { frames: 0, hellos: 0, lastMeta: null, lastPng: null, sent: [], edits: {}, errors: [] };
 window.preview = preview;
 let socket = null;
 let nextId = 1;
@@ -94,6 +94,7 @@ function onError(msg) {
 }
 
 function onHello(msg) {
+  preview.hellos++;
   $("errors").textContent = msg.error || "none";
   $("errors").className = msg.error ? "" : "empty";
   drawGraph(msg.graph);
