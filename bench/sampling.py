@@ -5,7 +5,8 @@ scene (the atrium, examples/blender/make_scene.py).
 texrender: the kernels are copied into a scratch folder with `#define RT_SPLIT_LIGHTS mask`
 (and RT_SPLIT_MIN_LENGTH / RT_SPLIT_MAX_LENGTH) put in front of shade.cl (kernels/shade.cl: only
 those contributions reach the image, the random stream is unchanged), and rendered with
-`--kernels` once per part; every part is rendered with `--seed 1..S`.
+`--kernels` once per part; every part is rendered with `--seed 1..S`. `--samplers pcg,sobol`:
+the PCG stream of before issue 26 (RT_SAMPLER_PCG) and the Owen-scrambled Sobol sampler.
 Cycles (bpy, .venv): one render per seed with light groups (sun, sky) and the Diffuse / Glossy
 Direct / Indirect and Environment passes (direct = path length 2, indirect = 3 and more,
 environment = the sky seen from the camera, length 1).
@@ -41,10 +42,11 @@ PARTS = {"all": (15, 0, 1000000), "sun": (SUN, 0, 1000000), "sky": (SKY, 0, 1000
 TAG = "SAMPLINGJSON "
 
 
-def split_kernels(work, part):
-    """A copy of kernels/ whose shade.cl keeps only `part`."""
+def split_kernels(work, part, sampler="sobol"):
+    """A copy of kernels/ whose shade.cl keeps only `part` (and, with sampler "pcg", whose
+    sampler is the PCG stream of before issue 26: RT_SAMPLER_PCG in rt_sampling.h)."""
     mask, lo, hi = PARTS[part]
-    out = os.path.join(work, "kernels-" + part)
+    out = os.path.join(work, "kernels-%s-%s" % (sampler, part))
     shutil.rmtree(out, ignore_errors=True)
     shutil.copytree(os.path.join(common.ROOT, "kernels"), out)
     path = os.path.join(out, "shade.cl")
@@ -53,6 +55,12 @@ def split_kernels(work, part):
     with open(path, "w") as f:
         f.write("#define RT_SPLIT_LIGHTS %d\n#define RT_SPLIT_MIN_LENGTH %d\n"
                 "#define RT_SPLIT_MAX_LENGTH %d\n" % (mask, lo, hi) + src)
+    if sampler == "pcg":
+        path = os.path.join(out, "common", "rt_sampling.h")
+        with open(path) as f:
+            src = f.read()
+        with open(path, "w") as f:
+            f.write("#define RT_SAMPLER_PCG 1\n" + src)
     return out
 
 
@@ -76,22 +84,21 @@ def spread(imgs):
             "mean": float(imgs.mean()), "meanPairRmse": float(np.mean(pairs))}
 
 
-def texrender_split(tools, args, textures, scene):
+def texrender_split(tools, args, textures, scene, sampler):
     out = {}
-    for part in PARTS:
-        kdir = split_kernels(tools.work, part)
+    for part in args.parts.split(","):
+        kdir = split_kernels(tools.work, part, sampler)
         imgs, seconds, inner = [], [], []
         for seed in range(1, args.seeds + 1):
-            common.log("sampling: texrender %s seed %d" % (part, seed))
+            common.log("sampling: texrender %s %s seed %d" % (sampler, part, seed))
+            name = "split-%s-%s-%d" % (sampler, part, seed)
             stats, path, _ = common.texrender(
-                tools, scene, textures, "split-%s-%d" % (part, seed),
+                tools, scene, textures, name,
                 ["--size", args.size, "--spp", str(args.spp), "--seed", str(seed),
-                 "--kernels", kdir, "--variance",
-                 os.path.join(tools.work, "split-%s-%d.var.exr" % (part, seed))],
-                image="exr", cache=os.path.join(tools.work, "cache-" + part))
+                 "--kernels", kdir, "--variance", os.path.join(tools.work, name + ".var.exr")],
+                image="exr", cache=os.path.join(tools.work, "cache-%s-%s" % (sampler, part)))
             imgs.append(read_exr(path))
-            inner.append(float(read_exr(os.path.join(
-                tools.work, "split-%s-%d.var.exr" % (part, seed))).mean()))
+            inner.append(float(read_exr(os.path.join(tools.work, name + ".var.exr")).mean()))
             seconds.append(stats["renderSeconds"])
         out[part] = spread(imgs)
         # texrender --variance: the sample variance / spp of each pixel, mean over the seeds
@@ -185,6 +192,10 @@ def main():
     ap.add_argument("--seeds", type=int, default=4)
     ap.add_argument("--variant", default="diffuse", choices=sorted(SCENES))
     ap.add_argument("--work", default="/tmp/texcc-sampling")
+    ap.add_argument("--samplers", default="pcg,sobol",
+                    help="texrender's samplers to split: pcg (before issue 26), sobol")
+    ap.add_argument("--parts", default="all,sun,sky,length1,direct,indirect",
+                    help="comma-separated, of: " + ",".join(PARTS))
     ap.add_argument("--no-cycles", action="store_true")
     ap.add_argument("--no-texrender", action="store_true")
     ap.add_argument("--json", default=os.path.join(common.ROOT, "bench", "results",
@@ -197,19 +208,20 @@ def main():
     if not args.no_texrender:
         textures = os.path.join(tools.work, "tex-" + args.variant)
         common.texcc(tools, os.path.join(common.ROOT, graph), textures, "interp")
-        result["texrender"] = texrender_split(tools, args, textures,
-                                              os.path.join(common.ROOT, scene))
+        for sampler in args.samplers.split(","):
+            result["texrender-" + sampler] = texrender_split(
+                tools, args, textures, os.path.join(common.ROOT, scene), sampler)
     if not args.no_cycles:
         result["cycles"] = cycles_split(tools, args)
     result["loadAfter"] = os.getloadavg()[0]
     os.makedirs(os.path.dirname(args.json), exist_ok=True)
     with open(args.json, "w") as f:
         json.dump(result, f, indent=1)
-    for r in ("texrender", "cycles"):
+    for r in [k for k in result if k.startswith("texrender")] + ["cycles"]:
         parts = result.get(r, {}).get("parts", result.get(r, {}))
         for k, v in parts.items():
             if isinstance(v, dict) and "meanPixelVariance" in v:
-                print("%-10s %-13s var %.3e  mean %.4f" % (r, k, v["meanPixelVariance"],
+                print("%-16s %-13s var %.3e  mean %.4f" % (r, k, v["meanPixelVariance"],
                                                           v["mean"]))
 
 

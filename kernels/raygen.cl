@@ -21,7 +21,7 @@ __kernel void raygen(__global RtPath *paths, __global int *active, __global cons
   int sample = passStart + i % sppPerPass;
   uint rng = rt_seed((uint)pixel, (uint)sample, seed);
   uint key = rt_pixel_key((uint)pixel, seed);
-  float2 j = rt_sobol2((uint)sample, rt_pattern_seed(key, RT_PATTERN_CAMERA));
+  float2 j = RT_SAMPLE2(&rng, (uint)sample, rt_pattern_seed(key, RT_PATTERN_CAMERA));
   float px = (float)x + j.x;
   float py = (float)y + j.y;
   float sx = 2.0f * px / (float)width - 1.0f;

@@ -228,8 +228,9 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float3 wi, le;
     float tmax;
     int type;
-    float2 lu = rt_sobol2(sample, rt_pattern_seed(key, RT_PATTERN_LIGHT(p.depth)));
-    float3 u = (float3)(lu, rt_sobol1d(sample, rt_pattern_seed(key, RT_PATTERN_LIGHT_CHOICE(p.depth))));
+    float choice = RT_SAMPLE1(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT_CHOICE(p.depth)));
+    float2 lu = RT_SAMPLE2(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT(p.depth)));
+    float3 u = (float3)(lu, choice);
     float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, u, &wi, &tmax, &le, &type);
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
@@ -264,7 +265,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float3 wi;
     float pdf;
     int delta;
-    float2 bu = rt_sobol2(sample, rt_pattern_seed(key, RT_PATTERN_BSDF(p.depth)));
+    float2 bu = RT_SAMPLE2(&rng, sample, rt_pattern_seed(key, RT_PATTERN_BSDF(p.depth)));
     float u1 = bu.x, u2 = bu.y;
     float3 wgt = (float3)(0.0f);
     if (leaf.type == RT_BSDF_PRINCIPLED) {

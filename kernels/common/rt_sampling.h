@@ -93,6 +93,21 @@ static inline float rt_sobol1d(uint index, uint seed) {
   return rt_unit(rt_owen(rt_reverse_bits(rt_owen(index, seed)), rt_hash(seed ^ 0x68bc21ebu)));
 }
 
+/* Bench-only: with RT_SAMPLER_PCG defined, every pattern is independent PCG numbers from the
+ * path's stream instead (the sampler before issue 26; bench/sampling.py --sampler pcg). */
+#ifdef RT_SAMPLER_PCG
+#define RT_SAMPLE2(rng, index, seed) rt_rand2(rng)
+#define RT_SAMPLE1(rng, index, seed) rt_rand(rng)
+#else
+#define RT_SAMPLE2(rng, index, seed) rt_sobol2(index, seed)
+#define RT_SAMPLE1(rng, index, seed) rt_sobol1d(index, seed)
+#endif
+
+static inline float2 rt_rand2(uint *rng) {
+  float a = rt_rand(rng);
+  return (float2)(a, rt_rand(rng));
+}
+
 /* The key of a full-film pixel under --seed: the same whatever the region or pass. */
 static inline uint rt_pixel_key(uint pixel, uint seed) {
   return rt_hash(pixel ^ rt_hash(seed ^ 0x2c1b3c6du));
