@@ -312,7 +312,13 @@ typedef int sam2D;
 #define TEXCC_CHECKS 1 /* 0: texcc --no-checks (A/B measurement only) */
 #endif
 
-// The safety state of one evaluation (texcc_device.h); fault may be null (not recorded).
+// The host target's fault record (texcc_abi.h), exported from the compiled proctex.cpp:
+// texcc-eval --host clears it, evaluates, and prints the fault it holds (docs/reliability.md).
+extern "C" {
+inline int texcc_host_faults[TEXCC_FAULT_WORDS] = {};
+}
+
+// The safety state of one evaluation (texcc_device.h); fault null: texcc_host_faults.
 struct TexccGuard {
   uint loopsLeft;
   uint at;
@@ -325,6 +331,11 @@ struct TexccGuard {
   uint badAt = 0u;
   int badIndex = 0;
   uint badLength = 0u;
+  // Its fault, if any, into the record (once). The destructor reports it when the evaluation
+  // ends, as texcc_report_fault does at the kernel's end: texcc_host_evaluate keeps its
+  // signature.
+  void report();
+  ~TexccGuard() { report(); }
 };
 
 struct TexccCtx {
@@ -335,17 +346,22 @@ struct TexccCtx {
   TexccGuard *guard;
 };
 
-inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, int detail, int extra) {
-  int *f = c->guard->fault;
-  if (!f || f[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
+inline void texcc_guard_fault(const TexccGuard *g, int kind, int line, uint at, int detail,
+                              int extra) {
+  int *f = g->fault ? g->fault : texcc_host_faults;
+  if (f[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
     return;
   f[TEXCC_FAULT_KIND] = kind;
   f[TEXCC_FAULT_LINE] = line;
   f[TEXCC_FAULT_AT] = static_cast<int>(at);
-  f[TEXCC_FAULT_HIT] = c->guard->hit;
+  f[TEXCC_FAULT_HIT] = g->hit;
   f[TEXCC_FAULT_DETAIL] = detail;
   f[TEXCC_FAULT_EXTRA] = extra;
-  f[TEXCC_FAULT_MATERIAL] = c->guard->material;
+  f[TEXCC_FAULT_MATERIAL] = g->material;
+}
+
+inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, int detail, int extra) {
+  texcc_guard_fault(c->guard, kind, line, at, detail, extra);
 }
 
 inline bool texcc_loop_continues(const TexccCtx *c, int line) {
@@ -405,14 +421,18 @@ TEXCC_CHECKED_READ(uint3)
 TEXCC_CHECKED_READ(uint4)
 #undef TEXCC_CHECKED_READ
 
-inline void texcc_report_fault(const TexccCtx *c) {
-  if (TEXCC_CHECKS && c->guard->line != 0)
-    texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, c->guard->line, c->guard->lineAt,
-                static_cast<int>(TEXCC_LOOP_BUDGET), 0);
-  else if (TEXCC_CHECKS && c->guard->badLine != 0)
-    texcc_fault(c, TEXCC_FAULT_INDEX, c->guard->badLine, c->guard->badAt, c->guard->badIndex,
-                static_cast<int>(c->guard->badLength));
+// A loop past its budget first: its out-of-range reads may be a consequence.
+inline void TexccGuard::report() {
+  if (TEXCC_CHECKS && line != 0)
+    texcc_guard_fault(this, TEXCC_FAULT_LOOP_BUDGET, line, lineAt,
+                      static_cast<int>(TEXCC_LOOP_BUDGET), 0);
+  else if (TEXCC_CHECKS && badLine != 0)
+    texcc_guard_fault(this, TEXCC_FAULT_INDEX, badLine, badAt, badIndex,
+                      static_cast<int>(badLength));
+  line = badLine = 0;
 }
+
+inline void texcc_report_fault(const TexccCtx *c) { c->guard->report(); }
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx
 #define TEXCC_CTX_ARG texcc_ctx

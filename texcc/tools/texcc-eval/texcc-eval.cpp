@@ -12,6 +12,7 @@
 #include "texcc_abi.h"
 #include "texcc/OutOfMemory.h"
 #include "texcc/Support/File.h"
+#include "texcc/Support/TextureFault.h"
 
 #include <CL/opencl.hpp>
 #include <nlohmann/json.hpp>
@@ -178,6 +179,17 @@ void printOutputs(const LayoutInfo &Info, const Options &Opts, const std::vector
     }
 }
 
+/// A texture's fault (a loop past its budget, a __global array read out of bounds:
+/// docs/reliability.md "User code"), F the fault record, at hit Hit: one line naming the node,
+/// its line and the grid point, as texrender names the pixel; exit 1, no values printed.
+[[noreturn]] void dieOfFault(const Options &Opts, const LayoutInfo &Info, const cl_int *F,
+                             size_t Hit) {
+  std::string ArgsBin, Why; // without it, an instruction's node is "?"
+  texcc::readRegularFile(Opts.OutDir + "/args.bin", ArgsBin, Why);
+  die(texcc::describeTextureFault(F, readFile(Opts.OutDir + "/layout.json"), ArgsBin) +
+      " at grid point " + std::to_string(Hit / std::max(Info.NumMaterials, 1u)));
+}
+
 template <class T> std::vector<T> nonEmpty(std::vector<T> V) {
   if (V.empty())
     V.resize(1);
@@ -277,6 +289,13 @@ struct DeviceRun {
     }
   }
 
+  /// The launches' fault record (all zero: no fault).
+  std::vector<cl_int> faults(cl::CommandQueue &Q) {
+    std::vector<cl_int> F(TEXCC_FAULT_WORDS, 0);
+    Q.enqueueReadBuffer(Buffers.back(), CL_TRUE, 0, F.size() * sizeof(cl_int), F.data());
+    return F;
+  }
+
   std::vector<float> read(cl::CommandQueue &Q) {
     std::vector<float> Out(NumHits * Info.MaxOutputs * 4, 0.0f);
     Q.enqueueReadBuffer(Outputs, CL_TRUE, 0, Out.size() * sizeof(float), Out.data());
@@ -297,7 +316,10 @@ std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Opt
   cl::CommandQueue Q(Ctx, Dev);
   DeviceRun Run(Ctx, Dev, Q, Opts.OutDir, Info, In);
   Run.enqueue(Q);
-  return Run.read(Q);
+  std::vector<float> Out = Run.read(Q);
+  if (const std::vector<cl_int> F = Run.faults(Q); F[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
+    dieOfFault(Opts, Info, F.data(), size_t(F[TEXCC_FAULT_HIT]));
+  return Out;
 }
 
 double median(std::vector<double> V) {
@@ -382,13 +404,19 @@ std::vector<float> runHost(const LayoutInfo &Info, const Inputs &In, const Optio
   auto Fn = reinterpret_cast<HostEntry>(dlsym(Lib, Info.Entry.c_str()));
   if (!Fn)
     die("proctex.cpp has no '" + Info.Entry + "'");
+  // The prelude's fault record (HostPrelude.hpp); a proctex.cpp of an older texcc has none.
+  auto *Faults = static_cast<cl_int *>(dlsym(Lib, "texcc_host_faults"));
   std::vector<float> Out(In.Hits.size() * Info.MaxOutputs * 4, 0.0f);
   auto Texels = nonEmpty(In.Texels);
   auto Images = nonEmpty(In.Images);
-  for (size_t H = 0; H < In.Hits.size(); ++H)
-    if (In.HitMaterial[H] >= 0)
-      Fn(In.HitMaterial[H], &In.Hits[H], &In.Settings, Texels.data(), Images.data(),
-         &Out[H * Info.MaxOutputs * 4]);
+  for (size_t H = 0; H < In.Hits.size(); ++H) {
+    if (In.HitMaterial[H] < 0)
+      continue;
+    Fn(In.HitMaterial[H], &In.Hits[H], &In.Settings, Texels.data(), Images.data(),
+       &Out[H * Info.MaxOutputs * 4]);
+    if (Faults && Faults[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
+      dieOfFault(Opts, Info, Faults, H);
+  }
   return Out;
 }
 
