@@ -182,10 +182,15 @@ class Server:
         """graph.json changed: its values replace the page's edits; a source changed: the
         signatures are read again, the edits stay (texrender keeps them too)."""
         loop = asyncio.get_running_loop()
-        if what == "graph":
-            await self.load_model()
-        elif what == "source":
-            await loop.run_in_executor(None, self.model.read_signatures)
+        try:
+            if what == "graph":
+                await self.load_model()
+            elif what == "source":
+                await loop.run_in_executor(None, self.model.read_signatures)
+        except (OSError, ValueError, RuntimeError) as e:
+            # A source that does not compile yet (texrender reports the error itself): the
+            # controls of the last good state stay.
+            log(f"the graph's signatures were not read again: {str(e).splitlines()[0]}")
 
     async def on_event(self, event):
         kind = event.get("event")

@@ -171,11 +171,14 @@ class Model:
         return cls(graph_path, sources, texcc)
 
     def read_signatures(self):
-        self.functions = list_nodes(self.texcc, self.sources)
-        self.ranges = {}
-        for fn, (path, _) in self.functions.items():
-            if path not in self.ranges:
-                self.ranges[path] = read_ranges(path)
+        """Reads the sources' signatures and ranges; on an error (a source that does not
+        compile) the previous ones stay and the error is raised."""
+        functions = list_nodes(self.texcc, self.sources)
+        ranges = {}
+        for path, _ in functions.values():
+            if path not in ranges:
+                ranges[path] = read_ranges(path)
+        self.functions, self.ranges = functions, ranges
 
     def param(self, node, arg):
         if node not in self.nodes:
