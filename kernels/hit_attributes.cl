@@ -16,7 +16,7 @@ __kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAtt
   RtHit h = hits[i];
   TexccHitAttrs a;
   a.worldPos = a.objectPos = a.normal = a.geomNormal = (float4)(0.0f);
-  a.tangent = a.viewDir = a.uvAO = (float4)(0.0f);
+  a.tangent = a.viewDir = a.uvAO = a.objectTangent = a.objectBitangent = (float4)(0.0f);
   a.uvAO.z = 1.0f;
   __global const RtPath *p = &paths[active[i]];
   float3 d = p->dir.xyz;
@@ -57,6 +57,16 @@ __kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAtt
       rt_frame(s.ns, &t, &b);
     }
     a.tangent = (float4)(normalize(t), 0.0f);
+    if (attrMask & (1u << TEXCC_ATTR_OBJECTPOS)) {
+      /* For bump's moved ObjectPos: the tangent frame through the inverse transform. */
+      float3 b = cross(s.ns, a.tangent.xyz);
+      a.objectTangent = (float4)(dot(mesh.worldToObject[0].xyz, a.tangent.xyz),
+                                 dot(mesh.worldToObject[1].xyz, a.tangent.xyz),
+                                 dot(mesh.worldToObject[2].xyz, a.tangent.xyz), 0.0f);
+      a.objectBitangent = (float4)(dot(mesh.worldToObject[0].xyz, b),
+                                   dot(mesh.worldToObject[1].xyz, b),
+                                   dot(mesh.worldToObject[2].xyz, b), 0.0f);
+    }
   }
   if (attrMask & (1u << TEXCC_ATTR_TEXCOORD0))
     a.uvAO.xy = s.uv;

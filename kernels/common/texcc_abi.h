@@ -34,6 +34,10 @@ typedef struct TexccHitAttrs {
   TEXCC_F4 tangent;    /* xyz, unit (dP/du, or any vector orthogonal to the normal) */
   TEXCC_F4 viewDir;    /* xyz, unit, from the hit towards the viewer (-ray direction) */
   TEXCC_F4 uvAO;       /* xy = TexCoord0, z = AO (1 = unoccluded), w = unused */
+  /* xyz: tangent and cross(normal, tangent) through the object's inverse transform (its linear
+   * part), set with Tangent and ObjectPos: bump moves ObjectPos by them (texcc_device.h). */
+  TEXCC_F4 objectTangent;
+  TEXCC_F4 objectBitangent;
 } TexccHitAttrs;
 
 /* Global engine settings (readSetting). */

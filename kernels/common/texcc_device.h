@@ -39,6 +39,13 @@ typedef struct TexccCtx {
   __global const float4 *texels;
   __global const TexccImageInfo *images;
   TexccGuard *guard;
+#if TEXCC_POSITION_OFFSET
+  /* A graph with a bump node (docs/graph.md "Bump"): what readAttr("WorldPos") and
+   * readAttr("ObjectPos") add to the hit's position while a node of the height runs at a
+   * moved position; zero otherwise (texcc_position_offset sets both). */
+  float3 worldOffset;
+  float3 objectOffset;
+#endif
 } TexccCtx;
 
 #define TEXCC_CTX_PARAM const TexccCtx *texcc_ctx
@@ -97,6 +104,15 @@ static inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
   return false;
 }
 
+/* A loop whose trip count is a span texcc can compute before it runs (a `for` over a bound that
+ * the loop does not change, e.g. fbm's octaves): `if (!texcc_loop_charge_span(texcc_ctx,
+ * (long)(n) - (long)(a), __LINE__)) {} else for (int i = a; i < n; ++i)`, charged max(0, span)
+ * once as texcc_loop_charge. */
+static inline bool texcc_loop_charge_span(const TexccCtx *c, long span, int line) {
+  return texcc_loop_charge(c, span <= 0 ? 0u : span >= (long)UINT_MAX ? UINT_MAX : (uint)span,
+                           line);
+}
+
 /* texcc turns every read `p[i]` of a __global array parameter into
  * `texcc_read_T(texcc_ctx, p, (i), texcc_n_p, __LINE__)`, texcc_n_p being the array's length
  * (a hidden parameter texcc adds). Out of range: 0, and the first such read's line, node, index
@@ -144,8 +160,17 @@ static inline void texcc_report_fault(const TexccCtx *c) {
 }
 
 /* readAttr("Name") lowers to texcc_attr_Name(texcc_ctx). */
+#if TEXCC_POSITION_OFFSET
+static inline float3 texcc_attr_WorldPos(const TexccCtx *c) {
+  return c->hit.worldPos.xyz + c->worldOffset;
+}
+static inline float3 texcc_attr_ObjectPos(const TexccCtx *c) {
+  return c->hit.objectPos.xyz + c->objectOffset;
+}
+#else
 static inline float3 texcc_attr_WorldPos(const TexccCtx *c) { return c->hit.worldPos.xyz; }
 static inline float3 texcc_attr_ObjectPos(const TexccCtx *c) { return c->hit.objectPos.xyz; }
+#endif
 static inline float3 texcc_attr_Normal(const TexccCtx *c) { return c->hit.normal.xyz; }
 static inline float3 texcc_attr_GeomNormal(const TexccCtx *c) { return c->hit.geomNormal.xyz; }
 static inline float3 texcc_attr_Tangent(const TexccCtx *c) { return c->hit.tangent.xyz; }
@@ -157,6 +182,60 @@ static inline float3 texcc_attr_ViewDir(const TexccCtx *c) { return c->hit.viewD
 static inline float texcc_setting_Time(const TexccCtx *c) { return c->settings->time; }
 static inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->frame; }
 static inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->settings->cameraPos.xyz; }
+
+#if TEXCC_POSITION_OFFSET
+/* Bump (docs/graph.md "Bump"). The step of the moved evaluations: TEXCC_BUMP_ANGLE radians
+ * seen from the camera (texrender has no ray differentials; 2.8e-4 is 0.1 pixel of a
+ * 256-pixel-wide 40-degree view, Cycles' default Filter Width of 0.1 pixel), at least 1e-5 of
+ * the position's magnitude (float resolution). */
+#ifndef TEXCC_BUMP_ANGLE
+#define TEXCC_BUMP_ANGLE 2.8e-4f
+#endif
+static inline float texcc_bump_step(const TexccCtx *c) {
+  const float3 p = c->hit.worldPos.xyz;
+  const float3 a = fabs(p);
+  return fmax(TEXCC_BUMP_ANGLE * length(p - c->settings->cameraPos.xyz),
+              1e-5f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
+}
+/* The unit tangent of the moved evaluations: Tangent made orthogonal to Normal (any
+ * orthogonal vector if they are parallel); the bitangent is cross(Normal, tangent). */
+static inline float3 texcc_bump_tangent(const TexccCtx *c) {
+  const float3 n = c->hit.normal.xyz;
+  float3 t = c->hit.tangent.xyz - dot(c->hit.tangent.xyz, n) * n;
+  if (!(length(t) > 1e-6f))
+    t = fabs(n.x) > 0.5f ? (float3)(-n.y, n.x, 0.0f) : (float3)(0.0f, -n.z, n.y);
+  return normalize(t);
+}
+/* Before a node runs: k = 0 the hit's position, 1 moved by one step along the tangent, 2 along
+ * the bitangent (in object space by the hit's objectTangent/objectBitangent, the same vectors
+ * through the object's inverse transform). The context is the kernel's own (non-const) local. */
+static inline void texcc_position_offset(const TexccCtx *c, int k) {
+  TexccCtx *m = (TexccCtx *)c;
+  m->worldOffset = m->objectOffset = (float3)(0.0f);
+  if (k == 0)
+    return;
+  const float e = texcc_bump_step(c);
+  const float3 t = texcc_bump_tangent(c);
+  m->worldOffset = e * (k == 1 ? t : cross(c->hit.normal.xyz, t));
+  m->objectOffset = e * (k == 1 ? c->hit.objectTangent.xyz : c->hit.objectBitangent.xyz);
+}
+/* The bump node: the height h at the hit, hx and hy one step along the tangent and bitangent.
+ * The perturbed normal from the height's surface gradient (Mikkelsen 2010, the method of
+ * Cycles' Bump node): the gradient over the step's parallelogram, scaled by distance, tilts
+ * the input normal; strength (0..1) blends towards it. */
+static inline float3 texcc_bump(const TexccCtx *c, float h, float strength, float distance,
+                                float3 normal, float hx, float hy) {
+  const float e = texcc_bump_step(c);
+  const float3 t = texcc_bump_tangent(c);
+  const float3 dx = e * t, dy = e * cross(c->hit.normal.xyz, t);
+  const float3 rx = cross(dy, normal), ry = cross(normal, dx);
+  const float det = dot(dx, rx);
+  const float3 grad = (hx - h) * rx + (hy - h) * ry;
+  const float3 tilted = normalize(fabs(det) * normal - distance * sign(det) * grad);
+  const float s = clamp(strength, 0.0f, 1.0f);
+  return normalize(s * tilted + (1.0f - s) * normal);
+}
+#endif
 
 /* Attribute by id, widened to float4 (the interpreter's attribute arguments). */
 static inline float4 texcc_attr_by_id(const TexccCtx *c, uint id) {

@@ -3,6 +3,7 @@
 #include "Emit.h"
 
 #include "texcc/Codegen/Backend.h"
+#include "texcc/Graph/Bump.h"
 #include "texcc/Graph/Passes.h"
 #include "texcc/Version.h"
 
@@ -93,6 +94,8 @@ std::string generateKernel(const CompiledGraph &CG, const CodegenOptions &Opts) 
     OS << "#define TEXCC_LOOP_BUDGET " << Opts.LoopBudget << "u\n";
   if (!Opts.Checks)
     OS << "#define TEXCC_CHECKS 0 /* texcc --no-checks: no loop budget */\n";
+  if (graph::usesPositionOffset(CG))
+    OS << "#define TEXCC_POSITION_OFFSET 1 /* a bump node moves the position */\n";
   OS << "\n";
   if (!Host)
     // No a*b+c fused into one rounding: where the compiler fuses depends on how each mode's

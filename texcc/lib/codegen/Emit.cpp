@@ -1,6 +1,7 @@
 // Helpers shared by the generators of every mode (see Emit.h).
 #include "Emit.h"
 
+#include "texcc/Graph/Bump.h"
 #include "texcc/Graph/Passes.h"
 
 #include <cmath>
@@ -121,6 +122,14 @@ std::string kernelEpilogue() {
 
 std::string guardAtInstruction(unsigned Instruction) {
   return "texcc_ctx->guard->at = " + std::to_string(Instruction) + "u;";
+}
+
+std::string positionOffsetStatement(const CompiledGraph &CG, const CompiledNode &N,
+                                    int &Current) {
+  if (static_cast<int>(N.PositionOffset) == Current || !usesPositionOffset(CG))
+    return "";
+  Current = static_cast<int>(N.PositionOffset);
+  return "texcc_position_offset(texcc_ctx, " + std::to_string(Current) + ");";
 }
 
 std::string signatureComment(const FunctionSignature &Sig) {

@@ -44,6 +44,11 @@ std::string kernelEpilogue();
 /// The statement that tells the guard which node runs next (the fault names it): instruction
 /// Instruction of the material's program.
 std::string guardAtInstruction(unsigned Instruction);
+/// Bump (graph/Bump.h): in a graph that moves the position, the statement that sets the
+/// context's position offset for node N when it differs from Current (-1: not set yet), and
+/// Current updated; "" otherwise.
+std::string positionOffsetStatement(const graph::CompiledGraph &CG, const graph::CompiledNode &N,
+                                    int &Current);
 
 /// The parameter/return spelling of a texture function, e.g. "float fbm3(float3 p, int n)".
 std::string signatureComment(const graph::FunctionSignature &Sig);

@@ -344,6 +344,9 @@ struct TexccCtx {
   const cl_float4 *texels;
   const TexccImageInfo *images;
   TexccGuard *guard;
+  // Bump: what WorldPos and ObjectPos add while a height node runs moved (texcc_device.h).
+  float3 worldOffset = float3(0.0f);
+  float3 objectOffset = float3(0.0f);
 };
 
 inline void texcc_guard_fault(const TexccGuard *g, int kind, int line, uint at, int detail,
@@ -441,8 +444,12 @@ inline void texcc_report_fault(const TexccCtx *c) { c->guard->report(); }
 inline float4 texcc_f4(const cl_float4 &v) { return float4(v.s[0], v.s[1], v.s[2], v.s[3]); }
 inline float3 texcc_f3(const cl_float4 &v) { return float3(v.s[0], v.s[1], v.s[2]); }
 
-inline float3 texcc_attr_WorldPos(const TexccCtx *c) { return texcc_f3(c->hit.worldPos); }
-inline float3 texcc_attr_ObjectPos(const TexccCtx *c) { return texcc_f3(c->hit.objectPos); }
+inline float3 texcc_attr_WorldPos(const TexccCtx *c) {
+  return texcc_f3(c->hit.worldPos) + c->worldOffset;
+}
+inline float3 texcc_attr_ObjectPos(const TexccCtx *c) {
+  return texcc_f3(c->hit.objectPos) + c->objectOffset;
+}
 inline float3 texcc_attr_Normal(const TexccCtx *c) { return texcc_f3(c->hit.normal); }
 inline float3 texcc_attr_GeomNormal(const TexccCtx *c) { return texcc_f3(c->hit.geomNormal); }
 inline float3 texcc_attr_Tangent(const TexccCtx *c) { return texcc_f3(c->hit.tangent); }
@@ -463,6 +470,48 @@ inline float4 texcc_texel(const cl_float4 *texels, TexccImageInfo im, int x, int
   if (x < 0)
     x += im.width;
   y = y % im.height;
+// Bump: as texcc_device.h's texcc_bump_step, texcc_bump_tangent, texcc_position_offset and
+// texcc_bump (the same operations in the same order).
+#ifndef TEXCC_BUMP_ANGLE
+#define TEXCC_BUMP_ANGLE 2.8e-4f
+#endif
+inline float texcc_bump_step(const TexccCtx *c) {
+  const float3 p = texcc_f3(c->hit.worldPos);
+  const float3 a = fabs(p);
+  return fmax(TEXCC_BUMP_ANGLE * length(p - texcc_f3(c->settings->cameraPos)),
+              1e-5f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
+}
+inline float3 texcc_bump_tangent(const TexccCtx *c) {
+  const float3 n = texcc_f3(c->hit.normal), t0 = texcc_f3(c->hit.tangent);
+  float3 t = t0 - dot(t0, n) * n;
+  if (!(length(t) > 1e-6f))
+    t = fabs(n.x) > 0.5f ? float3(-n.y, n.x, 0.0f) : float3(0.0f, -n.z, n.y);
+  return normalize(t);
+}
+inline void texcc_position_offset(const TexccCtx *c, int k) {
+  TexccCtx *m = const_cast<TexccCtx *>(c);
+  m->worldOffset = m->objectOffset = float3(0.0f);
+  if (k == 0)
+    return;
+  const float e = texcc_bump_step(c);
+  const float3 t = texcc_bump_tangent(c);
+  m->worldOffset = e * (k == 1 ? t : cross(texcc_f3(c->hit.normal), t));
+  m->objectOffset =
+      e * (k == 1 ? texcc_f3(c->hit.objectTangent) : texcc_f3(c->hit.objectBitangent));
+}
+inline float3 texcc_bump(const TexccCtx *c, float h, float strength, float distance,
+                         float3 normal, float hx, float hy) {
+  const float e = texcc_bump_step(c);
+  const float3 t = texcc_bump_tangent(c);
+  const float3 dx = e * t, dy = e * cross(texcc_f3(c->hit.normal), t);
+  const float3 rx = cross(dy, normal), ry = cross(normal, dx);
+  const float det = dot(dx, rx);
+  const float3 grad = (hx - h) * rx + (hy - h) * ry;
+  const float3 tilted = normalize(fabs(det) * normal - distance * sign(det) * grad);
+  const float s = clamp(strength, 0.0f, 1.0f);
+  return normalize(s * tilted + (1.0f - s) * normal);
+}
+
   if (y < 0)
     y += im.height;
   return texcc_f4(texels[im.offset + y * im.width + x]);

@@ -27,9 +27,13 @@ void emitStraightLineMaterial(std::ostringstream &OS, const CompiledGraph &CG,
   E.Tgt = T;
   E.BakeConstants = true;
   E.ChildExpr = [&CG](unsigned Child) { return nodeLocalName(CG.Nodes[Child], Child); };
+  int Offset = -1;
   for (size_t J = 0; J < M.Program.size(); ++J) {
     const Instruction &I = M.Program[J];
     const CompiledNode &N = CG.Nodes[I.Node];
+    const std::string Move = positionOffsetStatement(CG, N, Offset);
+    if (!Move.empty())
+      OS << "  " << Move << "\n";
     OS << "  " << guardAtInstruction(J) << "\n"
        << "  const " << spelling(N.Return) << " " << nodeLocalName(N, I.Node) << " = "
        << E.call(CG, I.Node) << ";\n";

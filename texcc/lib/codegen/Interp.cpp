@@ -4,6 +4,7 @@
 // it once per node.
 #include "Emit.h"
 
+#include "texcc/Graph/Bump.h"
 #include "texcc/Graph/Passes.h"
 
 #include <set>
@@ -189,7 +190,14 @@ static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoi
         "  const uint numOutputs = fakeStack[prog + 1u];\n"
         "  for (uint i = 0u; i < numInstructions; ++i) {\n";
   OS << "    const uint fnId = fakeStack[prog + 2u + 3u * i];\n";
-  OS << "    const uint resultSlot = fakeStack[prog + 3u + 3u * i];\n";
+  if (usesPositionOffset(CG))
+    // Bump (graph/Bump.h): bits 30-31 of the result word, the position offset the node runs
+    // with (texcc_position_offset).
+    OS << "    const uint resultWord = fakeStack[prog + 3u + 3u * i];\n"
+          "    const uint resultSlot = resultWord & 0x3FFFFFFFu;\n"
+          "    texcc_position_offset(texcc_ctx, (int)(resultWord >> 30));\n";
+  else
+    OS << "    const uint resultSlot = fakeStack[prog + 3u + 3u * i];\n";
   OS << "    const uint rec = fakeStack[prog + 4u + 3u * i] / 4u; /* the record, in words */\n"
         "    guard.at = i;\n"
         "    float4 r;\n"

@@ -49,6 +49,7 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
   E.BakeMarked = true;
   E.ChildExpr = [&Position](unsigned Child) { return "s" + std::to_string(Position.at(Child)); };
   E.RecordWord = [&Position](unsigned Node) { return "r" + std::to_string(Position.at(Node)); };
+  int Offset = -1;
   for (size_t J = 0; J < M.Program.size(); ++J) {
     const unsigned NodeIndex = M.Program[J].Node;
     const CompiledNode &N = CG.Nodes[NodeIndex];
@@ -65,6 +66,9 @@ static void emitShapeBody(std::ostringstream &OS, const CompiledGraph &CG,
     } else {
       Call = E.call(CG, NodeIndex);
     }
+    const std::string Move = positionOffsetStatement(CG, N, Offset);
+    if (!Move.empty())
+      OS << "  " << Move << "\n";
     OS << "  " << guardAtInstruction(J) << "\n"
        << "  const " << spelling(N.Return) << " s" << J << " = " << Call << ";\n";
   }

@@ -55,6 +55,10 @@ static void emitNodeKernel(std::ostringstream &OS, const CompiledGraph &CG, unsi
      << kernelParameterList() << ") {\n";
   emitKernelPrologue(OS, Skip,
                      "TEXCC_AT_NODE | " + std::to_string(NodeIndex) + "u");
+  int Offset = -1;
+  const std::string Move = positionOffsetStatement(CG, N, Offset);
+  if (!Move.empty())
+    OS << "  " << Move << "\n";
   ArgEmitter E;
   E.Tgt = Target::OpenCL;
   E.ArgIndent = 10;

@@ -1,5 +1,6 @@
 // compileGraph(): validation, then the passes in order, then the encoding.
 
+#include "texcc/Graph/Bump.h"
 #include "texcc/Graph/Passes.h"
 #include "texcc/OutOfMemory.h"
 
@@ -26,14 +27,15 @@ std::set<std::string> CompiledGraph::liveFunctions() const {
 std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
                                           const CompileOptions &Opts, DiagnosticSink &Diags) {
   // Each step names what it allocates, for "out of memory while ..." (texcc/OutOfMemory.h).
+  const SignatureMap All = withBuiltinSignatures(Sigs); // bump and its helpers (Bump.h)
   std::optional<CompiledGraph> CG = whileAllocating(
-      "building the node and material tables", [&] { return resolveGraph(G, Sigs, Opts, Diags); });
+      "building the node and material tables", [&] { return resolveWithBump(G, All, Opts, Diags); });
   if (!CG)
     return std::nullopt;
   whileAllocating("optimizing the node graph", [&] {
     removeUnreachableNodes(*CG, Opts.Log);
     mergeIdenticalNodes(*CG, Opts.Log);
-    assignFunctionIds(*CG, Sigs, Opts, Opts.Log);
+    assignFunctionIds(*CG, All, Opts, Opts.Log);
   });
   whileAllocating("encoding the material programs", [&] {
     orderPrograms(*CG, Opts.Log);

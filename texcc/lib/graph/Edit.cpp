@@ -132,6 +132,13 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
       encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, CN.RecordOffset), Old);
       for (uint32_t Copy : CN.RecordCopies)
         encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
+      for (CompiledNode &Moved : CG.Nodes) // bump's copies of the node (Bump.h) follow it
+        if (Moved.OffsetOf == NodeId && I < Moved.Args.size()) {
+          Moved.Args[I].Values = New.Values;
+          encodeArgumentValue(CG.ArgsBin, parameterBlockStart(Moved, Moved.RecordOffset), Old);
+          for (uint32_t Copy : Moved.RecordCopies)
+            encodeArgumentValue(CG.ArgsBin, parameterBlockStart(Moved, Copy), Old);
+        }
       if (!CG.Quickened.empty() && argumentSource(Old).K == ArgumentSource::Kind::IntValue) {
         // An int value is part of a quickened pattern: the instruction now runs the entry of
         // the kernel's table (pinned by init) for its new value, or its plain case (a new

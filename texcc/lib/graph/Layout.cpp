@@ -249,7 +249,9 @@ void encodeArgsBin(CompiledGraph &CG) {
     W += 8;
     for (const Instruction &In : M.Program) {
       put32(Bin, W, In.Quick >= 0 ? CG.Quickened[In.Quick].Opcode : CG.Nodes[In.Node].FnId);
-      put32(Bin, W + 4, In.ResultSlot);
+      // Bump (Bump.h): bits 30-31 of the result word are the position offset the node runs
+      // with (the interpreter's decoder; 0 in a graph without bump).
+      put32(Bin, W + 4, In.ResultSlot | CG.Nodes[In.Node].PositionOffset << 30);
       put32(Bin, W + 8, In.RecordOffset);
       W += 12;
     }

@@ -138,7 +138,7 @@ void mergeIdenticalNodes(CompiledGraph &CG, std::ostream *Log) {
   std::vector<unsigned> ClassOf(Count), Survivor;
   for (unsigned N : postOrder(CG)) {
     const CompiledNode &CN = CG.Nodes[N];
-    std::string Key = CN.Fn + "(";
+    std::string Key = CN.Fn + "@" + std::to_string(CN.PositionOffset) + "(";
     for (const CompiledArg &A : CN.Args) {
       Key += A.Name + "=" + std::to_string(static_cast<int>(A.Src)) + ":" +
              (A.Broadcast ? "b" : "") + ":";

@@ -67,7 +67,7 @@ std::string shapeKey(const CompiledGraph &CG, const CompiledMaterial &M) {
   for (size_t J = 0; J < M.Program.size(); ++J) {
     const CompiledNode &N = CG.Nodes[M.Program[J].Node];
     Position[M.Program[J].Node] = J;
-    K += N.Fn + "(";
+    K += N.Fn + (N.PositionOffset ? "@" + std::to_string(N.PositionOffset) : "") + "(";
     for (const CompiledArg &A : N.Args) {
       switch (A.Src) {
       case CompiledArg::Source::Constant:

@@ -1,6 +1,7 @@
 // Validation of a parsed graph against the function signatures: resolveGraph() turns every
 // node argument and BSDF input into a CompiledArg / CompiledBsdfInput, or reports why not.
 
+#include "texcc/Graph/Bump.h"
 #include "texcc/Graph/Passes.h"
 #include "texcc/Support/Numbers.h"
 
@@ -511,7 +512,7 @@ private:
 
 std::optional<CompiledGraph> resolveGraph(const Graph &G, const SignatureMap &Sigs,
                                           const CompileOptions &Opts, DiagnosticSink &Diags) {
-  return Resolver(G, Sigs, Opts, Diags).run();
+  return Resolver(G, withBuiltinSignatures(Sigs), Opts, Diags).run(); // bump (Bump.h)
 }
 
 bool validateGraph(const Graph &G, const SignatureMap &Sigs, const CompileOptions &Opts,

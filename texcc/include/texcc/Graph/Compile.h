@@ -121,6 +121,11 @@ struct CompiledNode {
   /// blocks are identical). Instruction::RecordOffset says which one an instruction uses.
   std::vector<uint32_t> RecordCopies;
 };
+  /// Bump (Bump.h): 0, or 1/2 for a copy of a height node that runs with the position moved
+  /// along the tangent/bitangent; OffsetOf is the id of the node it copies ("" for a node of
+  /// the moved WorldPos/ObjectPos itself), whose edits it follows.
+  unsigned PositionOffset = 0;
+  std::string OffsetOf;
 
 struct Instruction {
   unsigned Node = 0;          // index into CompiledGraph::Nodes
