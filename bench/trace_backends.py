@@ -6,6 +6,10 @@ the frame time (renderSeconds) and of each stage's time, the BVH build times, an
 load average at each render. Writes bench/trace_backends.json and prints a Markdown table.
 
 usage: bench/trace_backends.py [--build build] [--reps 1spp,16spp] [--size 512x512]
+                               [--configs diffuse,rust] [--traces opencl,embree] [--before DIR]
+--before DIR: also render with an older build (DIR/bin/texrender, DIR/bin/texcc and
+DIR/kernels, e.g. a copy of build/ taken before a change) as trace "opencl-before"
+(--trace=opencl), interleaved with the others: the before/after of an OpenCL traversal change.
 Needs examples/atrium/generated (scripts/make_scenes.py --only atrium rust).
 """
 import argparse
@@ -35,22 +39,34 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--reps", default="5,3", help="repetitions at 1 spp and at 16 spp")
     ap.add_argument("--size", default="512x512")
+    ap.add_argument("--configs", default=",".join(CONFIGS))
+    ap.add_argument("--traces", default=",".join(TRACES))
+    ap.add_argument("--before", help="an older build (bin/, kernels/): adds opencl-before")
     args = ap.parse_args()
     reps = dict(zip([1, 16], map(int, args.reps.split(","))))
-    texcc = os.path.join(args.build, "bin", "texcc")
-    texrender = os.path.join(args.build, "bin", "texrender")
+    configs = args.configs.split(",")
+    traces = args.traces.split(",") + (["opencl-before"] if args.before else [])
+    builds = {"": args.build}
+    if args.before:
+        builds["-before"] = args.before
     raw = []
     with tempfile.TemporaryDirectory() as tmp:
         tex = {}
-        for name, (_, graph) in CONFIGS.items():
-            tex[name] = os.path.join(tmp, name)
-            run([texcc, "--graph", os.path.join(ROOT, graph), "-o", tex[name]])
+        for suffix, build in builds.items():
+            for name in configs:
+                tex[name + suffix] = os.path.join(tmp, name + suffix)
+                run([os.path.join(build, "bin", "texcc"), "--graph",
+                     os.path.join(ROOT, CONFIGS[name][1]), "-o", tex[name + suffix]])
 
         def render(name, spp, trace, rep):
             stats = os.path.join(tmp, "stats.json")
-            cmd = [texrender, os.path.join(ROOT, CONFIGS[name][0]), "--textures", tex[name],
+            suffix = "-before" if trace.endswith("-before") else ""
+            build = builds[suffix]
+            cmd = [os.path.join(build, "bin", "texrender"), os.path.join(ROOT, CONFIGS[name][0]),
+                   "--textures", tex[name + suffix], "--kernels", os.path.join(build, "kernels"),
                    "--size", args.size, "--spp", str(spp), "--max-depth", "4", "--quiet",
-                   "--trace=" + trace, "-o", os.path.join(tmp, "img.exr"), "--stats", stats]
+                   "--trace=" + trace[:len(trace) - len(suffix)], "-o",
+                   os.path.join(tmp, "img.exr"), "--stats", stats]
             run(cmd)
             with open(stats) as f:
                 s = json.load(f)
@@ -58,33 +74,39 @@ def main():
                  "renderSeconds": s["renderSeconds"], "bvhBuildSeconds": s["bvhBuildSeconds"],
                  "loadAverage": os.getloadavg()[0], "device": s["device"],
                  "stages": {k: v["seconds"] for k, v in s["kernels"].items()},
-                 "rays": s["rays"]}
+                 "rays": s["rays"], "bvhNodes": s["bvhNodes"]}
             print("%-7s %2d spp %-6s rep %d: %.3f s (load %.1f)" % (
                 name, spp, trace, rep, r["renderSeconds"], r["loadAverage"]), flush=True)
             return r
 
-        for name in CONFIGS:  # warm the program caches
-            for trace in TRACES:
+        for name in configs:  # warm the program caches
+            for trace in traces:
                 render(name, 1, trace, -1)
         for spp in (1, 16):
             for rep in range(reps[spp]):
-                for name in CONFIGS:
-                    for trace in TRACES:
+                for name in configs:
+                    # Rotate which configuration goes first in each repetition.
+                    for trace in traces[rep % len(traces):] + traces[:rep % len(traces)]:
                         raw.append(render(name, spp, trace, rep))
     summary = []
     for spp in (1, 16):
-        for name in CONFIGS:
-            for trace in TRACES:
+        for name in configs:
+            for trace in traces:
                 rs = [r for r in raw if r["config"] == name and r["spp"] == spp and r["trace"] == trace]
+                if not rs:
+                    continue
                 med = lambda f: statistics.median(f(r) for r in rs)
                 summary.append({
                     "config": name, "spp": spp, "trace": trace, "n": len(rs),
                     "renderSeconds": med(lambda r: r["renderSeconds"]),
                     "renderSecondsAll": [round(r["renderSeconds"], 3) for r in rs],
                     "stages": {k: med(lambda r: r["stages"].get(k, 0.0)) for k in STAGES},
+                    # "wide" (Embree's builder, the OpenCL traversal's BVH), "embree" (Embree's
+                    # scene BVH, embree only), "sah" (the binary SAH builder of older builds).
                     "bvhBuildSeconds": {k: (med(lambda r: r["bvhBuildSeconds"][k])
                                             if rs[0]["bvhBuildSeconds"][k] is not None else None)
-                                        for k in ("sah", "embree")},
+                                        for k in rs[0]["bvhBuildSeconds"]},
+                    "bvhNodes": rs[0]["bvhNodes"],
                     "raysPerSecond": {k: med(lambda r: r["rays"][k]["perSecond"])
                                       for k in ("primary", "bounce", "shadow", "ao")},
                     "loadAverage": [round(r["loadAverage"], 1) for r in rs]})

@@ -28,7 +28,7 @@ static inline void ao_ray(__global const RtTri *tris, __global const RtTriAttr *
 }
 
 /* AO ray j of the path p's hit h: 1 if it hits something within aoDistance. */
-static inline int ao_occluded(__global const RtBvhNode *nodes, __global const RtTri *tris,
+static inline int ao_occluded(__global const RtBvh4Node *nodes, __global const RtTri *tris,
                        __global const RtTriAttr *triAttrs, __global const RtPath *p, RtHit h,
                        int j, float aoDistance, float eps, uint seed) {
   float3 o, dir;
@@ -62,7 +62,7 @@ __kernel void ao_rays(__global const RtTri *tris, __global const RtTriAttr *triA
   rays[k].contrib = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
 }
 
-__kernel void ao_trace(__global const RtBvhNode *nodes, __global const RtTri *tris,
+__kernel void ao_trace(__global const RtBvh4Node *nodes, __global const RtTri *tris,
                        __global const RtTriAttr *triAttrs, __global const RtPath *paths,
                        __global const int *active, int numActive, __global const RtHit *hits,
                        __global const RtMesh *meshes, __global const RtMaterial *materials,
@@ -96,7 +96,7 @@ __kernel void ao_reduce(__global const uchar *occluded, __global const RtHit *hi
   attrs[i].uvAO.z = 1.0f - (float)n / (float)aoSamples;
 }
 
-__kernel void ao_loop(__global const RtBvhNode *nodes, __global const RtTri *tris,
+__kernel void ao_loop(__global const RtBvh4Node *nodes, __global const RtTri *tris,
                       __global const RtTriAttr *triAttrs, __global const RtPath *paths,
                       __global const int *active, int numActive, __global const RtHit *hits,
                       __global const RtMesh *meshes, __global const RtMaterial *materials,

@@ -2,7 +2,7 @@
  * belongs to path active[i]. */
 #include "rt_bvh.h"
 
-__kernel void closest_hit(__global const RtBvhNode *nodes, __global const RtTri *tris,
+__kernel void closest_hit(__global const RtBvh4Node *nodes, __global const RtTri *tris,
                           __global const RtPath *paths, __global const int *active, int numActive,
                           __global RtHit *hits) {
   int i = get_global_id(0);

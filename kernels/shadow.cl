@@ -2,7 +2,7 @@
  * radiance to its path. Shadow ray i belongs to path active[i]. */
 #include "rt_bvh.h"
 
-__kernel void shadow(__global const RtBvhNode *nodes, __global const RtTri *tris,
+__kernel void shadow(__global const RtBvh4Node *nodes, __global const RtTri *tris,
                      __global const RtShadowRay *rays, __global RtPath *paths,
                      __global const int *active, int numActive) {
   int i = get_global_id(0);

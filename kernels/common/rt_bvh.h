@@ -32,18 +32,6 @@ static inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3
   return t;
 }
 
-/* Slab test; returns the entry distance or a value > tmax on a miss. */
-static inline float rt_intersect_box(__global const RtBvhNode *n, float3 o, float3 invd, float tmax) {
-  float3 bmin = (float3)(n->bmin[0], n->bmin[1], n->bmin[2]);
-  float3 bmax = (float3)(n->bmax[0], n->bmax[1], n->bmax[2]);
-  float3 t0 = (bmin - o) * invd;
-  float3 t1 = (bmax - o) * invd;
-  float3 lo = fmin(t0, t1), hi = fmax(t0, t1);
-  float tn = fmax(fmax(lo.x, lo.y), fmax(lo.z, 0.0f));
-  float tf = fmin(fmin(hi.x, hi.y), fmin(hi.z, tmax));
-  return tn <= tf ? tn : INFINITY;
-}
-
 static inline float3 rt_safe_inverse(float3 d) {
   const float tiny = 1e-30f;
   return (float3)(1.0f / (fabs(d.x) > tiny ? d.x : copysign(tiny, d.x)),
@@ -51,68 +39,97 @@ static inline float3 rt_safe_inverse(float3 d) {
                   1.0f / (fabs(d.z) > tiny ? d.z : copysign(tiny, d.z)));
 }
 
-/* Traverses the BVH. anyHit: stop at the first intersection (shadow and AO rays). Returns the
- * hit (tri = -1 on a miss). */
-static inline RtHit rt_trace(__global const RtBvhNode *nodes, __global const RtTri *tris, float3 o,
-                      float3 d, float tmin, float tmax, int anyHit) {
+/* Inserts child ref c with entry distance t into the list (cs, ds, m) sorted nearest first,
+ * when h (its slab test) is true. */
+#define RT_BVH_INSERT(h, c, t)                                                                   \
+  if (h) {                                                                                       \
+    int k_ = m++;                                                                                \
+    while (k_ > 0 && ds[k_ - 1] > (t)) {                                                         \
+      ds[k_] = ds[k_ - 1];                                                                       \
+      cs[k_] = cs[k_ - 1];                                                                       \
+      --k_;                                                                                      \
+    }                                                                                            \
+    ds[k_] = (t);                                                                                \
+    cs[k_] = (c);                                                                                \
+  }
+
+/* Traverses the wide BVH (RtBvh4Node: 4 children tested at once with float4 slab tests, the
+ * nearest hit child next, the others stacked farthest first). anyHit: stop at the first
+ * intersection (shadow and AO rays). Returns the hit (tri = -1 on a miss). */
+static inline RtHit rt_trace(__global const RtBvh4Node *nodes, __global const RtTri *tris,
+                             float3 o, float3 d, float tmin, float tmax, int anyHit) {
   RtHit hit;
   hit.t = tmax;
   hit.tri = -1;
   hit.u = 0.0f;
   hit.v = 0.0f;
   float3 invd = rt_safe_inverse(d);
+  /* Per axis, the near plane is the box's min when the direction is positive: an empty slot
+   * (min > max) then gives tnear > tfar on every ray. */
+  const int nx = invd.x < 0.0f, ny = invd.y < 0.0f, nz = invd.z < 0.0f;
+  const float4 ox = (float4)(o.x), oy = (float4)(o.y), oz = (float4)(o.z);
+  const float4 ix = (float4)(invd.x), iy = (float4)(invd.y), iz = (float4)(invd.z);
   int stack[RT_BVH_STACK];
-  float entry[RT_BVH_STACK]; /* the entry distance of each stacked node */
+  float entry[RT_BVH_STACK]; /* the entry distance of each stacked child */
   int sp = 0;
-  int node = 0;
-  if (rt_intersect_box(&nodes[0], o, invd, hit.t) == INFINITY)
-    return hit;
+  int ref = 0;
   while (1) {
-    __global const RtBvhNode *n = &nodes[node];
-    if (n->count > 0) {
-      for (int i = 0; i < n->count; ++i) {
-        int ti = n->leftFirst + i;
-        float u, v;
-        float t = rt_intersect_tri(&tris[ti], o, d, tmin, hit.t, &u, &v);
+    if (ref >= 0) {
+      __global const RtBvh4Node *n = &nodes[ref];
+      float4 tnx = ((nx ? n->hix : n->lox) - ox) * ix, tfx = ((nx ? n->lox : n->hix) - ox) * ix;
+      float4 tny = ((ny ? n->hiy : n->loy) - oy) * iy, tfy = ((ny ? n->loy : n->hiy) - oy) * iy;
+      float4 tnz = ((nz ? n->hiz : n->loz) - oz) * iz, tfz = ((nz ? n->loz : n->hiz) - oz) * iz;
+      float4 tn = fmax(fmax(tnx, tny), fmax(tnz, (float4)(0.0f)));
+      float4 tf = fmin(fmin(tfx, tfy), fmin(tfz, (float4)(hit.t)));
+      int4 enter = tn <= tf;
+      int4 c = n->child;
+      int cs[4];
+      float ds[4];
+      int m = 0;
+      RT_BVH_INSERT(enter.x, c.x, tn.x);
+      RT_BVH_INSERT(enter.y, c.y, tn.y);
+      RT_BVH_INSERT(enter.z, c.z, tn.z);
+      RT_BVH_INSERT(enter.w, c.w, tn.w);
+      if (m > 0) {
+        for (int k = m - 1; k > 0; --k)
+          if (sp < RT_BVH_STACK) {
+            stack[sp] = cs[k];
+            entry[sp++] = ds[k];
+          }
+        ref = cs[0];
+        continue;
+      }
+    } else {
+      int v = ~ref;
+      int first = v >> RT_BVH_LEAF_BITS, count = v & ((1 << RT_BVH_LEAF_BITS) - 1);
+      for (int ti = first; ti < first + count; ++ti) {
+        float u, w;
+        float t = rt_intersect_tri(&tris[ti], o, d, tmin, hit.t, &u, &w);
         if (t > 0.0f) {
           hit.t = t;
           hit.tri = ti;
           hit.u = u;
-          hit.v = v;
+          hit.v = w;
           if (anyHit)
             return hit;
         }
       }
-    } else {
-      int c0 = n->leftFirst, c1 = n->leftFirst + 1;
-      float d0 = rt_intersect_box(&nodes[c0], o, invd, hit.t);
-      float d1 = rt_intersect_box(&nodes[c1], o, invd, hit.t);
-      if (d0 > d1) {
-        float td = d0; d0 = d1; d1 = td;
-        int tc = c0; c0 = c1; c1 = tc;
-      }
-      if (d0 != INFINITY) {
-        if (d1 != INFINITY && sp < RT_BVH_STACK) {
-          stack[sp] = c1;
-          entry[sp++] = d1;
-        }
-        node = c0;
-        continue;
-      }
     }
-    /* Pop the nearest pending node that can still hold a closer hit. */
-    node = -1;
-    while (sp > 0) {
+    /* Pop the nearest pending child that can still hold a closer hit. */
+    int found = 0;
+    while (sp > 0 && !found) {
       --sp;
       if (entry[sp] <= hit.t) {
-        node = stack[sp];
-        break;
+        ref = stack[sp];
+        found = 1;
       }
     }
-    if (node < 0)
+    if (!found)
       break;
   }
   return hit;
 }
+
+#undef RT_BVH_INSERT
 
 #endif

@@ -8,9 +8,11 @@
 
 #ifdef __OPENCL_C_VERSION__
 #define RT_F4 float4
+#define RT_I4 int4
 #define RT_UINT uint
 #else
 #define RT_F4 cl_float4
+#define RT_I4 cl_int4
 #define RT_UINT cl_uint
 #endif
 
@@ -43,8 +45,10 @@
 #define RT_PATH_ALIVE 1
 #define RT_PATH_SPECULAR 2 /* the last bounce was a delta lobe (or the camera): MIS weight 1 */
 
-/* The traversal stack depth; the host builder keeps the BVH shallower than this. */
+/* The traversal stack depth. A BVH4 node pushes at most 3 children, so the host builder keeps
+ * the tree at most RT_BVH_MAX_DEPTH levels deep (3 * 20 < 64). */
 #define RT_BVH_STACK 64
+#define RT_BVH_MAX_DEPTH 20
 
 /* Counters in the device statistics buffer. */
 #define RT_COUNT_SHADOW_RAYS 0
@@ -53,14 +57,19 @@
 #define RT_COUNT_SATURATED 3 /* samples whose addition saturated a pixel sum at FLT_MAX */
 #define RT_COUNT_SLOTS 4
 
-/* A flattened BVH node: an inner node's children are at leftFirst and leftFirst+1; a leaf
- * (count > 0) holds triangles [leftFirst, leftFirst+count) of the reordered triangle array. */
-typedef struct RtBvhNode {
-  float bmin[3];
-  int leftFirst;
-  float bmax[3];
-  int count;
-} RtBvhNode;
+/* A node of the wide BVH (4 children; built by Embree's BVH builder, runtime/lib/Bvh.cpp), laid
+ * out for 4-wide slab tests: lane k of each float4 is child k's box. child.sk >= 0: an inner
+ * node's index; < 0: a leaf, ~child.sk = first << RT_BVH_LEAF_BITS | count, the triangles
+ * [first, first + count) of the reordered triangle array. An unused slot has an empty box
+ * (lo = FLT_MAX, hi = -FLT_MAX), which no ray enters. Node 0 is the root. 128 bytes. */
+#define RT_BVH_LEAF_BITS 4
+#define RT_BVH_MAX_LEAF 15
+typedef struct RtBvh4Node {
+  RT_F4 lox, loy, loz;
+  RT_F4 hix, hiy, hiz;
+  RT_I4 child;
+  RT_I4 pad;
+} RtBvh4Node;
 
 /* A triangle for intersection (Moeller-Trumbore): v0 and the two edges, in BVH order (the
  * same order as RtTriAttr). */

@@ -1,140 +1,138 @@
 #include "texrender/Bvh.h"
+#include "texrender/Error.h"
 #include "texcc/OutOfMemory.h"
 
+#include <embree3/rtcore.h>
+
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
-#include <limits>
+#include <cstdint>
+#include <new>
+#include <string>
+#include <utility>
 
 namespace texrender {
 
 namespace {
 
-struct Box {
-  Vec3 Lo{INFINITY, INFINITY, INFINITY};
-  Vec3 Hi{-INFINITY, -INFINITY, -INFINITY};
-  void grow(const Vec3 &P) {
-    for (int A = 0; A < 3; ++A)
-      Lo[A] = std::min(Lo[A], P[A]), Hi[A] = std::max(Hi[A], P[A]);
+// The builder's own nodes (allocated by Embree's thread-local allocator, freed with the
+// RTCBVH), flattened into RtBvh4Node once the build is done. Kind comes first in both.
+struct TmpInner {
+  uint32_t Kind = 0;
+  unsigned N = 0;
+  void *Child[4] = {};
+  RTCBounds Box[4] = {};
+};
+struct TmpLeaf {
+  uint32_t Kind = 1;
+  unsigned N = 0;
+  unsigned Prim[RT_BVH_MAX_LEAF] = {};
+};
+
+void *createNode(RTCThreadLocalAllocator A, unsigned Count, void *) {
+  void *M = rtcThreadLocalAlloc(A, sizeof(TmpInner), 16);
+  auto *N = new (M) TmpInner;
+  N->N = std::min(Count, 4u);
+  return N;
+}
+
+void setNodeChildren(void *Node, void **Children, unsigned Count, void *) {
+  auto *N = static_cast<TmpInner *>(Node);
+  for (unsigned I = 0; I < Count && I < 4; ++I)
+    N->Child[I] = Children[I];
+}
+
+void setNodeBounds(void *Node, const RTCBounds **Bounds, unsigned Count, void *) {
+  auto *N = static_cast<TmpInner *>(Node);
+  for (unsigned I = 0; I < Count && I < 4; ++I)
+    N->Box[I] = *Bounds[I];
+}
+
+void *createLeaf(RTCThreadLocalAllocator A, const RTCBuildPrimitive *Prims, size_t Count,
+                 void *) {
+  void *M = rtcThreadLocalAlloc(A, sizeof(TmpLeaf), 16);
+  auto *L = new (M) TmpLeaf;
+  L->N = unsigned(std::min<size_t>(Count, RT_BVH_MAX_LEAF)); // maxLeafSize keeps Count within
+  for (unsigned I = 0; I < L->N; ++I)
+    L->Prim[I] = Prims[I].primID;
+  return L;
+}
+
+void embreeError(void *User, RTCError Code, const char *Message) {
+  auto *Last = static_cast<std::string *>(User);
+  try {
+    if (Last->empty())
+      *Last = std::string(Message ? Message : "") + " (Embree error " + std::to_string(int(Code)) + ")";
+  } catch (const std::bad_alloc &) {
+    // Out of memory: the caller reads the code from rtcGetDeviceError.
   }
-  void grow(const Box &B) { grow(B.Lo), grow(B.Hi); }
-  float area() const {
-    if (Lo[0] > Hi[0])
-      return 0;
-    float X = Hi[0] - Lo[0], Y = Hi[1] - Lo[1], Z = Hi[2] - Lo[2];
-    return 2 * (X * Y + Y * Z + Z * X);
+}
+
+RtBvh4Node emptyNode() {
+  RtBvh4Node N;
+  for (int K = 0; K < 4; ++K) {
+    N.lox.s[K] = N.loy.s[K] = N.loz.s[K] = FLT_MAX;
+    N.hix.s[K] = N.hiy.s[K] = N.hiz.s[K] = -FLT_MAX;
+    N.child.s[K] = 0;
+    N.pad.s[K] = 0;
+  }
+  return N;
+}
+
+void setLane(RtBvh4Node &N, int K, const RTCBounds &B) {
+  N.lox.s[K] = B.lower_x, N.loy.s[K] = B.lower_y, N.loz.s[K] = B.lower_z;
+  N.hix.s[K] = B.upper_x, N.hiy.s[K] = B.upper_y, N.hiz.s[K] = B.upper_z;
+}
+
+/// Flattens the builder's tree depth first: an inner node's index is its position in Nodes,
+/// a leaf's triangles are appended to Order.
+struct Flattener {
+  Bvh &Out;
+
+  int32_t ref(const void *P, unsigned Level) {
+    if (*static_cast<const uint32_t *>(P) == 1) {
+      const auto &L = *static_cast<const TmpLeaf *>(P);
+      size_t First = Out.Order.size();
+      if (First >= (size_t(1) << (31 - RT_BVH_LEAF_BITS)))
+        throw Error("too many triangles for the BVH's leaf references: " + std::to_string(First));
+      Out.Order.insert(Out.Order.end(), L.Prim, L.Prim + L.N);
+      return ~int32_t((First << RT_BVH_LEAF_BITS) | L.N);
+    }
+    size_t Idx = Out.Nodes.size();
+    Out.Nodes.push_back(emptyNode());
+    fill(Idx, *static_cast<const TmpInner *>(P), Level);
+    return int32_t(Idx);
+  }
+
+  void fill(size_t Idx, const TmpInner &In, unsigned Level) {
+    Out.Depth = std::max(Out.Depth, Level);
+    RtBvh4Node N = emptyNode();
+    for (unsigned K = 0; K < In.N; ++K) {
+      setLane(N, int(K), In.Box[K]);
+      N.child.s[K] = ref(In.Child[K], Level + 1);
+    }
+    Out.Nodes[Idx] = N;
   }
 };
 
+/// An Embree device and BVH for one build (released by the destructor).
 struct Builder {
-  std::vector<Box> TriBox;
-  std::vector<Vec3> Centroid;
-  std::vector<uint32_t> &Order;
-  std::vector<RtBvhNode> &Nodes;
-  unsigned MaxLeaf;
-  unsigned Depth = 0;
-  static constexpr int Bins = 16;
-  static constexpr unsigned MaxDepth = RT_BVH_STACK - 4;
-
-  void setBox(RtBvhNode &N, const Box &B) {
-    for (int A = 0; A < 3; ++A)
-      N.bmin[A] = B.Lo[A], N.bmax[A] = B.Hi[A];
+  RTCDevice Device = nullptr;
+  RTCBVH Tree = nullptr;
+  std::string LastError;
+  ~Builder() {
+    if (Tree)
+      rtcReleaseBVH(Tree);
+    if (Device)
+      rtcReleaseDevice(Device);
   }
-
-  /// Finds the best binned-SAH split of [First, First+Count); false when a leaf is cheaper.
-  bool findSplit(uint32_t First, uint32_t Count, const Box &NodeBox, int &Axis, float &Pos) {
-    Box CB;
-    for (uint32_t I = First; I < First + Count; ++I)
-      CB.grow(Centroid[Order[I]]);
-    float BestCost = INFINITY;
-    for (int A = 0; A < 3; ++A) {
-      float Lo = CB.Lo[A], Ext = CB.Hi[A] - CB.Lo[A];
-      if (Ext <= 0)
-        continue;
-      Box BinBox[Bins];
-      unsigned BinCount[Bins] = {};
-      float Scale = Bins / Ext;
-      for (uint32_t I = First; I < First + Count; ++I) {
-        uint32_t T = Order[I];
-        int B = std::min(Bins - 1, int((Centroid[T][A] - Lo) * Scale));
-        BinBox[B].grow(TriBox[T]);
-        BinCount[B]++;
-      }
-      float LeftArea[Bins - 1];
-      unsigned LeftCount[Bins - 1];
-      Box Acc;
-      unsigned Cnt = 0;
-      for (int B = 0; B < Bins - 1; ++B) {
-        Acc.grow(BinBox[B]);
-        Cnt += BinCount[B];
-        LeftArea[B] = Acc.area();
-        LeftCount[B] = Cnt;
-      }
-      Acc = Box();
-      Cnt = 0;
-      for (int B = Bins - 1; B > 0; --B) {
-        Acc.grow(BinBox[B]);
-        Cnt += BinCount[B];
-        float Cost = LeftCount[B - 1] * LeftArea[B - 1] + Cnt * Acc.area();
-        if (LeftCount[B - 1] > 0 && Cnt > 0 && Cost < BestCost) {
-          BestCost = Cost;
-          Axis = A;
-          Pos = Lo + B / Scale;
-        }
-      }
-    }
-    float LeafCost = Count * NodeBox.area();
-    return BestCost < LeafCost || (Count > MaxLeaf && BestCost < INFINITY);
-  }
-
-  /// Splits at the median along the longest centroid axis (when SAH cannot separate).
-  uint32_t medianSplit(uint32_t First, uint32_t Count) {
-    Box CB;
-    for (uint32_t I = First; I < First + Count; ++I)
-      CB.grow(Centroid[Order[I]]);
-    int A = 0;
-    for (int K = 1; K < 3; ++K)
-      if (CB.Hi[K] - CB.Lo[K] > CB.Hi[A] - CB.Lo[A])
-        A = K;
-    uint32_t Mid = First + Count / 2;
-    std::nth_element(Order.begin() + First, Order.begin() + Mid, Order.begin() + First + Count,
-                     [&](uint32_t X, uint32_t Y) { return Centroid[X][A] < Centroid[Y][A]; });
-    return Mid;
-  }
-
-  void build(uint32_t NodeIdx, uint32_t First, uint32_t Count, unsigned Level) {
-    Depth = std::max(Depth, Level);
-    Box B;
-    for (uint32_t I = First; I < First + Count; ++I)
-      B.grow(TriBox[Order[I]]);
-    setBox(Nodes[NodeIdx], B);
-    Nodes[NodeIdx].leftFirst = First;
-    Nodes[NodeIdx].count = Count;
-    if (Count <= 1)
-      return;
-    if (Level >= MaxDepth)
-      return; // a (large) leaf rather than a traversal-stack overflow
-    int Axis = 0;
-    float Pos = 0;
-    uint32_t Mid;
-    if (findSplit(First, Count, B, Axis, Pos)) {
-      auto It = std::partition(Order.begin() + First, Order.begin() + First + Count,
-                               [&](uint32_t T) { return Centroid[T][Axis] < Pos; });
-      Mid = uint32_t(It - Order.begin());
-      if (Mid == First || Mid == First + Count)
-        Mid = medianSplit(First, Count);
-    } else if (Count > MaxLeaf) {
-      Mid = medianSplit(First, Count);
-    } else {
-      return;
-    }
-    uint32_t Left = uint32_t(Nodes.size());
-    Nodes.push_back({});
-    Nodes.push_back({});
-    Nodes[NodeIdx].leftFirst = Left;
-    Nodes[NodeIdx].count = 0;
-    build(Left, First, Mid - First, Level + 1);
-    build(Left + 1, Mid, First + Count - Mid, Level + 1);
+  void check(const char *What) {
+    if (Device && rtcGetDeviceError(Device) == RTC_ERROR_OUT_OF_MEMORY)
+      throw std::bad_alloc(); // named by buildBvh's step
+    if (!LastError.empty())
+      throw Error(std::string(What) + ": " + LastError);
   }
 };
 
@@ -143,16 +141,6 @@ Vec3 cross(const Vec3 &A, const Vec3 &B) {
   return {A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
 }
 float dot(const Vec3 &A, const Vec3 &B) { return A[0] * B[0] + A[1] * B[1] + A[2] * B[2]; }
-
-bool hitBox(const RtBvhNode &N, const Vec3 &O, const Vec3 &InvD, float TMax) {
-  float TN = 0, TF = TMax;
-  for (int A = 0; A < 3; ++A) {
-    float T0 = (N.bmin[A] - O[A]) * InvD[A], T1 = (N.bmax[A] - O[A]) * InvD[A];
-    TN = std::max(TN, std::min(T0, T1));
-    TF = std::min(TF, std::max(T0, T1));
-  }
-  return TN <= TF;
-}
 
 } // namespace
 
@@ -166,28 +154,71 @@ Bvh buildBvh(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
 static Bvh buildBvhSteps(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
   const auto T0 = std::chrono::steady_clock::now();
   Bvh Out;
-  size_t N = Positions.size() / 3;
-  Out.Order.resize(N);
-  for (size_t I = 0; I < N; ++I)
-    Out.Order[I] = uint32_t(I);
-  Builder B{{}, {}, Out.Order, Out.Nodes, std::max(1u, MaxLeaf)};
-  B.TriBox.resize(N);
-  B.Centroid.resize(N);
-  for (size_t I = 0; I < N; ++I) {
-    for (int C = 0; C < 3; ++C)
-      B.TriBox[I].grow(Positions[3 * I + C]);
-    for (int A = 0; A < 3; ++A)
-      B.Centroid[I][A] = 0.5f * (B.TriBox[I].Lo[A] + B.TriBox[I].Hi[A]);
+  const size_t N = Positions.size() / 3;
+  Out.Nodes.push_back(emptyNode()); // the root; all slots empty for an empty scene
+  if (N > 0) {
+    std::vector<RTCBuildPrimitive> Prims(N);
+    RTCBounds All{FLT_MAX, FLT_MAX, FLT_MAX, 0, -FLT_MAX, -FLT_MAX, -FLT_MAX, 0};
+    for (size_t I = 0; I < N; ++I) {
+      RTCBuildPrimitive &P = Prims[I];
+      P.lower_x = P.lower_y = P.lower_z = FLT_MAX;
+      P.upper_x = P.upper_y = P.upper_z = -FLT_MAX;
+      for (int C = 0; C < 3; ++C) {
+        const Vec3 &V = Positions[3 * I + C];
+        P.lower_x = std::min(P.lower_x, V[0]), P.upper_x = std::max(P.upper_x, V[0]);
+        P.lower_y = std::min(P.lower_y, V[1]), P.upper_y = std::max(P.upper_y, V[1]);
+        P.lower_z = std::min(P.lower_z, V[2]), P.upper_z = std::max(P.upper_z, V[2]);
+      }
+      P.geomID = 0;
+      P.primID = unsigned(I);
+      All.lower_x = std::min(All.lower_x, P.lower_x), All.upper_x = std::max(All.upper_x, P.upper_x);
+      All.lower_y = std::min(All.lower_y, P.lower_y), All.upper_y = std::max(All.upper_y, P.upper_y);
+      All.lower_z = std::min(All.lower_z, P.lower_z), All.upper_z = std::max(All.upper_z, P.upper_z);
+    }
+    Builder B;
+    B.Device = rtcNewDevice(nullptr);
+    if (!B.Device)
+      throw Error("cannot start Embree to build the BVH: " +
+                  std::to_string(int(rtcGetDeviceError(nullptr))));
+    rtcSetDeviceErrorFunction(B.Device, embreeError, &B.LastError);
+    B.Tree = rtcNewBVH(B.Device);
+    B.check("cannot create the BVH");
+    RTCBuildArguments A = rtcDefaultBuildArguments();
+    A.byteSize = sizeof(A);
+    // Binned SAH (no spatial splits: every triangle is in exactly one leaf, so that the
+    // reordered triangle array has the scene's triangle ids).
+    A.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+    A.maxBranchingFactor = 4;
+    A.maxDepth = RT_BVH_MAX_DEPTH;
+    A.sahBlockSize = 1;
+    A.minLeafSize = 1;
+    A.maxLeafSize = std::clamp(MaxLeaf, 1u, unsigned(RT_BVH_MAX_LEAF));
+    A.traversalCost = 1.0f;
+    A.intersectionCost = 1.0f;
+    A.bvh = B.Tree;
+    A.primitives = Prims.data();
+    A.primitiveCount = N;
+    A.primitiveArrayCapacity = N;
+    A.createNode = createNode;
+    A.setNodeChildren = setNodeChildren;
+    A.setNodeBounds = setNodeBounds;
+    A.createLeaf = createLeaf;
+    void *Root = rtcBuildBVH(&A);
+    B.check("cannot build the BVH");
+    if (!Root)
+      throw Error("cannot build the BVH: Embree's builder returned no tree");
+    Out.Order.reserve(N);
+    Flattener F{Out};
+    if (*static_cast<const uint32_t *>(Root) == 1) { // a single leaf: the root's only child
+      setLane(Out.Nodes[0], 0, All);
+      Out.Nodes[0].child.s[0] = F.ref(Root, 1);
+    } else {
+      F.fill(0, *static_cast<const TmpInner *>(Root), 0);
+    }
+    if (Out.Order.size() != N)
+      throw Error("the BVH's leaves hold " + std::to_string(Out.Order.size()) + " of " +
+                  std::to_string(N) + " triangles");
   }
-  Out.Nodes.reserve(2 * N + 1);
-  Out.Nodes.push_back({});
-  if (N == 0) {
-    Out.Nodes[0] = RtBvhNode{{1, 1, 1}, 0, {0, 0, 0}, 0};
-    Out.Nodes[0].count = 0;
-    return Out;
-  }
-  B.build(0, 0, uint32_t(N), 0);
-  Out.Depth = B.Depth;
   Out.BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - T0).count();
   return Out;
 }
@@ -219,15 +250,39 @@ HostHit traceHost(const Bvh &B, const std::vector<Vec3> &P, const Vec3 &O, const
   Vec3 InvD;
   for (int A = 0; A < 3; ++A)
     InvD[A] = 1.0f / (std::fabs(D[A]) > 1e-30f ? D[A] : std::copysign(1e-30f, D[A]));
-  std::vector<uint32_t> Stack{0};
-  while (!Stack.empty()) {
-    const RtBvhNode &N = B.Nodes[Stack.back()];
-    Stack.pop_back();
-    if (!hitBox(N, O, InvD, H.T))
-      continue;
-    if (N.count > 0) {
-      for (int I = 0; I < N.count; ++I) {
-        int T = N.leftFirst + I;
+  // Nearest first, as rt_trace: the closest child is visited next, the others are stacked.
+  std::vector<std::pair<int32_t, float>> Stack;
+  int32_t Ref = 0;
+  while (true) {
+    if (Ref >= 0) {
+      const RtBvh4Node &N = B.Nodes[size_t(Ref)];
+      const cl_float4 *Lo[3] = {&N.lox, &N.loy, &N.loz}, *Hi[3] = {&N.hix, &N.hiy, &N.hiz};
+      std::pair<int32_t, float> Hit[4];
+      int M = 0;
+      for (int K = 0; K < 4; ++K) {
+        float TN = 0, TF = H.T;
+        for (int A = 0; A < 3; ++A) {
+          float Near = (InvD[A] < 0 ? Hi : Lo)[A]->s[K], Far = (InvD[A] < 0 ? Lo : Hi)[A]->s[K];
+          TN = std::max(TN, (Near - O[A]) * InvD[A]);
+          TF = std::min(TF, (Far - O[A]) * InvD[A]);
+        }
+        if (TN <= TF) { // insertion, nearest first
+          int I = M++;
+          for (; I > 0 && Hit[I - 1].second > TN; --I)
+            Hit[I] = Hit[I - 1];
+          Hit[I] = {N.child.s[K], TN};
+        }
+      }
+      for (int K = M - 1; K > 0; --K)
+        Stack.push_back(Hit[K]);
+      if (M > 0) {
+        Ref = Hit[0].first;
+        continue;
+      }
+    } else {
+      uint32_t V = ~uint32_t(Ref);
+      int First = int(V >> RT_BVH_LEAF_BITS), Count = int(V & ((1u << RT_BVH_LEAF_BITS) - 1));
+      for (int T = First; T < First + Count; ++T) {
         float Hit = intersectTriangle(P[3 * T], P[3 * T + 1], P[3 * T + 2], O, D, TMin, H.T);
         if (Hit > 0) {
           H.T = Hit, H.Tri = T;
@@ -235,12 +290,17 @@ HostHit traceHost(const Bvh &B, const std::vector<Vec3> &P, const Vec3 &O, const
             return H;
         }
       }
-    } else {
-      Stack.push_back(N.leftFirst);
-      Stack.push_back(N.leftFirst + 1);
     }
+    bool Found = false;
+    while (!Found && !Stack.empty()) {
+      auto [R, Entry] = Stack.back();
+      Stack.pop_back();
+      if (Entry <= H.T)
+        Ref = R, Found = true;
+    }
+    if (!Found)
+      return H;
   }
-  return H;
 }
 
 HostHit traceBruteForce(const std::vector<Vec3> &P, const Vec3 &O, const Vec3 &D, float TMin,

@@ -76,9 +76,10 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
   J["triangles"] = R.sceneData().Tris.size();
   J["bvhNodes"] = R.sceneData().Tree.Nodes.size();
   // The trace backend (Trace.h) and the build time of each acceleration structure made: the
-  // SAH BVH (always; the OpenCL traversal and the host tests use it) and Embree's (embree only).
+  // wide BVH (always; the OpenCL traversal and the host tests use it) and Embree's scene BVH
+  // (embree only).
   J["trace"] = R.tracer().name();
-  J["bvhBuildSeconds"] = {{"sah", R.sceneData().Tree.BuildSeconds},
+  J["bvhBuildSeconds"] = {{"wide", R.sceneData().Tree.BuildSeconds},
                           {"embree", std::string(R.tracer().name()) == "embree"
                                          ? json(R.tracer().buildSeconds()) : json(nullptr)}};
   J["lights"] = R.sceneData().Lights.size();

@@ -1,5 +1,6 @@
-// The OpenCL trace backend: the kernels closest_hit, shadow and ao_trace traverse the SAH BVH
-// built on the host (Bvh.cpp). The default on non-CPU devices.
+// The OpenCL trace backend: the kernels closest_hit, shadow and ao_trace traverse the wide BVH
+// (4 children a node, built by Embree's BVH builder: Bvh.cpp; traversal: rt_bvh.h). The
+// default on non-CPU devices.
 
 #include "texrender/Trace.h"
 #include "texrender/Error.h"
