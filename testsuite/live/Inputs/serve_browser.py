@@ -82,7 +82,7 @@ class Page:
         opts = webdriver.ChromeOptions()
         opts.binary_location = "/usr/bin/chromium"
         for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                  "--window-size=1100,820"):
+                  "--window-size=1180,860"):
             opts.add_argument(a)
         self.driver = webdriver.Chrome(options=opts, service=Service("/usr/bin/chromedriver"))
         self.driver.get(url)
@@ -214,6 +214,7 @@ def main():
         png, s = slider_step(page, spp, opts, render_args, first)
         png = rewire_step(page, spp, png, first["builds"])
         source_steps(page, spp, opts["work"], png)
+        page.js("window.scrollTo(0, 0);")
         page.driver.save_screenshot(opts["shot"])
         print(f"screenshot: {os.path.basename(opts['shot'])}")
     finally:
