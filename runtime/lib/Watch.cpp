@@ -4,18 +4,41 @@
 #include "texrender/Error.h"
 #include "texrender/Image.h"
 
+#include <cctype>
 #include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
+#include <iostream>
 #include <memory>
+#include <mutex>
 #include <set>
+#include <signal.h>
 #include <thread>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using nlohmann::ordered_json;
 
 namespace texrender {
+
+LineRead readBoundedLine(std::istream &In, std::string &Line, size_t Max) {
+  Line.clear();
+  std::streambuf *Buf = In.rdbuf();
+  for (bool Any = false;; Any = true) {
+    int C = Buf->sbumpc();
+    if (C == std::char_traits<char>::eof())
+      return Any ? LineRead::Line : LineRead::End;
+    if (C == '\n')
+      return LineRead::Line;
+    if (Line.size() == Max)
+      return LineRead::TooLong;
+    Line.push_back(char(C));
+  }
+}
 
 FileWatcher::Seen FileWatcher::look(const std::string &Path) {
   Seen S;
@@ -105,6 +128,102 @@ void say(const std::string &Line) {
 
 std::string ms(double Seconds) { return std::to_string(int(Seconds * 1000 + 0.5)) + " ms"; }
 
+/// Milliseconds rounded to 0.01, for the control channel's events.
+double eventMs(double Seconds) { return std::round(Seconds * 1e5) / 100; }
+
+/// A line of standard input, as the control channel's thread read it.
+struct Command {
+  std::string Text;
+  double ReadAt = 0; // when its newline arrived (the edit's latency counts from there)
+  unsigned LineNo = 0;
+};
+
+/// --control's standard input. A thread reads the lines (bounded, as --interactive does) into a
+/// queue, so that a command is timed when it arrives rather than when the render loop gets to
+/// it, and the idle loop wakes at once. The thread is detached: it may stay blocked in a read
+/// when the session ends; it owns the queue with the session.
+class ControlInput {
+public:
+  ControlInput() : Q(std::make_shared<Queue>()) {
+    std::thread([Q = Q] { read(*Q); }).detach();
+  }
+  /// A command or the end of the input is waiting.
+  bool pending() {
+    std::lock_guard<std::mutex> Lock(Q->M);
+    return !Q->Lines.empty() || Q->State != LineRead::Line;
+  }
+  /// Waits at most Ms milliseconds for pending().
+  void waitFor(int Ms) {
+    std::unique_lock<std::mutex> Lock(Q->M);
+    Q->Wake.wait_for(Lock, std::chrono::milliseconds(Ms),
+                     [this] { return !Q->Lines.empty() || Q->State != LineRead::Line; });
+  }
+  /// The commands read so far; End: how the input ended after them (Line: it did not), and
+  /// the number of the line that ended it.
+  std::deque<Command> take(LineRead &End, unsigned &EndLine) {
+    std::lock_guard<std::mutex> Lock(Q->M);
+    std::deque<Command> Out;
+    Out.swap(Q->Lines);
+    End = Q->State;
+    EndLine = Q->EndLine;
+    return Out;
+  }
+
+private:
+  struct Queue {
+    std::mutex M;
+    std::condition_variable Wake;
+    std::deque<Command> Lines;
+    LineRead State = LineRead::Line;
+    unsigned EndLine = 0;
+  };
+  static void read(Queue &Q) {
+    // SIGINT and SIGTERM go to the render loop's thread, never interrupt this read.
+    sigset_t Signals;
+    sigemptyset(&Signals);
+    sigaddset(&Signals, SIGINT);
+    sigaddset(&Signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &Signals, nullptr);
+    std::string Line;
+    for (unsigned N = 1;; ++N) {
+      LineRead Got = readBoundedLine(std::cin, Line, MaxEditLine);
+      std::lock_guard<std::mutex> Lock(Q.M);
+      if (Got == LineRead::Line) {
+        Q.Lines.push_back({Line, nowSeconds(), N});
+      } else {
+        Q.State = Got;
+        Q.EndLine = N;
+      }
+      Q.Wake.notify_all();
+      if (Got != LineRead::Line)
+        return;
+    }
+  }
+  std::shared_ptr<Queue> Q;
+};
+
+/// Applies E to the graph G (graph.json's model) as the live editor applies it to its own copy,
+/// so that a scene reload or a recompiled source file can apply the control channel's edits
+/// again (argumentEdits). E has been applied by the live editor, so its value parses.
+void applyToGraphJson(json &G, const Edit &E) {
+  if (!G.contains("nodes") || !G["nodes"].is_array())
+    return;
+  for (json &N : G["nodes"]) {
+    if (!N.is_object() || N.value("id", "") != E.Node)
+      continue;
+    json &Args = N["args"];
+    if (E.K == Edit::Kind::Rewire) {
+      Args[E.Arg] = json{{"node", E.Value}};
+      continue;
+    }
+    json Value = json::parse(E.Value);
+    if (Args.contains(E.Arg) && Args[E.Arg].is_object() && Args[E.Arg].value("bake", false))
+      Args[E.Arg]["value"] = Value;
+    else
+      Args[E.Arg] = Value;
+  }
+}
+
 /// texcc on the changed graph, on a thread of its own, while the current kernel renders.
 struct Regeneration {
   std::thread Thread;
@@ -113,6 +232,9 @@ struct Regeneration {
   std::string Log;   // texcc's diagnostics when it failed
   json Graph;
   double Started = 0;
+  // Only source files changed (graph.json as before): the control channel's edits are applied
+  // again to the new kernel.
+  bool KeepEdits = false;
 };
 
 class Session {
@@ -120,7 +242,7 @@ public:
   Session(WatchOptions Opts, const Layout &Initial) : O(std::move(Opts)), Lay(Initial) {
     O.Renderer.AfterPass = [this](const PassProgress &P) { return afterPass(P); };
     GraphPath = fs::absolute(Lay.GraphPath).string();
-    Graph = LayGraph = json::parse(readWholeFile(GraphPath, " graph"));
+    Graph = LayGraph = FileGraph = json::parse(readWholeFile(GraphPath, " graph"));
     TempRoot = (fs::temp_directory_path() / ("texrender-watch-" + std::to_string(::getpid()))).string();
     fs::create_directories(TempRoot);
   }
@@ -130,39 +252,84 @@ public:
     std::error_code EC;
     fs::remove_all(TempRoot, EC);
   }
-  unsigned run();
+  WatchResult run();
 
 private:
   bool stopping() const { return O.Stop && O.Stop->load(); }
   bool jobDone() const { return Job && Job->Done.load(); }
+  bool commandsPending() const { return Input && Input->pending(); }
+  /// Something to do besides rendering: a file change, texcc done, a command.
+  bool work() const { return !Changed.empty() || jobDone() || commandsPending(); }
   bool afterPass(const PassProgress &P);
+  void idle();
   void poll();
   void watchFiles();
-  void writeProgress(const std::vector<float> &Image);
+  void writeProgress(const std::vector<float> &Image, int Spp);
   void applyChanges();
   /// Changed: the graph's source files that changed (empty: only the graph did).
   void applyGraph(const std::set<std::string> &Changed);
   void applyEdits(const std::vector<std::string> &Lines, const json &New);
-  void startJob(const json &New, const std::string &What);
+  void startJob(const json &New, const std::string &What, bool KeepEdits);
   void adoptJob();
+  /// Applies the edits that take LayGraph to Edited (the control channel's, kept over a new
+  /// kernel or scene) to the live editor and the renderer; one that no longer applies is
+  /// reported and dropped.
+  void applyKeptEdits(const json &Edited);
   void reloadScene();
+  void handleCommands();
+  void handleCommand(const Command &C);
+  /// One JSON event a line on standard output (--control only).
+  void event(const ordered_json &E);
+  /// An error event (--control only); Id: the command's, if it was one.
+  void errorEvent(const std::string &Message, std::optional<long long> Id = std::nullopt);
+  unsigned buildsSoFar() const { return R->cl().foregroundBuilds() + R->cl().backgroundBuilds(); }
 
   WatchOptions O;
   Layout Lay;
   std::unique_ptr<Renderer> R;
   std::unique_ptr<LiveEditor> Editor;
+  std::unique_ptr<ControlInput> Input;
   std::string GraphPath, TempRoot;
-  json Graph;    // the graph rendered now: LayGraph plus the live edits applied since
-  json LayGraph; // the graph Lay was compiled from
+  json Graph;     // the graph rendered now: LayGraph plus the live edits applied since
+  json LayGraph;  // the graph Lay was compiled from
+  json FileGraph; // graph.json as last read
   FileWatcher Files;
   std::set<std::string> Changed;
   std::unique_ptr<Regeneration> Job;
-  bool JobAgain = false;
+  bool JobAgain = false, Ended = false, Ok = true;
   unsigned Generation = 0, Frames = 0;
   // Noticed: when the change being applied was seen; ChangeAt: when the change whose first
   // refined frame is awaited was seen (0: none; set once a change is applied, not on an error).
   double Noticed = 0, ChangeAt = 0, LastWrite = 0, LastPoll = 0;
+  // The control channel: the last edit applied, and when the line of the one whose first
+  // refined frame is awaited was read (0: none).
+  std::optional<long long> LastEdit;
+  double EditAt = 0;
+  // Accumulations started (one per render()) and the last one written, with its samples: a
+  // frame is written once.
+  unsigned Accumulation = 0, WrittenAccumulation = 0;
+  int WrittenSpp = 0;
 };
+
+void Session::event(const ordered_json &E) {
+  if (!O.Control)
+    return;
+  std::string Line = E.dump(-1, ' ', false, json::error_handler_t::replace);
+  Line += '\n';
+  std::fwrite(Line.data(), 1, Line.size(), stdout);
+  std::fflush(stdout);
+}
+
+void Session::errorEvent(const std::string &Message, std::optional<long long> Id) {
+  ordered_json E{{"event", "error"}};
+  if (Id)
+    E["id"] = *Id;
+  std::string M = Message;
+  while (!M.empty() && M.back() == '\n')
+    M.pop_back();
+  E["message"] = M;
+  event(E);
+}
 
 void Session::watchFiles() {
   std::vector<std::string> Paths = graphFiles(GraphPath, Graph);
@@ -176,46 +343,81 @@ void Session::poll() {
     Changed.insert(P);
 }
 
+/// Waits for work (at most until the next poll of the files), without rendering.
+void Session::idle() {
+  int Left = std::max(1, int((LastPoll + 0.1 - nowSeconds()) * 1000));
+  if (Input)
+    Input->waitFor(Left);
+  else
+    std::this_thread::sleep_for(std::chrono::milliseconds(Left));
+  if (nowSeconds() - LastPoll >= 0.1)
+    poll();
+}
+
 /// Writes the image (atomically: writeImage renames a finished file into place) and, for the
 /// first image after a change, reports the change-to-refined-frame latency.
-void Session::writeProgress(const std::vector<float> &Image) {
+void Session::writeProgress(const std::vector<float> &Image, int Spp) {
+  if (Accumulation == WrittenAccumulation && Spp == WrittenSpp)
+    return;
   writeImage(O.Output, O.Width, O.Height, Image);
   LastWrite = nowSeconds();
+  WrittenAccumulation = Accumulation;
+  WrittenSpp = Spp;
+  std::string Tier = R->activeTier().empty() ? std::string("-") : R->activeTier();
   if (ChangeAt > 0) {
-    say("first refined frame " + ms(LastWrite - ChangeAt) + " after the change (tier " +
-        (R->activeTier().empty() ? std::string("-") : R->activeTier()) + ")");
+    say("first refined frame " + ms(LastWrite - ChangeAt) + " after the change (tier " + Tier + ")");
     ChangeAt = 0;
   }
+  ordered_json E{{"event", "frame"},     {"path", fs::absolute(O.Output).string()},
+                 {"spp", Spp},           {"tier", Tier},
+                 {"builds", buildsSoFar()}, {"edit", nullptr},
+                 {"latency_ms", nullptr}};
+  if (LastEdit)
+    E["edit"] = *LastEdit;
+  if (EditAt > 0) {
+    E["latency_ms"] = eventMs(LastWrite - EditAt);
+    EditAt = 0;
+  }
+  event(E);
 }
 
 bool Session::afterPass(const PassProgress &P) {
   double Now = nowSeconds();
-  if (Now - LastWrite >= 0.25)
-    writeProgress(P.Image());
+  // The first image after a change is written at once; the others at most 4 times a second.
+  if (Now - LastWrite >= 0.25 || ChangeAt > 0 || EditAt > 0)
+    writeProgress(P.Image(), P.SamplesDone);
   if (Now - LastPoll >= 0.1)
     poll();
-  return !stopping() && Changed.empty() && !jobDone();
+  return !stopping() && !work();
 }
 
-unsigned Session::run() {
+WatchResult Session::run() {
   R = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
   Editor = std::make_unique<LiveEditor>(Lay);
   watchFiles();
   say("watching " + GraphPath + ", its sources and " + O.ScenePath + "; Ctrl-C ends");
-  while (!stopping()) {
+  if (O.Control) {
+    ordered_json Sources = json::array();
+    for (const std::string &S : graphFiles(GraphPath, Graph))
+      if (S != GraphPath)
+        Sources.push_back(S);
+    event({{"event", "ready"}, {"graph", GraphPath}, {"sources", Sources},
+           {"width", O.Width}, {"height", O.Height}});
+    Input = std::make_unique<ControlInput>();
+  }
+  while (!stopping() && !Ended) {
     FrameStats F;
+    ++Accumulation;
     std::vector<float> Image = R->render(F);
     if (!F.Interrupted || stopping())
-      writeProgress(Image);
+      writeProgress(Image, F.SamplesDone);
     if (!F.Interrupted) {
       ++Frames;
       say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
           ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
           "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
-      while (!stopping() && Changed.empty() && !jobDone()) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        poll();
-      }
+      while (!stopping() && !work())
+        idle();
     }
     if (stopping())
       break;
@@ -223,8 +425,86 @@ unsigned Session::run() {
       adoptJob();
     if (!Changed.empty())
       applyChanges();
+    if (commandsPending())
+      handleCommands();
   }
-  return Frames;
+  return {Frames, Ok};
+}
+
+void Session::handleCommands() {
+  LineRead End;
+  unsigned EndLine;
+  for (const Command &C : Input->take(End, EndLine)) {
+    if (Ended)
+      return;
+    handleCommand(C);
+  }
+  if (End == LineRead::TooLong) {
+    std::string M = "standard input:" + std::to_string(EndLine) + ": line longer than " +
+                    std::to_string(MaxEditLine) + " bytes; the control session ends";
+    std::fprintf(stderr, "texrender: error: %s\n", M.c_str());
+    errorEvent(M);
+    Ok = false;
+  }
+  if (End != LineRead::Line)
+    Ended = true;
+}
+
+/// "ID EDIT" (an edit line of --interactive's syntax: set or rewire) or "quit".
+void Session::handleCommand(const Command &C) {
+  size_t B = C.Text.find_first_not_of(" \t\r");
+  if (B == std::string::npos || C.Text[B] == '#')
+    return;
+  size_t E = B;
+  while (E < C.Text.size() && std::isdigit((unsigned char)C.Text[E]))
+    ++E;
+  std::optional<long long> Id;
+  if (E > B && E - B <= 15 && E < C.Text.size() && (C.Text[E] == ' ' || C.Text[E] == '\t')) {
+    Id = std::stoll(C.Text.substr(B, E - B));
+    B = C.Text.find_first_not_of(" \t", E);
+  }
+  std::string Rest = B == std::string::npos ? "" : C.Text.substr(B);
+  while (!Rest.empty() && (Rest.back() == '\r' || Rest.back() == ' ' || Rest.back() == '\t'))
+    Rest.pop_back();
+  if (Rest == "quit") {
+    say("quit");
+    Ended = true;
+    return;
+  }
+  auto refuse = [&](const std::string &M) {
+    std::fprintf(stderr, "texrender: watch: error: %s; nothing applied\n", M.c_str());
+    std::fflush(stderr);
+    errorEvent(M, Id);
+  };
+  if (!Id)
+    return refuse("standard input:" + std::to_string(C.LineNo) +
+                  ": expected 'ID EDIT' (a decimal id, then set NODE.ARG=VALUE or rewire "
+                  "NODE.ARG=SOURCE) or 'quit', got '" + Rest + "'");
+  Edit Ed;
+  try {
+    Ed = parseEdit(Rest);
+  } catch (const Error &X) {
+    return refuse(X.what());
+  }
+  if (Ed.K == Edit::Kind::Wait)
+    return refuse("edit 'wait': the control channel takes set and rewire edits");
+  if (std::optional<EditProblem> P = Editor->check({Ed}))
+    return refuse("edit '" + Ed.Text + "': " + P->Message);
+  unsigned Builds = R->cl().foregroundBuilds();
+  double T0 = nowSeconds();
+  try {
+    Editor->apply(Ed, *R);
+  } catch (const Error &X) {
+    return refuse(X.what());
+  }
+  double Took = nowSeconds() - T0;
+  applyToGraphJson(Graph, Ed);
+  unsigned Built = R->cl().foregroundBuilds() - Builds;
+  LastEdit = Id;
+  EditAt = C.ReadAt;
+  say("applied '" + Ed.Text + "' (id " + std::to_string(*Id) + ") in " + ms(Took) + ", " +
+      std::to_string(Built) + " kernel build(s)");
+  event({{"event", "applied"}, {"id", *Id}, {"ms", eventMs(Took)}, {"builds", Built}});
 }
 
 void Session::applyChanges() {
@@ -234,10 +514,32 @@ void Session::applyChanges() {
   std::string Scene = fs::absolute(O.ScenePath).string();
   bool SceneChanged = Now.erase(Scene) > 0;
   bool GraphChanged = Now.erase(GraphPath) > 0;
-  if (SceneChanged)
+  if (SceneChanged) {
+    event({{"event", "reload"}, {"what", "scene"}});
     reloadScene();
-  if (GraphChanged || !Now.empty())
+  }
+  if (GraphChanged || !Now.empty()) {
+    event({{"event", "reload"}, {"what", Now.empty() ? "graph" : "source"}});
     applyGraph(Now);
+  }
+}
+
+void Session::applyKeptEdits(const json &Edited) {
+  std::optional<std::vector<std::string>> Edits = argumentEdits(LayGraph, Edited);
+  if (!Edits)
+    return;
+  for (const std::string &Text : *Edits) {
+    try {
+      Edit E = parseEdit(Text);
+      if (std::optional<EditProblem> P = Editor->check({E}))
+        throw Error("edit '" + E.Text + "': " + P->Message);
+      Editor->apply(E, *R);
+      applyToGraphJson(Graph, E);
+    } catch (const Error &X) {
+      say("error: " + std::string(X.what()) + "; this edit is dropped");
+      errorEvent(std::string(X.what()) + "; this edit is dropped");
+    }
+  }
 }
 
 void Session::reloadScene() {
@@ -254,6 +556,7 @@ void Session::reloadScene() {
     say(O.ScenePath + " reloaded");
   } catch (const std::exception &E) {
     say("error: " + std::string(E.what()) + "; the last good scene keeps rendering");
+    errorEvent(std::string(E.what()));
   }
 }
 
@@ -264,11 +567,15 @@ void Session::applyGraph(const std::set<std::string> &Sources) {
   } catch (const json::parse_error &E) {
     std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), E.what());
     say("the last good graph keeps rendering");
+    errorEvent(GraphPath + ": error: " + E.what());
     return;
   } catch (const Error &E) {
     say("error: " + std::string(E.what()) + "; the last good graph keeps rendering");
+    errorEvent(E.what());
     return;
   }
+  bool GraphSame = New == FileGraph;
+  FileGraph = New;
   std::optional<std::vector<std::string>> Edits;
   if (Sources.empty())
     Edits = argumentEdits(Graph, New);
@@ -278,7 +585,7 @@ void Session::applyGraph(const std::set<std::string> &Sources) {
   if (Edits)
     applyEdits(*Edits, New);
   else
-    startJob(New, What.empty() ? GraphPath : What);
+    startJob(New, What.empty() ? GraphPath : What, GraphSame && !Sources.empty());
 }
 
 void Session::applyEdits(const std::vector<std::string> &Lines, const json &New) {
@@ -293,11 +600,14 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
       Edits.push_back(parseEdit(L));
   } catch (const Error &E) {
     std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), E.what());
+    errorEvent(GraphPath + ": error: " + E.what());
     return;
   }
   if (std::optional<EditProblem> P = Editor->check(Edits)) {
-    std::fprintf(stderr, "%s: error: edit '%s': %s; nothing applied\n", GraphPath.c_str(),
-                 Edits[P->Index].Text.c_str(), P->Message.c_str());
+    std::string M = GraphPath + ": error: edit '" + Edits[P->Index].Text + "': " + P->Message +
+                    "; nothing applied";
+    std::fprintf(stderr, "%s\n", M.c_str());
+    errorEvent(M);
     return;
   }
   unsigned Builds = R->cl().foregroundBuilds();
@@ -310,6 +620,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
     }
   } catch (const Error &E) {
     std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), E.what());
+    errorEvent(GraphPath + ": error: " + E.what());
     return;
   }
   Graph = New;
@@ -318,14 +629,16 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
       std::to_string(R->cl().foregroundBuilds() - Builds) + " kernel build(s)");
 }
 
-void Session::startJob(const json &New, const std::string &What) {
+void Session::startJob(const json &New, const std::string &What, bool KeepEdits) {
   if (Job) {
     JobAgain = true; // the newest files are compiled once this run ends
+    Job->KeepEdits = Job->KeepEdits && KeepEdits;
     return;
   }
   Job = std::make_unique<Regeneration>();
   Job->Graph = New;
   Job->Started = Noticed; // its latency is reported once its kernel is adopted
+  Job->KeepEdits = KeepEdits;
   std::string Out = TempRoot + "/gen" + std::to_string(++Generation);
   say(What + " changed: texcc runs in the background; the current kernel keeps rendering");
   Regeneration *J = Job.get();
@@ -346,7 +659,10 @@ void Session::adoptJob() {
   if (JobAgain) {
     JobAgain = false;
     Noticed = J->Started;
+    bool Keep = J->KeepEdits;
     applyGraph({GraphPath}); // files saved while it ran: compile them as they are now
+    if (Job)
+      Job->KeepEdits = Keep && FileGraph == J->Graph;
     return;
   }
   if (!J->Result) {
@@ -354,6 +670,7 @@ void Session::adoptJob() {
     if (!J->Log.empty() && J->Log.back() != '\n')
       std::fputc('\n', stderr);
     say("texcc failed: the last good kernel keeps rendering");
+    errorEvent(J->Log);
     return;
   }
   unsigned Builds = R->cl().foregroundBuilds();
@@ -361,11 +678,15 @@ void Session::adoptJob() {
     R->setLayout(*J->Result);
   } catch (const std::exception &E) {
     say("error: " + std::string(E.what()) + "; the last good kernel keeps rendering");
+    errorEvent(E.what());
     return;
   }
+  json Edited = Graph;
   Lay = *J->Result;
   Editor = std::make_unique<LiveEditor>(Lay);
   Graph = LayGraph = J->Graph;
+  if (J->KeepEdits)
+    applyKeptEdits(Edited);
   watchFiles();
   ChangeAt = J->Started;
   say("new kernel from texcc after " + ms(nowSeconds() - J->Started) + ", " +
@@ -374,7 +695,7 @@ void Session::adoptJob() {
 
 } // namespace
 
-unsigned runWatch(WatchOptions O, const Layout &Initial) {
+WatchResult runWatch(WatchOptions O, const Layout &Initial) {
   Session S(std::move(O), Initial);
   return S.run();
 }

@@ -80,6 +80,13 @@ const char *Usage =
     "                       sources: a saved change is applied (values: an upload; other\n"
     "                       graph or source changes: texcc in the background; the scene: a\n"
     "                       reload) and accumulation restarts (docs/live.md)\n"
+    "  --control            with --watch: edit commands on standard input ('ID set\n"
+    "                       NODE.ARG=VALUE', 'ID rewire NODE.ARG=SOURCE', 'quit'; a line\n"
+    "                       longer than 64 KiB ends the session, exit 1), one JSON event a\n"
+    "                       line on standard output (ready, applied, error, frame, reload)\n"
+    "  --serve[=PORT]       the browser preview (default port 8642): runs\n"
+    "                       scripts/serve.sh with the scene and the other options\n"
+    "  --listen ADDR        with --serve: the address to listen on (default 127.0.0.1)\n"
     "  --quiet              no progress bar\n"
     "  --progress           the progress bar (elapsed time, ETA) and the end's summary line\n"
     "                       even when stderr is not a terminal (then one line per update)\n"
@@ -99,7 +106,13 @@ struct Options {
   int Device = 0;
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
-  bool Watch = false;
+  bool Watch = false, Control = false;
+  // --serve[=PORT] / --listen ADDR: Serve is set; Forward: every other argument, as given.
+  bool Serve = false;
+  int ServePort = 8642;
+  std::string Listen = "127.0.0.1";
+  bool ListenGiven = false;
+  std::vector<std::string> Forward;
   bool Quiet = false, ForceProgress = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
 
@@ -157,6 +170,7 @@ void checkOutputPath(const std::string &Path) {
 Options parseArgs(int Argc, char **Argv) {
   Options O;
   for (int I = 1; I < Argc; ++I) {
+    const int First = I;
     std::string A = Argv[I], Value;
     bool HasInline = false;
     if (A.rfind("--", 0) == 0 && A.find('=') != std::string::npos && A.rfind("--set=", 0) != 0) {
@@ -235,6 +249,23 @@ Options parseArgs(int Argc, char **Argv) {
       O.AoLoop = M == "loop";
     } else if (A == "--watch") {
       O.Watch = true;
+    } else if (A == "--control") {
+      O.Control = true;
+    } else if (A == "--serve") {
+      O.Serve = true;
+      // --serve=PORT, or --serve PORT when the next argument is a number.
+      if (HasInline || (I + 1 < Argc && *Argv[I + 1] &&
+                        std::string(Argv[I + 1]).find_first_not_of("0123456789") == std::string::npos))
+        O.ServePort = toInt(A, Next());
+      if (O.ServePort < 1 || O.ServePort > 65535)
+        throw Error("--serve: expected a port from 1 to 65535, got " + std::to_string(O.ServePort));
+      continue;
+    } else if (A == "--listen") {
+      O.Listen = Next();
+      O.ListenGiven = true;
+      if (O.Listen.empty())
+        throw Error("--listen: expected an address");
+      continue;
     } else if (A == "--interactive") {
       O.Interactive = true;
     } else if (A == "--check-nan") {
@@ -267,11 +298,25 @@ Options parseArgs(int Argc, char **Argv) {
     } else {
       throw Error("unexpected argument '" + A + "' (one scene file only)");
     }
+    for (int K = First; K <= I; ++K)
+      O.Forward.push_back(Argv[K]);
   }
   if (O.ListDevices)
     return O;
   if (O.Scene.empty())
     throw Error("no scene file given (usage: texrender scene.json -o image.png)");
+  if (O.Serve) {
+    if (!O.Output.empty() || O.Watch || O.Control || O.Interactive || !O.EditScript.empty() ||
+        O.TimeLimit > 0 || !O.Variance.empty() || !O.Sets.empty() || !O.Stats.empty())
+      throw Error("--serve runs the preview server, which renders with --watch --control into "
+                  "a folder of its own: it cannot be combined with -o, --watch, --control, "
+                  "--interactive, --edit-script, --time-limit, --variance, --set or --stats");
+    return O;
+  }
+  if (O.ListenGiven)
+    throw Error("--listen: only with --serve");
+  if (O.Control && !O.Watch)
+    throw Error("--control: only with --watch (it drives a watch session)");
   if (O.Output.empty())
     throw Error("no output image given (-o image.png or -o image.exr)");
   std::string Ext = fs::path(O.Output).extension().string();
@@ -524,31 +569,9 @@ void printLatency(size_t K, const FrameRecord &F) {
   std::fflush(stdout);
 }
 
-/// The longest line --interactive reads; a longer one ends the session.
-constexpr size_t MaxInteractiveLine = 64 * 1024;
-
-enum class LineRead { Line, End, TooLong };
-
-/// Reads one line (without its newline) of at most Max bytes, so that an endless line
-/// (/dev/zero) neither hangs the session nor fills memory.
-LineRead readBoundedLine(std::istream &In, std::string &Line, size_t Max) {
-  Line.clear();
-  std::streambuf *Buf = In.rdbuf();
-  for (bool Any = false;; Any = true) {
-    int C = Buf->sbumpc();
-    if (C == std::char_traits<char>::eof())
-      return Any ? LineRead::Line : LineRead::End;
-    if (C == '\n')
-      return LineRead::Line;
-    if (Line.size() == Max)
-      return LineRead::TooLong;
-    Line.push_back(char(C));
-  }
-}
-
 /// --interactive: edits from standard input until 'quit' or its end. A bad edit is reported
 /// and skipped (the session goes on); the image OUT is rewritten after every frame. A line
-/// longer than MaxInteractiveLine ends the session like the end of input, with an error: the
+/// longer than MaxEditLine ends the session like the end of input, with an error: the
 /// return value (false).
 bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Renderer &R,
                         BuildCounter &Builds, std::vector<float> &Image,
@@ -558,12 +581,12 @@ bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
   for (unsigned N = 1;; ++N) {
     if (Tty)
       std::fprintf(stderr, "edit> ");
-    LineRead Got = readBoundedLine(std::cin, Line, MaxInteractiveLine);
+    LineRead Got = readBoundedLine(std::cin, Line, MaxEditLine);
     if (Got == LineRead::End || StopSignal.load())
       break;
     if (Got == LineRead::TooLong) {
       std::fprintf(stderr, "texrender: error: standard input:%u: line longer than %zu bytes; the "
-                           "interactive session ends\n", N, MaxInteractiveLine);
+                           "interactive session ends\n", N, MaxEditLine);
       return false;
     }
     size_t B = Line.find_first_not_of(" \t\r");
@@ -583,6 +606,32 @@ bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
                G.RegionWidth ? G.RegionHeight : G.Height, Image);
   }
   return true;
+}
+
+/// --serve: texrender itself serves nothing; it becomes the preview server, scripts/serve.sh
+/// of texcc's source tree ($TEXRENDER_SERVE_SCRIPT overrides it), which runs this texrender
+/// with --watch --control (docs/live.md, "Browser preview").
+[[noreturn]] void execServe(const Options &O, const char *Argv0) {
+  const char *Override = std::getenv("TEXRENDER_SERVE_SCRIPT");
+  std::string Script = Override && *Override ? Override : TEXCC_SOURCE_DIR "/scripts/serve.sh";
+  if (::access(Script.c_str(), X_OK) != 0)
+    throw Error("--serve: the preview server's script '" + Script + "' is " +
+                (::access(Script.c_str(), F_OK) == 0 ? "not executable" : "missing") +
+                " (it comes with texcc's source tree: scripts/serve.sh)");
+  std::error_code EC;
+  fs::path Self = fs::read_symlink("/proc/self/exe", EC);
+  if (EC)
+    Self = fs::absolute(Argv0);
+  std::vector<std::string> Args{Script, "--port", std::to_string(O.ServePort), "--listen",
+                                O.Listen, "--texrender", Self.string(), "--"};
+  Args.insert(Args.end(), O.Forward.begin(), O.Forward.end());
+  std::vector<char *> Ptrs;
+  for (std::string &A : Args)
+    Ptrs.push_back(A.data());
+  Ptrs.push_back(nullptr);
+  std::fflush(nullptr);
+  ::execv(Script.c_str(), Ptrs.data());
+  throw Error("--serve: cannot run '" + Script + "': " + std::strerror(errno));
 }
 
 /// scene.json with the command line's overrides (--spp, --size, --region, --frame, ...).
@@ -619,6 +668,8 @@ int run(int Argc, char **Argv) try {
       std::cout << D << "\n";
     return 0;
   }
+  if (O.Serve)
+    execServe(O, Argv[0]);
   installStopHandlers();
   std::unique_ptr<Watchdog> Dog;
   if (O.TimeLimit > 0)
@@ -672,9 +723,10 @@ int run(int Argc, char **Argv) try {
     // image is the same bit for bit).
     W.Renderer.MaxPathsPerPass = size_t(OutW) * size_t(OutH);
     W.Stop = &StopSignal;
-    runWatch(std::move(W), L);
+    W.Control = O.Control;
+    WatchResult Res = runWatch(std::move(W), L);
     int Sig = StopSignal.load();
-    return Sig ? 128 + Sig : 0;
+    return Sig ? 128 + Sig : Res.Ok ? 0 : 1;
   }
   // Every edit is checked against the graph before the kernel build and the first frame: a
   // bad one is an error that leaves no frame written.

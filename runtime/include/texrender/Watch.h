@@ -14,6 +14,7 @@
 
 #include <atomic>
 #include <functional>
+#include <istream>
 #include <optional>
 #include <string>
 #include <sys/stat.h>
@@ -53,6 +54,15 @@ std::vector<std::string> graphFiles(const std::string &GraphPath, const nlohmann
 std::optional<std::vector<std::string>> argumentEdits(const nlohmann::json &Old,
                                                       const nlohmann::json &New);
 
+/// The longest line --interactive and --watch --control read; a longer one ends the session.
+constexpr size_t MaxEditLine = 64 * 1024;
+
+enum class LineRead { Line, End, TooLong };
+
+/// Reads one line (without its newline) of at most Max bytes, so that an endless line
+/// (/dev/zero) neither hangs the session nor fills memory.
+LineRead readBoundedLine(std::istream &In, std::string &Line, size_t Max);
+
 struct WatchOptions {
   std::string ScenePath, Output;
   int Width = 0, Height = 0; // the image written (the region's size with --region)
@@ -60,12 +70,21 @@ struct WatchOptions {
   std::function<Scene()> LoadScene;
   RendererOptions Renderer;
   const std::atomic<int> *Stop = nullptr; // a signal asked to stop (0: none)
+  /// --control: edit commands ("ID EDIT", "quit") on standard input, one JSON event a line on
+  /// standard output (docs/live.md, "Control channel"); the session also ends at the end of
+  /// standard input.
+  bool Control = false;
 };
 
-/// Runs the watch session until *Stop. Returns the number of frames rendered. Messages (one a
-/// line, "texrender: watch: ...") on stderr; errors in the user's files are printed and the
-/// last good state keeps rendering.
-unsigned runWatch(WatchOptions O, const Layout &Initial);
+struct WatchResult {
+  unsigned Frames = 0; // frames rendered with all their samples
+  bool Ok = true;      // false: the control session ended on an over-long line
+};
+
+/// Runs the watch session until *Stop (or, with Control, 'quit' or the end of standard input).
+/// Messages (one a line, "texrender: watch: ...") on stderr; errors in the user's files are
+/// printed and the last good state keeps rendering.
+WatchResult runWatch(WatchOptions O, const Layout &Initial);
 
 } // namespace texrender
 
