@@ -11,6 +11,7 @@ network code; this process has no rendering code.
 """
 import argparse
 import asyncio
+import collections
 import json
 import os
 import signal
@@ -30,8 +31,9 @@ PAGE_FILES = {"/": ("index.html", "text/html"), "/app.js": ("app.js", "text/java
 # WS_HARD_LIMIT closes that page's socket (aiohttp refuses to buffer it: code 1009).
 MAX_MESSAGE = 64 * 1024
 WS_HARD_LIMIT = 1024 * 1024
-# Messages queued for one page; a page that does not read them is disconnected (frames are
-# not queued: a page gets the newest frame only).
+# Messages queued for one page. Its own messages' answers hold the reading of its socket at
+# half of this (it waits until they are sent); a page that does not read what other pages'
+# edits broadcast is disconnected at the limit. Frames are not queued: a page gets the newest.
 MAX_OUTBOX = 256
 CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; "
        "connect-src 'self' ws://{host}")
@@ -46,9 +48,10 @@ class Page:
 
     def __init__(self, ws):
         self.ws = ws
-        self.outbox = []
+        self.outbox = collections.deque()
         self.frame = None  # (meta, png): replaced by a newer frame before it is sent
         self.wake = asyncio.Event()
+        self.drained = asyncio.Event()
         self.closed = False
 
     def send(self, message):
@@ -62,20 +65,35 @@ class Page:
         self.outbox.append(message)
         self.wake.set()
 
+    async def backlog(self):
+        """Waits while this page's answers are piling up (it sends faster than it reads)."""
+        while len(self.outbox) >= MAX_OUTBOX // 2 and not self.closed:
+            self.drained.clear()
+            await self.drained.wait()
+
     def send_frame(self, meta, png):
         self.frame = (meta, png)
         self.wake.set()
 
     async def pump(self):
-        while not self.closed:
-            await self.wake.wait()
-            self.wake.clear()
-            while self.outbox:
-                await self.ws.send_str(json.dumps(self.outbox.pop(0)))
-            if self.frame is not None:
-                (meta, png), self.frame = self.frame, None
-                await self.ws.send_str(json.dumps(meta))
-                await self.ws.send_bytes(png)
+        try:
+            while not self.closed:
+                await self.wake.wait()
+                self.wake.clear()
+                while self.outbox:
+                    await self.ws.send_str(json.dumps(self.outbox.popleft()))
+                self.drained.set()
+                if self.frame is not None:
+                    (meta, png), self.frame = self.frame, None
+                    await self.ws.send_str(json.dumps(meta))
+                    await self.ws.send_bytes(png)
+        except (ConnectionError, RuntimeError):
+            pass  # the page went away mid-send: its reading side ends too
+        finally:
+            self.closed = True
+            self.drained.set()
+            if not self.ws.closed:
+                await self.ws.close()
 
 
 class Edits:
@@ -349,6 +367,7 @@ async def serve_page(server, ws):
         async for msg in ws:
             if msg.type == WSMsgType.TEXT:
                 server.on_message(page, msg.data.encode())
+                await page.backlog()
             elif msg.type == WSMsgType.BINARY:
                 page.send({"type": "error", "id": None,
                            "message": "binary messages are not accepted"})

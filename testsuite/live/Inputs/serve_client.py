@@ -223,6 +223,30 @@ async def case_burst(s, http):
     await ws.close()
 
 
+async def case_flood_unread(s, http):
+    """20,000 refused messages sent without reading the answers, then read."""
+    ws, _ = await open_page(s, http)
+    before = s.rss_kib()
+    n = 20000
+    for i in range(n):
+        await ws.send_str(json.dumps({"type": "set", "id": i, "node": "nope", "arg": "gain",
+                                      "value": 1}))
+    sent_rss = s.rss_kib()
+    errors = 0
+    while errors < n:
+        msg = await ws.receive(timeout=60)
+        if msg.type == aiohttp.WSMsgType.TEXT and json.loads(msg.data)["type"] == "error":
+            errors += 1
+        elif msg.type not in (aiohttp.WSMsgType.TEXT, aiohttp.WSMsgType.BINARY):
+            break
+    growth = max(sent_rss, s.rss_kib()) - before
+    print(f"{n} refused messages sent unread: {errors} errors received in the end")
+    print(f"rss growth {growth} KiB: " + ("bounded" if growth < 8192 else "grows"))
+    print(f"lines that reached texrender: {len(s.forwarded())}")
+    await ws.close()
+    await still_serving(s, http)
+
+
 def stream_forever(port):
     """The killed client: reads frames until it is killed."""
     async def run():
