@@ -89,11 +89,22 @@ Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
     buildFixedKernels();
     uploadScene();
     Tracer = makeTrace(Opts.Trace, TraceContext{*Cl, K, B, Data});
+    Tiers = std::make_unique<TierManager>(
+        *Cl, Lay, Opts.Tier, Opts.InterpStackHeadroom, programOptions(), Epoch,
+        [this](Layout &&New) {
+          Lay = std::move(New);
+          uploadLayoutData();
+          return HasTextureWork;
+        });
     uploadLayoutData();
-    buildTextureKernel();
+    Tiers->build(HasTextureWork);
   } catch (const cl::Error &E) {
     throw Error(std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err()));
   }
+}
+
+Renderer::~Renderer() {
+  Tiers.reset(); // waits for its background builds, which use Cl
 }
 
 std::string Renderer::programOptions() const {
@@ -150,7 +161,7 @@ void Renderer::uploadLayoutData() {
   // Read-write: texcc_uniforms (shape, interp) writes hoisted values into it.
   B["fakeStack"] = Cl->allocateWith("fakeStack", Lay.ArgsBin.data(), Lay.ArgsBin.size(),
                                     CL_MEM_READ_WRITE);
-  UniformsDirty = true;
+  Tiers->argumentsChanged();
   // Images: every bound image, concatenated, linear RGBA.
   std::vector<cl_float4> Texels;
   std::vector<TexccImageInfo> Infos;
@@ -193,13 +204,23 @@ void Renderer::applyArguments(const std::vector<uint8_t> &ArgsBin,
   if (ArgsBin.size() > Have)
     B["fakeStack"] = Cl->allocate("fakeStack", ArgsBin.size(), CL_MEM_READ_WRITE);
   Cl->write(B["fakeStack"], ArgsBin.data(), ArgsBin.size());
-  UniformsDirty = true;
+  Tiers->argumentsChanged();
 }
 
 void Renderer::setLayout(const Layout &L) {
   Lay = L;
   uploadLayoutData();
-  buildTextureKernel();
+  Tiers->build(HasTextureWork);
+}
+
+void Renderer::switchShapes(const std::vector<uint8_t> &ArgsBin,
+                            const std::vector<std::string> &Attributes,
+                            std::function<Layout()> MakeLayout,
+                            std::function<void(Layout &)> Reencode) {
+  if (!Tiers->canSwitchShapes())
+    throw Error("switchShapes: needs a shape-mode layout with its interp fallback built (tier auto)");
+  applyArguments(ArgsBin, Attributes);
+  Tiers->switchShapes(HasTextureWork, std::move(MakeLayout), std::move(Reencode));
 }
 
 void Renderer::allocateWorkBuffers(size_t N) {
@@ -227,14 +248,13 @@ void Renderer::allocateWorkBuffers(size_t N) {
 
 void Renderer::runTextures(int NumActive) {
   // Hoisted values first, once per upload of fakeStack (stats.json kernel "uniforms").
-  if (UniformsKernel() && UniformsDirty) {
-    UniformsKernel.setArg(0, B["fakeStack"]);
-    UniformsKernel.setArg(1, cl_int(Lay.Materials.size()));
-    Cl->launch(UniformsKernel, 1, "uniforms");
-    UniformsDirty = false;
+  if (cl::Kernel *U = Tiers->uniformsDue()) {
+    U->setArg(0, B["fakeStack"]);
+    U->setArg(1, cl_int(Lay.Materials.size()));
+    Cl->launch(*U, 1, "uniforms");
+    Tiers->uniformsRan();
   }
-  for (size_t I = 0; I < TextureKernels.size(); ++I) {
-    cl::Kernel &T = TextureKernels[I];
+  for (cl::Kernel &T : Tiers->kernels()) {
     T.setArg(0, B["hitAttributes"]);
     T.setArg(1, B["hitMaterial"]);
     T.setArg(2, cl_int(NumActive));
@@ -349,9 +369,7 @@ std::vector<float> Renderer::averageSums(size_t NumPixels, int Done) {
 std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Variance) {
   double T0 = now();
   Stats = FrameStats();
-  adoptReadyBuild(); // a background shape build that finished since the last frame
-  Stats.Tier = ActiveTier;
-  ++FramesRendered;
+  Stats.Tier = Tiers->beginFrame(); // adopts a background build that finished since the last frame
   Cl->finish();
   Cl->resetTimings();
   const int W = Settings.Width, H = Settings.Height, Spp = Settings.Spp;

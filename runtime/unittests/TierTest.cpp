@@ -1,10 +1,12 @@
 // Tiered texture execution, host side: the --tier policy names, the "wait" edit-script line,
-// a shape-mode layout without its interp fallback, and BackgroundBuild's hand-over of a result
-// made on another thread. The tiers themselves run in testsuite/runtime/tier-*.test.
+// a shape-mode layout without its interp fallback, BackgroundBuild's hand-over of a result
+// made on another thread, and the tier manager's build plan (which tier renders the first
+// frame, which one builds in the background) for every policy and program-cache state. The tiers themselves run in testsuite/runtime/tier-*.test.
 #include "texrender/Error.h"
 #include "texrender/Layout.h"
 #include "texrender/LiveEdit.h"
 #include "texrender/TextureTiers.h"
+#include "texrender/TierManager.h"
 
 #include <gtest/gtest.h>
 
@@ -80,4 +82,50 @@ TEST(Tier, BackgroundBuildHandsOverItsResult) {
   EXPECT_TRUE(OtherThread);
   EXPECT_EQ(R.L.Mode, "shape");
   EXPECT_EQ(R.Error, "none");
+}
+
+// planTierBuilds, every (policy, shape cached, fallback cached): what is built before the
+// first frame, what on the background thread. The first frame renders with the shape kernel
+// when it is built now.
+TEST(Tier, BuildPlanOfEveryPolicyAndCacheState) {
+  struct Row {
+    TierPolicy P;
+    bool ShapeCached, FallbackCached;
+    bool ShapeNow, InterpNow, ShapeLater, InterpLater;
+  };
+  const TierPolicy Auto = TierPolicy::Auto, Interp = TierPolicy::Interp,
+                   Shape = TierPolicy::Shape;
+  const Row Rows[] = {
+      // auto: nothing cached builds the shape kernel now, the fallback behind it.
+      {Auto, false, false, true, false, false, true},
+      // auto: a cached program is a load: the shape kernel loads, the fallback builds later.
+      {Auto, true, false, true, false, false, true},
+      // auto: only the fallback cached: it renders at once, the shape kernel builds later.
+      {Auto, false, true, false, true, true, false},
+      // auto: both cached: both load now, nothing in the background.
+      {Auto, true, true, true, true, false, false},
+      // interp and shape: their own program now, whatever the cache holds; nothing later.
+      {Interp, false, false, false, true, false, false},
+      {Interp, true, false, false, true, false, false},
+      {Interp, false, true, false, true, false, false},
+      {Interp, true, true, false, true, false, false},
+      {Shape, false, false, true, false, false, false},
+      {Shape, true, false, true, false, false, false},
+      {Shape, false, true, true, false, false, false},
+      {Shape, true, true, true, false, false, false},
+  };
+  for (const Row &R : Rows) {
+    SCOPED_TRACE(std::string(tierPolicyName(R.P)) + " shapeCached=" +
+                 std::to_string(R.ShapeCached) + " fallbackCached=" +
+                 std::to_string(R.FallbackCached));
+    TierBuildPlan Plan = planTierBuilds(R.P, R.ShapeCached, R.FallbackCached);
+    EXPECT_EQ(Plan.ShapeNow, R.ShapeNow);
+    EXPECT_EQ(Plan.InterpNow, R.InterpNow);
+    EXPECT_EQ(Plan.ShapeLater, R.ShapeLater);
+    EXPECT_EQ(Plan.InterpLater, R.InterpLater);
+    // Something renders the first frame, and nothing is built twice.
+    EXPECT_TRUE(Plan.ShapeNow || Plan.InterpNow);
+    EXPECT_FALSE(Plan.ShapeNow && Plan.ShapeLater);
+    EXPECT_FALSE(Plan.InterpNow && Plan.InterpLater);
+  }
 }

@@ -12,6 +12,7 @@
 #include "texrender/Scene.h"
 #include "texrender/SceneData.h"
 #include "texrender/TextureTiers.h"
+#include "texrender/TierManager.h"
 #include "texrender/Trace.h"
 
 #include <cstdint>
@@ -94,6 +95,8 @@ public:
   Renderer(const Scene &S, const Layout &L, const RendererOptions &Opts);
   /// Waits for background builds (their results are dropped).
   ~Renderer();
+  Renderer(const Renderer &) = delete;
+  Renderer &operator=(const Renderer &) = delete;
 
   /// Renders S.Render (size, spp, depth) and returns linear RGB (3 floats per pixel, row 0
   /// at the top), averaged over the samples. Variance (optional): the estimated variance of
@@ -118,20 +121,22 @@ public:
                     std::function<Layout()> MakeLayout, std::function<void(Layout &)> Reencode);
   /// Waits for the background build in flight, if any, and switches to its kernels. Returns
   /// the seconds waited.
-  double waitForBackgroundBuild();
-  bool backgroundBuildPending() const { return Pending || Queued; }
+  double waitForBackgroundBuild() { return Tiers->waitForBackgroundBuild(); }
+  bool backgroundBuildPending() const { return Tiers->backgroundBuildPending(); }
 
+  /// The texture kernels, their tiers and builds (TierManager.h).
+  const TierManager &tiers() const { return *Tiers; }
   TierPolicy tierPolicy() const { return Opts.Tier; }
-  const std::string &activeTier() const { return ActiveTier; }
+  const std::string &activeTier() const { return Tiers->activeTier(); }
   /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none.
-  unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
+  unsigned fallbackStackSlots() const { return Tiers->fallbackStackSlots(); }
   /// interp mode: the value-stack slots the built kernel holds (with InterpStackHeadroom more
   /// than the layout's stackSlots).
-  unsigned interpStackSlots() const { return InterpModeSlots; }
+  unsigned interpStackSlots() const { return Tiers->interpStackSlots(); }
   /// Every texture-kernel build so far, foreground and background.
-  const std::vector<BuildEvent> &buildEvents() const { return Events; }
+  const std::vector<BuildEvent> &buildEvents() const { return Tiers->buildEvents(); }
   /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
-  double foregroundBuildSeconds() const;
+  double foregroundBuildSeconds() const { return Tiers->foregroundBuildSeconds(); }
 
   /// For tests: one jittered camera ray per pixel, the hit attributes of the first hits
   /// (Mask: bits 1 << TEXCC_ATTR_*), with AO computed when the mask has the AO bit.
@@ -156,21 +161,6 @@ private:
   /// Points each mesh at its material's index in Lay, by the material's name in scene.json:
   /// a regenerated layout may number the materials differently. A name Lay lacks is an error.
   void mapMeshMaterials();
-  void buildTextureKernel();
-  void buildShapeTiers(const char *Reason);
-  /// ExtraOptions: appended to programOptions() (the value-stack headroom's -D).
-  cl::Program buildForeground(const std::string &Path, const std::string &Source,
-                              const std::string &Tier, const std::string &Reason,
-                              const std::string &ExtraOptions = "");
-  void activate(const cl::Program &P, const std::string &Tier);
-  std::vector<std::string> textureKernelNames() const;
-  void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
-                            std::function<void(Layout &)> Reencode, const std::string &Reason);
-  void supersedePending();
-  void launchQueued();
-  void reapRetired(bool Wait);
-  void adoptReadyBuild();
-  void adopt(TierBuildResult &R);
   int traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes);
   /// AO of the Count hits of the active list: ao_trace + ao_reduce, or ao_loop.
   void runAo(const cl::Buffer &Active, int Count, FrameStats &Stats);
@@ -195,34 +185,11 @@ private:
   bool HasTextureWork = false;
 
   std::map<std::string, cl::Kernel> K;      // fixed kernels by name
-  std::vector<cl::Kernel> TextureKernels;   // proctex (one, or the wavefront launches + outputs)
-  std::vector<std::string> TextureKernelNames;
 
-  // Tiers (shape mode): the programs of Lay, the one running, the background job in flight
-  // and the superseded ones still running (joined, their results dropped).
   double Epoch = 0;                         // steadySeconds() at construction
-  std::string ActiveTier;
-  // The texcc_uniforms of the shape tier or of an interp kernel that hoists (Layout::Uniforms),
-  // and whether fakeStack changed (or the kernel did) since it last ran.
-  bool tierUsesUniforms(const std::string &Tier) const;
-  cl::Kernel UniformsKernel;
-  bool UniformsDirty = true;
-  cl::Program ShapeProgram, InterpProgram;
-  unsigned FallbackSlots = 0;
-  unsigned InterpModeSlots = 0;
-  std::unique_ptr<BackgroundBuild> Pending;
-  std::function<void(Layout &)> PendingReencode;
-  std::vector<std::unique_ptr<BackgroundBuild>> Retired;
-  // The newest build requested while a superseded one still runs: it starts when that ends.
-  struct QueuedBuild {
-    std::function<Layout()> MakeLayout;
-    TierJob Job;
-    std::function<void(Layout &)> Reencode;
-    std::string Reason;
-  };
-  std::optional<QueuedBuild> Queued;
-  std::vector<BuildEvent> Events;
-  unsigned FramesRendered = 0;
+  /// The texture kernels: tiers, builds, adoption (after Cl: it uses it, and is destroyed
+  /// first, waiting for its background builds).
+  std::unique_ptr<TierManager> Tiers;
 
   std::map<std::string, cl::Buffer> B;      // device buffers by name
   std::unique_ptr<Trace> Tracer;            // the trace stages (after B: it refers to it)

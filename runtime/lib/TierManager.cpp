@@ -1,54 +1,71 @@
-// The texture kernel of a Renderer: building it, and for shape-mode layouts the two tiers
+// The texture kernels of a Renderer: building them, and for shape-mode layouts the two tiers
 // (TextureTiers.h): the interp fallback renders while the shape kernel builds on a background
 // thread, and frames switch to the shape kernel at the first frame after it is ready.
 
+#include "texrender/TierManager.h"
 #include "texrender/Error.h"
-#include "texrender/Renderer.h"
 
 #include <cstdio>
 
 namespace texrender {
 
-Renderer::~Renderer() {
+TierBuildPlan planTierBuilds(TierPolicy P, bool ShapeCached, bool FallbackCached) {
+  TierBuildPlan Plan;
+  const bool Auto = P == TierPolicy::Auto;
+  Plan.ShapeNow = P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached));
+  Plan.InterpNow = P == TierPolicy::Interp || (Auto && FallbackCached);
+  Plan.ShapeLater = Auto && !Plan.ShapeNow;
+  Plan.InterpLater = Auto && !Plan.InterpNow;
+  return Plan;
+}
+
+TierManager::TierManager(ClContext &Cl, const Layout &Lay, TierPolicy Policy,
+                         bool InterpStackHeadroom, std::string ProgramOptions, double Epoch,
+                         std::function<bool(Layout &&)> AdoptLayout)
+    : Cl(Cl), Lay(Lay), Policy(Policy), InterpStackHeadroom(InterpStackHeadroom),
+      ProgramOptions(std::move(ProgramOptions)), Epoch(Epoch),
+      AdoptLayout(std::move(AdoptLayout)) {}
+
+TierManager::~TierManager() {
   if (Pending)
     Pending->wait();
   for (auto &R : Retired)
     R->wait();
 }
 
-cl::Program Renderer::buildForeground(const std::string &Path, const std::string &Source,
-                                      const std::string &Tier, const std::string &Reason,
-                                      const std::string &ExtraOptions) {
+cl::Program TierManager::buildForeground(const std::string &Path, const std::string &Source,
+                                         const std::string &Tier, const std::string &Reason,
+                                         const std::string &ExtraOptions) {
   BuildEvent E;
   E.Kernel = Tier;
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
-  cl::Program P = Cl->buildProgram(Path, Source, programOptions() + ExtraOptions);
+  cl::Program P = Cl.buildProgram(Path, Source, ProgramOptions + ExtraOptions);
   // PoCL's compile at the first launch is part of the build the frame waits for.
   std::vector<std::string> Names = textureKernelNames();
   if (tierUsesUniforms(Tier))
     Names.push_back(Lay.Uniforms);
-  warmUpKernels(*Cl, P, Names, Path);
+  warmUpKernels(Cl, P, Names, Path);
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);
   return P;
 }
 
-bool Renderer::tierUsesUniforms(const std::string &Tier) const {
+bool TierManager::tierUsesUniforms(const std::string &Tier) const {
   // The layout's own kernel (shape mode's shape tier, or an interp-mode kernel that hoists);
   // shape mode's interp fallback never reads hoisted values.
   return !Lay.Uniforms.empty() && !(Lay.Caps.InterpFallback && Tier == FallbackTierName);
 }
 
-std::vector<std::string> Renderer::textureKernelNames() const {
+std::vector<std::string> TierManager::textureKernelNames() const {
   // Wavefront: every node kernel in launch order, then the outputs kernel (kernel.entry).
   std::vector<std::string> Names = Lay.WavefrontLaunches;
   Names.push_back(Lay.Entry);
   return Names;
 }
 
-double Renderer::foregroundBuildSeconds() const {
+double TierManager::foregroundBuildSeconds() const {
   double S = 0;
   for (const BuildEvent &E : Events)
     if (!E.Background && E.ReadySeconds >= 0)
@@ -56,13 +73,12 @@ double Renderer::foregroundBuildSeconds() const {
   return S;
 }
 
-void Renderer::activate(const cl::Program &P, const std::string &Tier) {
+void TierManager::activate(const cl::Program &P, const std::string &Tier) {
   TextureKernels.clear();
   ActiveTier = Tier;
-  TextureKernelNames = textureKernelNames();
   std::string File =
       Lay.Caps.InterpFallback && Tier == FallbackTierName ? Lay.InterpFallback : Lay.KernelSource;
-  for (const std::string &N : TextureKernelNames) {
+  for (const std::string &N : textureKernelNames()) {
     try {
       TextureKernels.push_back(cl::Kernel(P, N.c_str()));
     } catch (const cl::Error &E) {
@@ -82,10 +98,10 @@ void Renderer::activate(const cl::Program &P, const std::string &Tier) {
   }
 }
 
-void Renderer::buildTextureKernel() {
+void TierManager::build(bool HasWork) {
+  HasTextureWork = HasWork;
   supersedePending();
   TextureKernels.clear();
-  TextureKernelNames.clear();
   ShapeProgram = InterpProgram = cl::Program();
   ActiveTier.clear();
   if (!HasTextureWork)
@@ -94,7 +110,7 @@ void Renderer::buildTextureKernel() {
   if (!Lay.Caps.InterpFallback) {
     InterpModeSlots = Lay.StackSlots;
     const std::string Source = readKernelSource(Lay.KernelSource);
-    const std::string Headroom = Lay.Caps.StackHeadroom && Opts.InterpStackHeadroom
+    const std::string Headroom = Lay.Caps.StackHeadroom && InterpStackHeadroom
                                      ? stackHeadroomOption(Lay, Source, InterpModeSlots)
                                      : "";
     activate(buildForeground(Lay.KernelSource, Source, Lay.Mode, Reason, Headroom), Lay.Mode);
@@ -103,54 +119,47 @@ void Renderer::buildTextureKernel() {
   buildShapeTiers(Reason);
 }
 
-void Renderer::buildShapeTiers(const char *Reason) {
-  // Something must render the next frame. A kernel whose binary is cached is a load, not a
-  // build: use it. With neither cached, tier auto builds the shape kernel first (on PoCL it
-  // builds faster than the fallback, whose switch holds every function) and the fallback
-  // behind it, for later rewirings.
-  const TierPolicy P = Opts.Tier;
+void TierManager::buildShapeTiers(const char *Reason) {
   const std::string ShapeText = readKernelSource(Lay.KernelSource);
   const std::string FallbackText = readKernelSource(Lay.InterpFallback);
   const std::string FallbackHeadroom = stackHeadroomOption(Lay, FallbackText, FallbackSlots);
-  const bool ShapeCached = Cl->isCached(ShapeText, programOptions());
-  const bool FallbackCached = Cl->isCached(FallbackText, programOptions() + FallbackHeadroom);
-  const bool Auto = P == TierPolicy::Auto;
-  if (P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached)))
+  const TierBuildPlan Plan =
+      planTierBuilds(Policy, Cl.isCached(ShapeText, ProgramOptions),
+                     Cl.isCached(FallbackText, ProgramOptions + FallbackHeadroom));
+  if (Plan.ShapeNow)
     ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, ShapeTierName, Reason);
-  if (P == TierPolicy::Interp || (Auto && FallbackCached))
+  if (Plan.InterpNow)
     InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, FallbackTierName, Reason,
                                     FallbackHeadroom);
   activate(ShapeProgram() ? ShapeProgram : InterpProgram,
-             ShapeProgram() ? ShapeTierName : FallbackTierName);
-  if (Auto && (!ShapeProgram() || !InterpProgram())) {
+           ShapeProgram() ? ShapeTierName : FallbackTierName);
+  if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
-    TierJob Job{/*SameLayout=*/true, /*Shape=*/!ShapeProgram(), /*Interp=*/!InterpProgram()};
+    TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater};
     startBackgroundBuild([Same] { return Same; }, Job, nullptr, Reason);
   }
 }
 
-void Renderer::switchShapes(const std::vector<uint8_t> &ArgsBin,
-                            const std::vector<std::string> &Attributes,
-                            std::function<Layout()> MakeLayout,
-                            std::function<void(Layout &)> Reencode) {
-  if (!Lay.Caps.InterpFallback || !InterpProgram())
+void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
+                               std::function<void(Layout &)> Reencode) {
+  if (!canSwitchShapes())
     throw Error("switchShapes: needs a shape-mode layout with its interp fallback built (tier auto)");
-  applyArguments(ArgsBin, Attributes);
+  HasTextureWork = HasWork;
   if (HasTextureWork && ActiveTier != FallbackTierName)
     activate(InterpProgram, FallbackTierName);
   startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true}, std::move(Reencode),
                        "shape change");
 }
 
-void Renderer::startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
-                                    std::function<void(Layout &)> Reencode,
-                                    const std::string &Reason) {
+void TierManager::startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
+                                       std::function<void(Layout &)> Reencode,
+                                       const std::string &Reason) {
   supersedePending();
   Queued = QueuedBuild{std::move(MakeLayout), Job, std::move(Reencode), Reason};
   launchQueued();
 }
 
-void Renderer::launchQueued() {
+void TierManager::launchQueued() {
   // One build thread at a time: a superseded build cannot be cancelled, and letting it finish
   // before the next one starts keeps rapid edits from piling up builds on the same cores.
   reapRetired(false);
@@ -162,8 +171,8 @@ void Renderer::launchQueued() {
   E.Background = true;
   E.StartSeconds = steadySeconds() - Epoch;
   Events.push_back(E);
-  ClContext *Ctx = Cl.get();
-  std::string Options = programOptions();
+  ClContext *Ctx = &Cl;
+  std::string Options = ProgramOptions;
   double Start = Epoch;
   Pending = std::make_unique<BackgroundBuild>(
       [Ctx, MakeLayout = std::move(Queued->MakeLayout), Job = Queued->Job, Options, Start] {
@@ -174,7 +183,7 @@ void Renderer::launchQueued() {
   Queued.reset();
 }
 
-void Renderer::supersedePending() {
+void TierManager::supersedePending() {
   Queued.reset();
   if (!Pending)
     return;
@@ -183,7 +192,7 @@ void Renderer::supersedePending() {
   PendingReencode = nullptr;
 }
 
-void Renderer::reapRetired(bool Wait) {
+void TierManager::reapRetired(bool Wait) {
   for (auto It = Retired.begin(); It != Retired.end();) {
     if (!Wait && !(*It)->ready()) {
       ++It;
@@ -197,7 +206,13 @@ void Renderer::reapRetired(bool Wait) {
   }
 }
 
-void Renderer::adoptReadyBuild() {
+const std::string &TierManager::beginFrame() {
+  adoptReadyBuild(); // a background shape build that finished since the last frame
+  ++FramesRendered;
+  return ActiveTier;
+}
+
+void TierManager::adoptReadyBuild() {
   launchQueued();
   if (!Pending || !Pending->ready())
     return;
@@ -222,13 +237,12 @@ void Renderer::adoptReadyBuild() {
   }
 }
 
-void Renderer::adopt(TierBuildResult &R) {
+void TierManager::adopt(TierBuildResult &R) {
   if (!R.SameLayout) {
     if (PendingReencode)
       PendingReencode(R.L);
     PendingReencode = nullptr;
-    Lay = std::move(R.L);
-    uploadLayoutData();
+    HasTextureWork = AdoptLayout(std::move(R.L));
   }
   if (R.Interp()) {
     InterpProgram = R.Interp;
@@ -241,7 +255,7 @@ void Renderer::adopt(TierBuildResult &R) {
              ShapeProgram() ? ShapeTierName : FallbackTierName);
 }
 
-double Renderer::waitForBackgroundBuild() {
+double TierManager::waitForBackgroundBuild() {
   double T0 = steadySeconds();
   while (Pending || Queued || !Retired.empty()) {
     reapRetired(/*Wait=*/true);

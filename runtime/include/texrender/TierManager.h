@@ -1,0 +1,142 @@
+#ifndef TEXRENDER_TIERMANAGER_H
+#define TEXRENDER_TIERMANAGER_H
+
+// The texture kernels of a Renderer (docs/runtime.md, "Tiers"): which program renders the next
+// frame, the foreground builds frames wait for, the background builds (one thread at a time,
+// superseded ones finished and dropped), their adoption at a frame boundary, and the build
+// events stats.json reports. The Renderer keeps path tracing and launches the kernels this
+// class hands it; the building blocks (BackgroundBuild, buildShapeTier, the value-stack
+// headroom) are in TextureTiers.h.
+
+#include "texrender/ClContext.h"
+#include "texrender/Layout.h"
+#include "texrender/TextureTiers.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace texrender {
+
+/// Which programs of a shape-mode layout (Caps.InterpFallback) a build of its texture kernel
+/// makes before the next frame (Now) and which it leaves to the background thread (Later).
+/// Something must render the next frame, and a cached program is a load, not a build: tier
+/// auto builds now what is cached, or the shape kernel when neither is (on PoCL it builds faster
+/// than the fallback, whose switch holds every function), and the other behind it. Tiers shape
+/// and interp build only their own program, now. The first frame renders with the shape kernel
+/// when it is built now, else with the fallback.
+struct TierBuildPlan {
+  bool ShapeNow = false, InterpNow = false;
+  bool ShapeLater = false, InterpLater = false;
+};
+TierBuildPlan planTierBuilds(TierPolicy P, bool ShapeCached, bool FallbackCached);
+
+class TierManager {
+public:
+  /// Lay: the layout the renderer runs (the renderer's own, which outlives this manager; a
+  /// background build for a new layout replaces it through AdoptLayout, which returns whether
+  /// the new layout has texture work). ProgramOptions: the build options of every texture
+  /// program. Epoch: steadySeconds() at the renderer's creation (build-event times).
+  TierManager(ClContext &Cl, const Layout &Lay, TierPolicy Policy, bool InterpStackHeadroom,
+              std::string ProgramOptions, double Epoch,
+              std::function<bool(Layout &&)> AdoptLayout);
+  /// Waits for background builds (their results are dropped).
+  ~TierManager();
+  TierManager(const TierManager &) = delete;
+  TierManager &operator=(const TierManager &) = delete;
+
+  /// (Re)builds the texture kernel of the renderer's layout (its first one, or a regenerated
+  /// one): supersedes a background build in flight, builds what the next frame needs in the
+  /// foreground and, tier auto, the other tier on the background thread. HasTextureWork false:
+  /// no texture kernel at all.
+  void build(bool HasTextureWork);
+  /// Whether switchShapes can run: a shape-mode layout whose interp fallback is built.
+  bool canSwitchShapes() const { return Lay.Caps.InterpFallback && InterpProgram(); }
+  /// Renderer::switchShapes: the interp fallback renders at once, MakeLayout's layout is built
+  /// on the background thread and Reencode fills it at adoption (TextureTiers.h). The renderer
+  /// has uploaded the re-encoded arguments before.
+  void switchShapes(bool HasTextureWork, std::function<Layout()> MakeLayout,
+                    std::function<void(Layout &)> Reencode);
+  /// At a frame's start: adopts a background build that finished since the last frame, counts
+  /// the frame and returns the tier it renders with ("" without texture work).
+  const std::string &beginFrame();
+  /// Waits for the background build in flight, if any, and switches to its kernels. Returns
+  /// the seconds waited.
+  double waitForBackgroundBuild();
+  bool backgroundBuildPending() const { return Pending || Queued; }
+
+  /// The active tier's texture kernels in launch order (one, or wavefront's node launches and
+  /// its outputs kernel).
+  std::vector<cl::Kernel> &kernels() { return TextureKernels; }
+  /// The active tier's texcc_uniforms when fakeStack (or the kernel) changed since it last
+  /// ran, else nullptr; the caller launches it and calls uniformsRan().
+  cl::Kernel *uniformsDue() { return UniformsKernel() && UniformsDirty ? &UniformsKernel : nullptr; }
+  void uniformsRan() { UniformsDirty = false; }
+  /// fakeStack was uploaded again: texcc_uniforms runs before the next texture launch.
+  void argumentsChanged() { UniformsDirty = true; }
+
+  TierPolicy policy() const { return Policy; }
+  const std::string &activeTier() const { return ActiveTier; }
+  /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none.
+  unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
+  /// interp mode: the value-stack slots the built kernel holds.
+  unsigned interpStackSlots() const { return InterpModeSlots; }
+  const std::vector<BuildEvent> &buildEvents() const { return Events; }
+  /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
+  double foregroundBuildSeconds() const;
+
+private:
+  void buildShapeTiers(const char *Reason);
+  /// ExtraOptions: appended to ProgramOptions (the value-stack headroom's -D).
+  cl::Program buildForeground(const std::string &Path, const std::string &Source,
+                              const std::string &Tier, const std::string &Reason,
+                              const std::string &ExtraOptions = "");
+  void activate(const cl::Program &P, const std::string &Tier);
+  bool tierUsesUniforms(const std::string &Tier) const;
+  std::vector<std::string> textureKernelNames() const;
+  void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
+                            std::function<void(Layout &)> Reencode, const std::string &Reason);
+  void supersedePending();
+  void launchQueued();
+  void reapRetired(bool Wait);
+  void adoptReadyBuild();
+  void adopt(TierBuildResult &R);
+
+  ClContext &Cl;
+  const Layout &Lay;
+  const TierPolicy Policy;
+  const bool InterpStackHeadroom;
+  const std::string ProgramOptions;
+  const double Epoch;
+  std::function<bool(Layout &&)> AdoptLayout;
+  bool HasTextureWork = false;
+
+  std::string ActiveTier;
+  std::vector<cl::Kernel> TextureKernels;
+  // The texcc_uniforms of the shape tier or of an interp kernel that hoists (Layout::Uniforms),
+  // and whether fakeStack changed (or the kernel did) since it last ran.
+  cl::Kernel UniformsKernel;
+  bool UniformsDirty = true;
+  cl::Program ShapeProgram, InterpProgram;
+  unsigned FallbackSlots = 0;
+  unsigned InterpModeSlots = 0;
+  std::unique_ptr<BackgroundBuild> Pending;
+  std::function<void(Layout &)> PendingReencode;
+  std::vector<std::unique_ptr<BackgroundBuild>> Retired;
+  // The newest build requested while a superseded one still runs: it starts when that ends.
+  struct QueuedBuild {
+    std::function<Layout()> MakeLayout;
+    TierJob Job;
+    std::function<void(Layout &)> Reencode;
+    std::string Reason;
+  };
+  std::optional<QueuedBuild> Queued;
+  std::vector<BuildEvent> Events;
+  unsigned FramesRendered = 0;
+};
+
+} // namespace texrender
+
+#endif
