@@ -80,12 +80,11 @@ int runProcess(const std::vector<std::string> &Argv, const std::string &LogPath)
 }
 
 /// Arguments baked on texcc's command line (--bake NODE.ARG) are marked "bake" in layout.json's
-/// nodes but absent from graph.json: writes them into Graph as {"value": v, "bake": true}, so
-/// that a regeneration keeps them baked and an edit of one is known to change the shape.
-void carryCommandLineBakes(json &Graph, const std::string &LayoutText) {
+/// nodes but absent from graph.json: marks them baked in G, so that a regeneration keeps them
+/// baked and an edit of one is known to change the shape.
+void carryCommandLineBakes(texcc::graph::Graph &G, const std::string &LayoutText) {
   json Layout = json::parse(LayoutText, nullptr, false);
-  if (!Layout.is_object() || !Layout.contains("nodes") || !Graph.contains("nodes") ||
-      !Graph["nodes"].is_array())
+  if (!Layout.is_object() || !Layout.contains("nodes"))
     return;
   std::map<std::string, std::vector<std::string>> Baked; // node id -> baked argument names
   for (const json &N : Layout["nodes"]) {
@@ -98,17 +97,90 @@ void carryCommandLineBakes(json &Graph, const std::string &LayoutText) {
           Baked[Merged.get<std::string>()].push_back(A.value("name", ""));
     }
   }
-  for (json &N : Graph["nodes"]) {
-    auto It = Baked.find(N.value("id", ""));
-    if (It == Baked.end() || !N.contains("args") || !N["args"].is_object())
+  using Kind = texcc::graph::ArgValue::Kind;
+  for (texcc::graph::Node &N : G.Nodes) {
+    auto It = Baked.find(N.Id);
+    if (It == Baked.end())
       continue;
-    for (const std::string &Arg : It->second)
-      if (N["args"].contains(Arg) && !N["args"][Arg].is_object())
-        N["args"][Arg] = json{{"value", N["args"][Arg]}, {"bake", true}};
+    for (auto &[Name, A] : N.Args)
+      if (std::find(It->second.begin(), It->second.end(), Name) != It->second.end() &&
+          A.K != Kind::NodeRef && A.K != Kind::AttrRef && A.K != Kind::ImageRef)
+        A.Bake = true;
   }
 }
 
+json argumentJson(const texcc::graph::ArgValue &A) {
+  using Kind = texcc::graph::ArgValue::Kind;
+  auto Number = [&](double D) { return A.IsInteger ? json(int64_t(D)) : json(D); };
+  auto Numbers = [&](const std::vector<double> &Ds) {
+    json Arr = json::array();
+    for (double D : Ds)
+      Arr.push_back(Number(D));
+    return Arr;
+  };
+  json V;
+  switch (A.K) {
+  case Kind::NodeRef:
+    return json{{"node", A.Ref}};
+  case Kind::AttrRef:
+    return json{{"attr", A.Ref}};
+  case Kind::ImageRef:
+    return json{{"image", A.Ref}};
+  case Kind::Number:
+    V = Number(A.Numbers.empty() ? 0.0 : A.Numbers[0]);
+    break;
+  case Kind::Vector:
+  case Kind::Array:
+    if (A.IsArrayOfRows) {
+      V = json::array();
+      for (const std::vector<double> &Row : A.Rows)
+        V.push_back(Numbers(Row));
+    } else {
+      V = Numbers(A.Numbers);
+    }
+    break;
+  }
+  if (A.Bake)
+    return json{{"value", V}, {"bake", true}};
+  return V;
+}
+
+json bsdfJson(const texcc::graph::Bsdf &B) {
+  json J;
+  J["bsdf"] = B.Type;
+  for (const auto &[Name, V] : B.Inputs)
+    J[Name] = argumentJson(V);
+  for (const auto &[Name, Child] : B.Children)
+    J[Name] = bsdfJson(Child);
+  return J;
+}
+
 } // namespace
+
+json graphJson(const texcc::graph::Graph &G) {
+  json J;
+  J["texcc"] = 1;
+  J["sources"] = G.Sources;
+  if (!G.Images.empty()) {
+    json Images = json::object();
+    for (const auto &[Name, Path] : G.Images)
+      Images[Name] = Path;
+    J["images"] = Images;
+  }
+  json Nodes = json::array();
+  for (const texcc::graph::Node &N : G.Nodes) {
+    json Args = json::object();
+    for (const auto &[Name, V] : N.Args)
+      Args[Name] = argumentJson(V);
+    Nodes.push_back(json{{"id", N.Id}, {"fn", N.Fn}, {"args", Args}});
+  }
+  J["nodes"] = Nodes;
+  json Materials = json::object();
+  for (const texcc::graph::Material &M : G.Materials)
+    Materials[M.Name] = bsdfJson(M.Root);
+  J["materials"] = Materials;
+  return J;
+}
 
 std::string findTexcc() {
   if (const char *E = std::getenv("TEXCC"); E && *E)
@@ -162,30 +234,27 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
     : Lay(L), TexccPath(Texcc.empty() ? findTexcc() : std::move(Texcc)) {
   if (Lay.GraphPath.empty())
     throw Error(Lay.Dir + "/layout.json: no \"graph\": live edits need the graph the kernel was made from");
-  std::string Text = readFile(Lay.GraphPath);
-  try {
-    GraphDoc = json::parse(Text);
-  } catch (const json::exception &Ex) {
-    throw Error(Lay.GraphPath + ": invalid JSON: " + Ex.what());
-  }
-  carryCommandLineBakes(GraphDoc, Lay.Text);
-  initEditor(Text);
+  texcc::graph::DiagnosticSink Diags;
+  std::optional<texcc::graph::Graph> G =
+      texcc::graph::parseGraph(Lay.GraphPath, readFile(Lay.GraphPath), Diags);
+  if (!G)
+    throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
+  Model = std::move(*G);
+  carryCommandLineBakes(Model, Lay.Text);
+  initEditor(Model);
 }
 
-void LiveEditor::initEditor(const std::string &GraphText) {
+void LiveEditor::initEditor(const texcc::graph::Graph &G) {
   Editor.reset();
   KernelShapeHash = Lay.ShapeHash;
   if (!Lay.Caps.ReEncodes)
     return; // every edit regenerates
-  Editor = makeEditor(GraphText);
+  Editor = makeEditor(G);
 }
 
 std::unique_ptr<texcc::graph::GraphEditor>
-LiveEditor::makeEditor(const std::string &GraphText) const {
+LiveEditor::makeEditor(texcc::graph::Graph G) const {
   texcc::graph::DiagnosticSink Diags;
-  std::optional<texcc::graph::Graph> G = texcc::graph::parseGraph(Lay.GraphPath, GraphText, Diags);
-  if (!G)
-    throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
   texcc::graph::SignatureMap Sigs;
   texcc::graph::CompileOptions Opts;
   std::string Why;
@@ -201,14 +270,14 @@ LiveEditor::makeEditor(const std::string &GraphText) const {
   // An interp kernel that hoists reads every hoisting node's values from its record: a
   // rewiring of a parameter they come from needs a new kernel (texcc then hoists less).
   Opts.InterpHoistedCalls = Lay.Caps.WiringIsData && !Lay.Uniforms.empty();
-  auto E = std::make_unique<texcc::graph::GraphEditor>(std::move(*G), std::move(Sigs), Opts);
+  auto E = std::make_unique<texcc::graph::GraphEditor>(std::move(G), std::move(Sigs), Opts);
   if (!E->init(Diags))
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
   return E;
 }
 
 std::optional<EditProblem> LiveEditor::check(const std::vector<Edit> &Edits) const {
-  std::unique_ptr<texcc::graph::GraphEditor> Scratch = makeEditor(GraphDoc.dump());
+  std::unique_ptr<texcc::graph::GraphEditor> Scratch = makeEditor(Model);
   for (size_t I = 0; I < Edits.size(); ++I) {
     const Edit &E = Edits[I];
     if (E.K == Edit::Kind::Wait)
@@ -238,49 +307,57 @@ std::optional<EditProblem> LiveEditor::check(const std::vector<Edit> &Edits) con
 
 LiveEditor::~LiveEditor() = default;
 
-bool LiveEditor::applyToJson(const Edit &E) {
-  if (!GraphDoc.contains("nodes") || !GraphDoc["nodes"].is_array())
-    throw Error("edit '" + E.Text + "': " + Lay.GraphPath + " has no nodes");
-  for (json &N : GraphDoc["nodes"]) {
-    if (N.value("id", "") != E.Node)
-      continue;
-    json &Args = N["args"];
-    bool WasWired = Args.contains(E.Arg) && Args[E.Arg].is_object();
-    if (E.K == Edit::Kind::Rewire) {
-      Args[E.Arg] = json{{"node", E.Value}};
-      return true;
+bool LiveEditor::applyToModel(const Edit &E) {
+  using Kind = texcc::graph::ArgValue::Kind;
+  texcc::graph::Node *N = Model.findNode(E.Node);
+  if (!N)
+    throw Error("edit '" + E.Text + "': unknown node '" + E.Node + "'");
+  auto Slot = std::find_if(N->Args.begin(), N->Args.end(),
+                           [&](const auto &A) { return A.first == E.Arg; });
+  const bool Had = Slot != N->Args.end();
+  const bool WasWired =
+      Had && (Slot->second.Bake || Slot->second.K == Kind::NodeRef ||
+              Slot->second.K == Kind::AttrRef || Slot->second.K == Kind::ImageRef);
+  texcc::graph::ArgValue New;
+  if (E.K == Edit::Kind::Rewire) {
+    New.K = Kind::NodeRef;
+    New.Ref = E.Value;
+  } else {
+    texcc::graph::DiagnosticSink Diags;
+    std::optional<texcc::graph::ArgValue> V =
+        texcc::graph::parseArgValue(E.Node + "." + E.Arg, E.Value, Diags);
+    if (!V) {
+      if (!json::accept(E.Value))
+        throw Error("edit '" + E.Text + "': value '" + E.Value + "' is not a number or array");
+      throw Error("edit '" + E.Text + "': " + firstError(Diags));
     }
-    json Value;
-    try {
-      Value = json::parse(E.Value);
-    } catch (const json::exception &) {
-      throw Error("edit '" + E.Text + "': value '" + E.Value + "' is not a number or array");
-    }
+    New = std::move(*V);
     // A baked constant ({"value": v, "bake": true}) is a literal of the shape code: it stays
     // baked, and changing it changes the shape.
-    bool Baked = WasWired && Args[E.Arg].value("bake", false);
-    if (Baked)
-      Args[E.Arg]["value"] = Value;
-    else
-      Args[E.Arg] = Value;
-    // A set to {"attr": ...} or {"node": ...} is a wiring too.
-    return WasWired || (Value.is_object() && (Value.contains("attr") || Value.contains("node")));
+    New.Bake |= Had && Slot->second.Bake;
   }
-  throw Error("edit '" + E.Text + "': unknown node '" + E.Node + "'");
+  if (Had) {
+    New.KeyLoc = Slot->second.KeyLoc;
+    Slot->second = std::move(New);
+  } else {
+    N->Args.emplace_back(E.Arg, std::move(New));
+  }
+  // A set to {"attr": ...} or {"node": ...} is a wiring too.
+  const texcc::graph::ArgValue &Now = Had ? Slot->second : N->Args.back().second;
+  return E.K == Edit::Kind::Rewire || WasWired || Now.K == Kind::NodeRef ||
+         Now.K == Kind::AttrRef;
 }
 
-json LiveEditor::absoluteGraph() const {
+texcc::graph::Graph LiveEditor::absoluteGraph() const {
   fs::path GraphDir = fs::path(Lay.GraphPath).parent_path();
-  json Doc = GraphDoc;
-  if (Doc.contains("sources"))
-    for (json &S : Doc["sources"])
-      S = (GraphDir / S.get<std::string>()).lexically_normal().string();
-  if (Doc.contains("images"))
-    for (auto &[K, V] : Doc["images"].items()) {
-      (void)K;
-      V = (GraphDir / V.get<std::string>()).lexically_normal().string();
-    }
-  return Doc;
+  texcc::graph::Graph G = Model;
+  for (std::string &S : G.Sources)
+    S = (GraphDir / S).lexically_normal().string();
+  for (auto &[Name, Path] : G.Images) {
+    (void)Name;
+    Path = (GraphDir / Path).lexically_normal().string();
+  }
+  return G;
 }
 
 TempFolder::TempFolder(std::string P) : Path(std::move(P)) { fs::create_directories(Path); }
@@ -299,7 +376,7 @@ LiveEditor::Regeneration LiveEditor::writeEditedGraph() {
   auto Folder = std::make_shared<const TempFolder>(Work.string());
   Regeneration R{Folder, (Work / fs::path(Lay.GraphPath).filename()).string(),
                  (Work / "out").string(), (Work / "texcc.log").string()};
-  std::ofstream(R.Graph) << absoluteGraph().dump(2);
+  std::ofstream(R.Graph) << graphJson(absoluteGraph()).dump(2);
   return R;
 }
 
@@ -321,10 +398,10 @@ void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   // resolving relative paths. The editor compiles the graph as it is now (edits made while a
   // background build ran included).
   std::string Original = Lay.GraphPath;
-  json Doc = absoluteGraph();
+  texcc::graph::Graph Absolute = absoluteGraph();
   Lay = New;
-  Lay.GraphPath = Files.Graph;
-  initEditor(Doc.dump());
+  Lay.GraphPath = Absolute.Path = Files.Graph;
+  initEditor(Absolute);
   Lay.GraphPath = Original;
   PreviousFolder = std::move(KernelFolder);
   KernelFolder = Files.Folder;
@@ -391,21 +468,12 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
     if (std::optional<EditProblem> Bad = check({E}))
       throw Error("edit '" + E.Text + "': " + Bad->Message);
   // A refused edit must not stay in the graph that later regenerations hand to texcc.
-  std::optional<json> Before;
-  for (const json &N : GraphDoc.value("nodes", json::array()))
-    if (N.value("id", "") == E.Node && N.contains("args") && N["args"].contains(E.Arg))
-      Before = N["args"][E.Arg];
+  texcc::graph::Graph Before = Model;
   EditAction P;
   try {
-    P = plan(E, applyToJson(E), R);
+    P = plan(E, applyToModel(E), R);
   } catch (const Error &) {
-    for (json &N : GraphDoc["nodes"])
-      if (N.value("id", "") == E.Node && N.contains("args")) {
-        if (Before)
-          N["args"][E.Arg] = *Before;
-        else
-          N["args"].erase(E.Arg);
-      }
+    Model = std::move(Before);
     throw;
   }
   switch (P) {

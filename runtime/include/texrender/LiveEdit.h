@@ -15,6 +15,8 @@
 #include "texrender/Layout.h"
 #include "texrender/Renderer.h"
 
+#include "texcc/Graph/Graph.h"
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +28,12 @@ class GraphEditor;
 }
 
 namespace texrender {
+
+/// The graph.json text of G (the graph library's model): keys in the model's order (texcc
+/// numbers the materials in the order graph.json lists them), numbers as parsed (an integer
+/// stays an integer, a double round-trips exactly), baked literals as {"value": v, "bake":
+/// true}. Parsing the result gives G again (locations aside).
+nlohmann::ordered_json graphJson(const texcc::graph::Graph &G);
 
 /// One edit, as written after --set or in an edit script.
 struct Edit {
@@ -100,19 +108,21 @@ private:
   void regenerateInBackground(Renderer &R);
   Regeneration writeEditedGraph();
   void adopt(const Layout &New, const Regeneration &Files);
-  nlohmann::ordered_json absoluteGraph() const;
-  void initEditor(const std::string &GraphText);
-  /// A graph editor over GraphText (a graph.json) with the kernel's signatures and tables.
-  std::unique_ptr<texcc::graph::GraphEditor> makeEditor(const std::string &GraphText) const;
-  /// Applies E to GraphDoc; true when it changes the wiring (a rewiring, a constant over a
-  /// node or attribute input, or a set to {"attr": ...} or {"node": ...}).
-  bool applyToJson(const Edit &E);
+  /// Model with the paths of its sources and images absolute (for a graph written elsewhere).
+  texcc::graph::Graph absoluteGraph() const;
+  void initEditor(const texcc::graph::Graph &G);
+  /// A graph editor over G with the kernel's signatures and tables.
+  std::unique_ptr<texcc::graph::GraphEditor> makeEditor(texcc::graph::Graph G) const;
+  /// Applies E to Model; true when it changes the wiring (a rewiring, a new value of a baked
+  /// argument or of a node, attribute or image input, or a set to {"attr": ...} or
+  /// {"node": ...}).
+  bool applyToModel(const Edit &E);
 
   Layout Lay;
   std::string TexccPath;
-  // graph.json with every edit so far (for regeneration), its keys in the user's order: texcc
-  // numbers the materials in the order graph.json lists them.
-  nlohmann::ordered_json GraphDoc;
+  // The graph with every edit so far (the graph library's model; a regeneration writes it
+  // with graphJson), the baked arguments of texcc's command line marked in it.
+  texcc::graph::Graph Model;
   std::unique_ptr<texcc::graph::GraphEditor> Editor;
   // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
   // edit that changes them needs a new shape kernel, one that keeps them is an upload.
