@@ -109,3 +109,38 @@ def stability(data):
             ax.tick_params(labelsize=7)
     axes[0][0].legend(fontsize=7)
     return _save(fig, "stability")
+
+
+PEER_STYLE = {"texrender-sobol": ("tab:blue", "o-", "texrender (Sobol-Owen)"),
+              "texrender-pcg": ("tab:gray", "s--", "texrender (PCG, before)"),
+              "cycles": ("tab:red", "^-", "Cycles")}
+
+
+def accuracy_peer(data):
+    """bench/accuracy.py --peer: error against each renderer's converged reference, by spp and
+    by frame time, per scene (rows) and metric (RMSE, HDR-FLIP)."""
+    scenes = list(data["scenes"])
+    fig, axes = plt.subplots(len(scenes), 3, figsize=(12, 3.4 * len(scenes)), squeeze=False)
+    for row, name in enumerate(scenes):
+        summary = data["scenes"][name]["summary"]
+        for col, (x, metric) in enumerate((("spp", "rmse"), ("seconds", "rmse"),
+                                           ("seconds", "flip"))):
+            ax = axes[row][col]
+            for r, (color, style, label) in PEER_STYLE.items():
+                pts = sorted((p for p in summary if p["renderer"] == r and p[metric]),
+                             key=lambda p: p[x])
+                pts = [p for p in pts if p[x] > 0]
+                if pts:
+                    ax.plot([p[x] for p in pts], [p[metric] for p in pts], style, color=color,
+                            label=label, markersize=3)
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("samples per pixel" if x == "spp" else "frame time (s)")
+            ax.set_ylabel(metric.upper() if metric == "rmse" else "HDR-FLIP")
+            ax.set_title("%s: %s by %s" % (name, metric.upper(), "spp" if x == "spp" else "time"),
+                         fontsize=8)
+            ax.tick_params(labelsize=7)
+            ax.legend(fontsize=7)
+    fig.suptitle("Error against a converged reference (%s spp, each renderer its own), %s"
+                 % (data["refSpp"], data["size"]), fontsize=9)
+    return _save(fig, "accuracy_peer")
