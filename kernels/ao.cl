@@ -15,16 +15,21 @@ static inline bool ao_wanted(RtHit h, __global const RtTriAttr *triAttrs, __glob
   return h.tri >= 0 && materials[meshes[triAttrs[h.tri].mesh].material].readsAo;
 }
 
-/* AO ray j of the path p's hit h: its origin and direction (cosine-weighted around the shading
- * normal, offset off the surface). */
-static inline void ao_ray(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
-                          __global const RtPath *p, RtHit h, int j, float eps, uint seed,
-                          float3 *o, float3 *dir) {
-  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
+/* AO ray j of the path p's hit h at surface s (rt_surface of h): its origin and direction
+ * (cosine-weighted around the shading normal, offset off the surface). */
+static inline void ao_ray_at(RtSurface s, __global const RtPath *p, int j, float eps, uint seed,
+                             float3 *o, float3 *dir) {
   uint rng = rt_seed(p->rng, (uint)j, seed ^ 0xA0A0A0A0u);
   float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
   *dir = rt_to_world(rt_sample_cosine(u1, u2), s.ns);
   *o = rt_offset(s, *dir, eps);
+}
+
+/* AO ray j of the path p's hit h: its origin and direction. */
+static inline void ao_ray(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
+                          __global const RtPath *p, RtHit h, int j, float eps, uint seed,
+                          float3 *o, float3 *dir) {
+  ao_ray_at(rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h), p, j, eps, seed, o, dir);
 }
 
 /* AO ray j of the path p's hit h: 1 if it hits something within aoDistance. */
@@ -39,27 +44,33 @@ static inline int ao_occluded(__global const RtBvh4Node *nodes, __global const R
 
 /* The AO rays of a host trace backend (Embree, runtime/lib/TraceEmbree.cpp): ray k = ray
  * k % aoSamples of hit k / aoSamples, exactly the ray ao_trace traces, as an RtShadowRay
- * (dir.w = aoDistance; contrib.w = 1 when the hit's material reads AO, else 0: not traced). */
+ * (dir.w = aoDistance; contrib.w = 1 when the hit's material reads AO, else 0: not traced).
+ * One work-item per hit (numActive of them): the surface is reconstructed once for the hit's
+ * aoSamples rays. */
 __kernel void ao_rays(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
                       __global const RtPath *paths, __global const int *active, int numActive,
                       __global const RtHit *hits, __global const RtMesh *meshes,
                       __global const RtMaterial *materials, int aoSamples, float aoDistance,
                       float eps, uint seed, __global RtShadowRay *rays) {
-  int k = get_global_id(0);
-  if (k >= numActive * aoSamples)
+  int i = get_global_id(0);
+  if (i >= numActive)
     return;
-  int i = k / aoSamples;
-  int j = k % aoSamples;
   RtHit h = hits[i];
+  __global RtShadowRay *out = rays + (size_t)i * (size_t)aoSamples;
   if (!ao_wanted(h, triAttrs, meshes, materials)) {
-    rays[k].contrib = (float4)(0.0f);
+    for (int j = 0; j < aoSamples; ++j)
+      out[j].contrib = (float4)(0.0f);
     return;
   }
-  float3 o, dir;
-  ao_ray(tris, triAttrs, &paths[active[i]], h, j, eps, seed, &o, &dir);
-  rays[k].origin = (float4)(o, 0.0f);
-  rays[k].dir = (float4)(dir, aoDistance);
-  rays[k].contrib = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+  __global const RtPath *p = &paths[active[i]];
+  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
+  for (int j = 0; j < aoSamples; ++j) {
+    float3 o, dir;
+    ao_ray_at(s, p, j, eps, seed, &o, &dir);
+    out[j].origin = (float4)(o, 0.0f);
+    out[j].dir = (float4)(dir, aoDistance);
+    out[j].contrib = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+  }
 }
 
 __kernel void ao_trace(__global const RtBvh4Node *nodes, __global const RtTri *tris,

@@ -213,7 +213,7 @@ public:
     AR.setArg(7, C.B.at("materials")), AR.setArg(8, cl_int(Prm.Samples));
     AR.setArg(9, cl_float(Prm.Distance)), AR.setArg(10, cl_float(Prm.Epsilon));
     AR.setArg(11, cl_uint(Prm.Seed)), AR.setArg(12, C.B.at("aoRays"));
-    C.Cl.launch(AR, N, "ao_rays");
+    C.Cl.launch(AR, size_t(Count), "ao_rays"); // one work-item per hit, Samples rays each
     C.Cl.finish();
     double T0 = seconds();
     {
