@@ -7,6 +7,7 @@ load average at each render. Writes bench/trace_backends.json and prints a Markd
 
 usage: bench/trace_backends.py [--build build] [--reps 1spp,16spp] [--size 512x512]
                                [--configs diffuse,rust] [--traces opencl,embree] [--before DIR]
+                               [--out bench/trace_backends.json]
 --before DIR: also render with an older build (DIR/bin/texrender, DIR/bin/texcc and
 DIR/kernels, e.g. a copy of build/ taken before a change) as trace "opencl-before"
 (--trace=opencl), interleaved with the others: the before/after of an OpenCL traversal change.
@@ -42,6 +43,7 @@ def main():
     ap.add_argument("--configs", default=",".join(CONFIGS))
     ap.add_argument("--traces", default=",".join(TRACES))
     ap.add_argument("--before", help="an older build (bin/, kernels/): adds opencl-before")
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "trace_backends.json"))
     args = ap.parse_args()
     reps = dict(zip([1, 16], map(int, args.reps.split(","))))
     configs = args.configs.split(",")
@@ -111,7 +113,7 @@ def main():
                                       for k in ("primary", "bounce", "shadow", "ao")},
                     "loadAverage": [round(r["loadAverage"], 1) for r in rs]})
     out = {"size": args.size, "maxDepth": 4, "cpus": os.cpu_count(), "summary": summary, "raw": raw}
-    with open(os.path.join(ROOT, "bench", "trace_backends.json"), "w") as f:
+    with open(args.out, "w") as f:
         json.dump(out, f, indent=2)
         f.write("\n")
     print("\n| config | spp | trace | frame s (median) | frames s | "
