@@ -7,7 +7,6 @@ header comment (docs/textures.md), where one is given.
 """
 import json
 import math
-import os
 import re
 import subprocess
 
