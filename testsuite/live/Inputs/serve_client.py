@@ -194,6 +194,26 @@ async def case_nan(s, http):
     await ws.close()
 
 
+async def case_refused_downstream(s, http):
+    """An edit that passes the server's checks but texrender refuses: the error reaches the
+    page that sent it, with its id, and the next edit goes through."""
+    ws, _ = await open_page(s, http)
+    other, _ = await open_page(s, http)
+    await ws.send_str(json.dumps({"type": "rewire", "id": 41, "node": "t", "arg": "color",
+                                  "source": "o"}))
+    err = await next_of(ws, "error")
+    print(f"error id={err['id']}: {err['message']}")
+    await ws.send_str(json.dumps({"type": "rewire", "id": 42, "node": "t", "arg": "color",
+                                  "source": "u"}))
+    applied = await next_of(ws, "applied")
+    print(f"applied id={applied['id']}: {applied['node']}.{applied['arg']} <- {applied['source']}")
+    seen = await next_of(other, "applied")
+    print(f"the other page: applied id={seen['id']} {seen['node']}.{seen['arg']} <- {seen['source']}")
+    print(f"lines that reached texrender: {[l.split(' ', 1)[1] for l in s.forwarded()]}")
+    await ws.close()
+    await other.close()
+
+
 async def burst(ws, first_id, n):
     for i in range(n):
         await ws.send_str(json.dumps({"type": "set", "id": first_id + i, "node": "t",

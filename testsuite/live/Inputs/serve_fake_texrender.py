@@ -2,7 +2,8 @@
 """A stand-in for `texrender ... --watch --control -o OUT` (docs/live.md, protocol B) for the
 browser preview's safety tests, which need no renderer: it announces the graph of
 --textures DIR/layout.json, accepts every control line (`ID set|rewire NODE.ARG=...`) with an
-"applied" event, and writes a tiny PNG frame every 50 ms.
+"applied" event (except a rewire onto node 'o', refused with an "error" event as texrender
+refuses a type mismatch), and writes a tiny PNG frame every 50 ms.
 
 Every control line it reads is appended to $SERVE_FAKE_LOG (the tests read what reached
 "texrender"); $SERVE_FAKE_DELAY_MS delays each answer (so that a burst finds an edit in flight).
@@ -52,10 +53,14 @@ def main():
             if log:
                 with open(log, "a") as f:
                     f.write(line)
-            sid = int(line.split(" ", 1)[0])
+            sid, edit = line.strip().split(" ", 1)
             time.sleep(delay)
-            emit({"event": "applied", "id": sid, "ms": 0.1, "builds": 0})
-            applied, spp = sid, 0
+            if edit.endswith("=o"):  # as texrender refuses an edit its own checks reject
+                emit({"event": "error", "id": int(sid),
+                      "message": f"edit '{edit}': node 'o' returns float, not float3"})
+                continue
+            emit({"event": "applied", "id": int(sid), "ms": 0.1, "builds": 0})
+            applied, spp = int(sid), 0
         spp += 1
         with open(out + ".tmp", "wb") as f:
             f.write(png(((applied or 0) % 256, spp % 256, 7)))
