@@ -44,9 +44,10 @@ static inline int ao_occluded(__global const RtBvh4Node *nodes, __global const R
 
 /* The AO rays of a host trace backend (Embree, runtime/lib/TraceEmbree.cpp): ray k = ray
  * k % aoSamples of hit k / aoSamples, exactly the ray ao_trace traces, as an RtShadowRay
- * (dir.w = aoDistance; contrib.w = 1 when the hit's material reads AO, else 0: not traced).
- * One work-item per hit (numActive of them): the surface is reconstructed once for the hit's
- * aoSamples rays. */
+ * (dir.w = aoDistance, contrib.w = 1). A hit whose material does not read AO writes only its
+ * first ray's contrib, with w = -aoSamples: the host skips its aoSamples rays (their slots
+ * hold stale rays; ao_reduce does not read their results). One work-item per hit (numActive
+ * of them): the surface is reconstructed once for the hit's aoSamples rays. */
 __kernel void ao_rays(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
                       __global const RtPath *paths, __global const int *active, int numActive,
                       __global const RtHit *hits, __global const RtMesh *meshes,
@@ -58,8 +59,7 @@ __kernel void ao_rays(__global const RtTri *tris, __global const RtTriAttr *triA
   RtHit h = hits[i];
   __global RtShadowRay *out = rays + (size_t)i * (size_t)aoSamples;
   if (!ao_wanted(h, triAttrs, meshes, materials)) {
-    for (int j = 0; j < aoSamples; ++j)
-      out[j].contrib = (float4)(0.0f);
+    out[0].contrib = (float4)(0.0f, 0.0f, 0.0f, -(float)aoSamples);
     return;
   }
   __global const RtPath *p = &paths[active[i]];

@@ -221,11 +221,14 @@ public:
       Mapped Occ(C.Cl, C.B.at("aoOccluded"), N, CL_MAP_WRITE_INVALIDATE_REGION);
       const RtShadowRay *R = Rays.as<RtShadowRay>();
       cl_uchar *O = Occ.as<cl_uchar>();
-      // All AO rays of all hits: one stream.
-      parallelChunks(N, Chunk, [&](size_t Begin, size_t End) {
+      // All AO rays of all hits: one stream, in chunks of whole hits. A hit without AO is one
+      // marked ray (contrib.w < 0), skipped with its run: its aoOccluded slots stay as they
+      // are, ao_reduce reads only the slots of hits with AO.
+      const size_t Run = size_t(Prm.Samples);
+      parallelChunks(N, std::max<size_t>(1, Chunk / Run) * Run, [&](size_t Begin, size_t End) {
         occludedStream(R, Begin, End, [&](size_t I, bool Blocked) {
-          O[I] = Blocked && R[I].contrib.s[3] > 0.0f ? 1 : 0; // 0 for hits without AO, as ao_trace
-        });
+          O[I] = Blocked && R[I].contrib.s[3] > 0.0f ? 1 : 0;
+        }, Run);
       });
     }
     C.Cl.finish();
@@ -234,9 +237,12 @@ public:
 
 private:
   /// Any-hit queries of the rays R[Begin, End) (RtShadowRay: dir.w = tmax; contrib.w <= 0:
-  /// not traced, reported as blocked); calls Done(I, Blocked) for each.
+  /// not traced, reported as blocked); calls Done(I, Blocked) for each. Run > 0 (AO rays,
+  /// Begin a multiple of Run): a ray with contrib.w < 0 starts a run of Run rays that are
+  /// skipped without a call (ao_rays writes only the first ray of a hit without AO).
   template <typename F>
-  void occludedStream(const RtShadowRay *R, size_t Begin, size_t End, F &&Done) const {
+  void occludedStream(const RtShadowRay *R, size_t Begin, size_t End, F &&Done,
+                      size_t Run = 0) const {
     RTCIntersectContext Ctx;
     rtcInitIntersectContext(&Ctx);
     RTCRay X[Stream];
@@ -245,6 +251,10 @@ private:
       size_t M = 0;
       for (; S < End && M < Stream; ++S) {
         const RtShadowRay &Y = R[S];
+        if (Run > 0 && Y.contrib.s[3] < 0.0f) {
+          S += Run - 1; // the loop's ++S ends the run
+          continue;
+        }
         if (Y.contrib.s[3] <= 0.0f) {
           Done(S, true);
           continue;

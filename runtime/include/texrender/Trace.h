@@ -58,8 +58,9 @@ public:
   /// Shadow ray i (shadowRays[i], valid when contrib.w > 0) adds contrib to
   /// paths[active[i]].radiance when nothing lies within its tmax (dir.w).
   virtual void shadow(const cl::Buffer &Active, int Count) = 0;
-  /// aoOccluded[i * Samples + j] = 1 when AO ray j of hit i is blocked within Distance (0 for
-  /// hits whose material does not read AO); ao_reduce averages them.
+  /// aoOccluded[i * Samples + j] = 1 when AO ray j of hit i is blocked within Distance, for
+  /// the hits whose material reads AO (the slots of the other hits are 0 with OpenCL and left
+  /// as they were with Embree: ao_reduce reads only the former); ao_reduce averages them.
   virtual void aoOccluded(const cl::Buffer &Active, int Count, const AoParams &P) = 0;
 };
 
