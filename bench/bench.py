@@ -17,6 +17,7 @@ import cycles
 import edit_session
 import edits
 import instructions
+import lookdev
 import per_hit
 import report
 import resources
@@ -30,7 +31,7 @@ FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
            ("per_hit", per_hit),
            ("resources", resources),
            ("value_stack", value_stack), ("accuracy", accuracy), ("ao", ao),
-           ("cycles", cycles), ("stability", stability)]
+           ("cycles", cycles), ("lookdev", lookdev), ("stability", stability)]
 
 
 def main():

@@ -131,6 +131,10 @@ std::string ms(double Seconds) { return std::to_string(int(Seconds * 1000 + 0.5)
 /// Milliseconds rounded to 0.01, for the control channel's events.
 double eventMs(double Seconds) { return std::round(Seconds * 1e5) / 100; }
 
+/// After a reduced first pass, full-resolution rendering starts once no change has come for
+/// this long (docs/live.md).
+constexpr double ReducedPause = 0.25;
+
 /// A line of standard input, as the control channel's thread read it.
 struct Command {
   std::string Text;
@@ -258,13 +262,25 @@ private:
   bool stopping() const { return O.Stop && O.Stop->load(); }
   bool jobDone() const { return Job && Job->Done.load(); }
   bool commandsPending() const { return Input && Input->pending(); }
-  /// Something to do besides rendering: a file change, texcc done, a command.
-  bool work() const { return !Changed.empty() || jobDone() || commandsPending(); }
+  /// Something to do besides rendering: a file change, texcc done, a command, a shape kernel
+  /// built in the background.
+  bool work() { return !Changed.empty() || jobDone() || commandsPending() || tierBuilt(); }
+  /// True once when the background build of a tier (shape mode, tier auto) has finished since
+  /// the last look: accumulation restarts so that the faster kernel takes over.
+  bool tierBuilt();
+  /// A change to apply: a saved file, texcc done, a command.
+  bool changePending() const { return !Changed.empty() || jobDone() || commandsPending(); }
+  /// Renders with all the samples (stopped early by work()), writing progress images.
+  void renderFrame();
+  /// The first image after a change: one sample per pixel at half the width and height,
+  /// upscaled (WatchOptions::ReducedFirstPass).
+  void reducedPass();
   bool afterPass(const PassProgress &P);
-  void idle();
+  /// Waits for work at most until the next poll of the files (and Until, if given).
+  void idle(double Until = 0);
   void poll();
   void watchFiles();
-  void writeProgress(const std::vector<float> &Image, int Spp);
+  void writeProgress(const std::vector<float> &Image, int Spp, bool Reduced = false);
   void applyChanges();
   /// Changed: the graph's source files that changed (empty: only the graph did).
   void applyGraph(const std::set<std::string> &Changed);
@@ -305,6 +321,10 @@ private:
   // refined frame is awaited was read (0: none).
   std::optional<long long> LastEdit;
   double EditAt = 0;
+  // Where an edit's latency goes (the frame event's "split"): its line read (EditAt), the
+  // render loop free to handle it, the edit applied, the pass that shows it started and done.
+  double HandledAt = 0, AppliedAt = 0, PassStart = 0, PassEnd = 0;
+  bool TierPending = false, TierSwitch = false;
   // Accumulations started (one per render()) and the last one written, with its samples: a
   // frame is written once.
   unsigned Accumulation = 0, WrittenAccumulation = 0;
@@ -343,9 +363,11 @@ void Session::poll() {
     Changed.insert(P);
 }
 
-/// Waits for work (at most until the next poll of the files), without rendering.
-void Session::idle() {
-  int Left = std::max(1, int((LastPoll + 0.1 - nowSeconds()) * 1000));
+void Session::idle(double Until) {
+  double End = LastPoll + 0.1;
+  if (Until > 0)
+    End = std::min(End, Until);
+  int Left = std::max(1, int((End - nowSeconds()) * 1000));
   if (Input)
     Input->waitFor(Left);
   else
@@ -354,11 +376,49 @@ void Session::idle() {
     poll();
 }
 
+bool Session::tierBuilt() {
+  bool Pending = R->backgroundBuildPending();
+  if (TierPending && !Pending)
+    TierSwitch = true;
+  TierPending = Pending;
+  return TierSwitch;
+}
+
+void Session::reducedPass() {
+  RenderSettings &S = R->settings();
+  if (S.RegionWidth != 0 || O.Width < 2 || O.Height < 2)
+    return;
+  const RenderSettings Saved = S;
+  const int W = (O.Width + 1) / 2, H = (O.Height + 1) / 2;
+  S.Width = W, S.Height = H, S.Spp = 1;
+  FrameStats F;
+  PassStart = nowSeconds();
+  std::vector<float> Small;
+  try {
+    Small = R->render(F);
+  } catch (...) {
+    S = Saved;
+    throw;
+  }
+  S = Saved;
+  PassEnd = nowSeconds();
+  if (stopping())
+    return;
+  // Each pixel of the reduced image covers 2x2 pixels of the image written.
+  std::vector<float> Image(size_t(O.Width) * O.Height * 3);
+  for (int Y = 0; Y < O.Height; ++Y)
+    for (int X = 0; X < O.Width; ++X)
+      for (int C = 0; C < 3; ++C)
+        Image[(size_t(Y) * O.Width + X) * 3 + C] = Small[(size_t(Y / 2) * W + X / 2) * 3 + C];
+  writeProgress(Image, 1, true);
+}
+
 /// Writes the image (atomically: writeImage renames a finished file into place) and, for the
 /// first image after a change, reports the change-to-refined-frame latency.
-void Session::writeProgress(const std::vector<float> &Image, int Spp) {
-  if (Accumulation == WrittenAccumulation && Spp == WrittenSpp)
+void Session::writeProgress(const std::vector<float> &Image, int Spp, bool Reduced) {
+  if (!Reduced && Accumulation == WrittenAccumulation && Spp == WrittenSpp)
     return;
+  double WriteStart = nowSeconds();
   writeImage(O.Output, O.Width, O.Height, Image);
   LastWrite = nowSeconds();
   WrittenAccumulation = Accumulation;
@@ -374,8 +434,20 @@ void Session::writeProgress(const std::vector<float> &Image, int Spp) {
                  {"latency_ms", nullptr}};
   if (LastEdit)
     E["edit"] = *LastEdit;
+  if (Reduced)
+    E["reduced"] = true;
   if (EditAt > 0) {
     E["latency_ms"] = eventMs(LastWrite - EditAt);
+    E["split"] = ordered_json{{"wait_ms", eventMs(HandledAt - EditAt)},
+                              {"apply_ms", eventMs(AppliedAt - HandledAt)},
+                              {"to_pass_ms", eventMs(PassStart - AppliedAt)},
+                              {"pass_ms", eventMs(PassEnd - PassStart)},
+                              {"write_ms", eventMs(LastWrite - WriteStart)}};
+    say("edit " + std::to_string(LastEdit ? *LastEdit : -1) + ": first frame " +
+        ms(LastWrite - EditAt) + " after its line was read: waited " + ms(HandledAt - EditAt) +
+        " for the pass in flight, applied in " + ms(AppliedAt - HandledAt) + ", " +
+        (Reduced ? "reduced pass " : "pass ") + ms(PassEnd - PassStart) + ", image written in " +
+        ms(LastWrite - WriteStart));
     EditAt = 0;
   }
   event(E);
@@ -383,6 +455,7 @@ void Session::writeProgress(const std::vector<float> &Image, int Spp) {
 
 bool Session::afterPass(const PassProgress &P) {
   double Now = nowSeconds();
+  PassEnd = Now;
   // The first image after a change is written at once; the others at most 4 times a second.
   if (Now - LastWrite >= 0.25 || ChangeAt > 0 || EditAt > 0)
     writeProgress(P.Image(), P.SamplesDone);
@@ -406,19 +479,9 @@ WatchResult Session::run() {
     Input = std::make_unique<ControlInput>();
   }
   while (!stopping() && !Ended) {
-    FrameStats F;
-    ++Accumulation;
-    std::vector<float> Image = R->render(F);
-    if (!F.Interrupted || stopping())
-      writeProgress(Image, F.SamplesDone);
-    if (!F.Interrupted) {
-      ++Frames;
-      say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
-          ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
-          "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
-      while (!stopping() && !work())
-        idle();
-    }
+    // A change that came during the reduced pass or the pause after it is handled first.
+    if (!changePending())
+      renderFrame();
     if (stopping())
       break;
     if (jobDone())
@@ -427,11 +490,41 @@ WatchResult Session::run() {
       applyChanges();
     if (commandsPending())
       handleCommands();
+    if (O.ReducedFirstPass && (EditAt > 0 || ChangeAt > 0) && !stopping() && !Ended) {
+      reducedPass();
+      // While edits keep coming (a slider dragged) the next one meets no full-resolution pass
+      // in flight: full resolution starts after a pause without changes.
+      double Until = nowSeconds() + ReducedPause;
+      while (!stopping() && !work() && nowSeconds() < Until)
+        idle(Until);
+    }
   }
   return {Frames, Ok};
 }
 
+void Session::renderFrame() {
+  FrameStats F;
+  ++Accumulation;
+  if (TierSwitch) {
+    TierSwitch = false;
+    say("the background build is done: accumulation restarts with its kernel");
+  }
+  PassStart = nowSeconds();
+  std::vector<float> Image = R->render(F);
+  if (!F.Interrupted || stopping())
+    writeProgress(Image, F.SamplesDone);
+  if (F.Interrupted)
+    return;
+  ++Frames;
+  say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
+      ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
+      "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
+  while (!stopping() && !work())
+    idle();
+}
+
 void Session::handleCommands() {
+  HandledAt = nowSeconds();
   LineRead End;
   unsigned EndLine;
   for (const Command &C : Input->take(End, EndLine)) {
@@ -502,6 +595,7 @@ void Session::handleCommand(const Command &C) {
   unsigned Built = R->cl().foregroundBuilds() - Builds;
   LastEdit = Id;
   EditAt = C.ReadAt;
+  AppliedAt = nowSeconds();
   say("applied '" + Ed.Text + "' (id " + std::to_string(*Id) + ") in " + ms(Took) + ", " +
       std::to_string(Built) + " kernel build(s)");
   event({{"event", "applied"}, {"id", *Id}, {"ms", eventMs(Took)}, {"builds", Built}});

@@ -84,7 +84,10 @@ const char *Usage =
     "                       NODE.ARG=VALUE', 'ID rewire NODE.ARG=SOURCE', 'quit'; a line\n"
     "                       longer than 64 KiB ends the session, exit 1), one JSON event a\n"
     "                       line on standard output (ready, applied, error, frame, reload)\n"
-    "  --serve[=PORT]       the browser preview (default port 8642): runs\n"
+    "  --first-pass=reduced|full  with --watch: the first image after a change has one\n"
+    "                       sample per pixel at half the width and height, upscaled\n"
+    "                       (reduced, the default), or at full resolution (full)\n"
+    "  --serve[=PORT]       the browser preview (default port 8642; 0: any free one): runs\n"
     "                       scripts/serve.sh with the scene and the other options\n"
     "  --listen ADDR        with --serve: the address to listen on (default 127.0.0.1)\n"
     "  --quiet              no progress bar\n"
@@ -106,7 +109,7 @@ struct Options {
   int Device = 0;
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
-  bool Watch = false, Control = false;
+  bool Watch = false, Control = false, ReducedFirstPass = true;
   // --serve[=PORT] / --listen ADDR: Serve is set; Forward: every other argument, as given.
   bool Serve = false;
   int ServePort = 8642;
@@ -251,14 +254,20 @@ Options parseArgs(int Argc, char **Argv) {
       O.Watch = true;
     } else if (A == "--control") {
       O.Control = true;
+    } else if (A == "--first-pass") {
+      std::string M = Next();
+      if (M != "reduced" && M != "full")
+        throw Error("--first-pass: expected reduced or full, got '" + M + "'");
+      O.ReducedFirstPass = M == "reduced";
     } else if (A == "--serve") {
       O.Serve = true;
       // --serve=PORT, or --serve PORT when the next argument is a number.
       if (HasInline || (I + 1 < Argc && *Argv[I + 1] &&
                         std::string(Argv[I + 1]).find_first_not_of("0123456789") == std::string::npos))
         O.ServePort = toInt(A, Next());
-      if (O.ServePort < 1 || O.ServePort > 65535)
-        throw Error("--serve: expected a port from 1 to 65535, got " + std::to_string(O.ServePort));
+      if (O.ServePort < 0 || O.ServePort > 65535)
+        throw Error("--serve: expected a port from 0 (any free port) to 65535, got " +
+                    std::to_string(O.ServePort));
       continue;
     } else if (A == "--listen") {
       O.Listen = Next();
@@ -724,6 +733,7 @@ int run(int Argc, char **Argv) try {
     W.Renderer.MaxPathsPerPass = size_t(OutW) * size_t(OutH);
     W.Stop = &StopSignal;
     W.Control = O.Control;
+    W.ReducedFirstPass = O.ReducedFirstPass;
     WatchResult Res = runWatch(std::move(W), L);
     int Sig = StopSignal.load();
     return Sig ? 128 + Sig : Res.Ok ? 0 : 1;

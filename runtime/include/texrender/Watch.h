@@ -74,6 +74,10 @@ struct WatchOptions {
   /// standard output (docs/live.md, "Control channel"); the session also ends at the end of
   /// standard input.
   bool Control = false;
+  /// The first image after a change is one sample per pixel at half the width and height
+  /// (a quarter of the pixels), each pixel drawn 2x2, as viewports do; then accumulation
+  /// restarts at full resolution (the refined image equals a batch render bit for bit).
+  bool ReducedFirstPass = true;
 };
 
 struct WatchResult {

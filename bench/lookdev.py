@@ -1,0 +1,352 @@
+"""Figure: live look-development on the atrium with rust at a 256x256 preview (issue 23).
+
+A scripted session plays a user at the browser preview: 50 slider moves (five float arguments of
+the rust graph, ten values each) and 5 rewirings (mask.noise onto another float node), one at a
+time: the edit is sent, its first frame awaited, then its first full-resolution frame, then a
+pause of THINK seconds (the renderer keeps refining meanwhile, so the next edit usually meets a
+pass in flight). Measured per edit at the client: the time from sending the message to receiving
+the first frame that contains the edit ("first frame"; with texrender's default
+--first-pass=reduced that frame has a quarter of the pixels) and to the first frame at full
+resolution. Kernel builds: texrender's count (foreground and background) before the first edit
+and after the last; they must not change. The session runs once per first-pass configuration
+(reduced, full), interleaved.
+
+Transport: through the WebSocket of the browser preview (texrender --serve, scripts/serve.py;
+the page's own messages) when aiohttp is importable, else through `texrender --watch --control`
+directly; the result says which.
+
+A source edit: in a copy of rust.cl a constant is changed and saved while the preview is idle
+(shape mode, --tier=auto, the shape kernel already running). Measured from the save: the first
+frame rendered with the new code (texcc in the background, then the interp fallback kernel, built
+unless PoCL and texrender's program cache have it: the changed constant makes it new) and the
+first frame of the new shape kernel (built on the background thread).
+
+usage: bench/lookdev.py [--quick] [--transport ws|control] [--build DIR] [--out FILE]
+"""
+import argparse
+import asyncio
+import json
+import os
+import queue
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+import common
+
+SCENE = os.path.join(common.ROOT, "examples", "atrium", "scene.json")
+RUST = os.path.join(common.ROOT, "examples", "rust")
+SIZE = "256x256"
+SPP = 16
+THINK = 0.1
+SLIDERS = [("patches", "scale", [2.0, 2.2, 2.4, 2.6, 2.8, 3.0, 2.7, 2.5, 2.3, 2.1]),
+           ("grain", "scale", [10.0, 11.0, 12.0, 13.0, 14.0, 15.0, 16.0, 17.0, 18.0, 14.0]),
+           ("tone", "t", [0.30, 0.35, 0.40, 0.45, 0.50, 0.55, 0.60, 0.50, 0.45, 0.40]),
+           ("mask", "threshold", [0.30, 0.32, 0.34, 0.36, 0.38, 0.40, 0.42, 0.40, 0.38, 0.36]),
+           ("mask", "softness", [0.04, 0.06, 0.08, 0.10, 0.12, 0.10, 0.08, 0.06, 0.05, 0.08])]
+REWIRES = [("mask", "noise", s) for s in ("tone", "grain", "patches", "tone", "patches01")]
+TIMEOUT = 120
+
+
+def script():
+    """The 55 edits: ten slider moves (two per slider, round robin), then a rewiring; five
+    times. Each: (kind, node, arg, value or source)."""
+    moves = [("set", n, a, vals[i]) for i in range(10) for n, a, vals in SLIDERS]
+    out = []
+    for k in range(5):
+        out += moves[10 * k:10 * k + 10]
+        out.append(("rewire",) + REWIRES[k])
+    return out
+
+
+def prepare(tools, work):
+    """A copy of the rust example (rust.cl copied, so that the source edit changes the copy
+    only; the shared textures by absolute path) and its interp and shape folders."""
+    folder = os.path.join(work, "rust")
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(RUST, "graph.json")) as f:
+        graph = json.load(f)
+    graph["sources"] = [s if s == "rust.cl" else os.path.normpath(os.path.join(RUST, s))
+                        for s in graph["sources"]]
+    shutil.copy(os.path.join(RUST, "rust.cl"), os.path.join(folder, "rust.cl"))
+    path = os.path.join(folder, "graph.json")
+    with open(path, "w") as f:
+        json.dump(graph, f, indent=1)
+    out = {}
+    for mode in ("interp", "shape"):
+        out[mode] = os.path.join(work, "tex-" + mode)
+        common.texcc(tools, path, out[mode], mode)
+    return folder, out
+
+
+class Control:
+    """texrender --watch --control: edit lines on its stdin, events from its stdout."""
+    name = "control"
+
+    def __init__(self, tools, textures, extra, work):
+        self.events = queue.Queue()
+        self.log = open(os.path.join(work, "texrender-%d.log" % time.monotonic_ns()), "w")
+        cmd = [tools.texrender, SCENE, "--textures", textures, "--size", SIZE, "--spp", str(SPP),
+               "--device", tools.device, "--cache-dir", tools.cache, "--watch", "--control",
+               "-o", os.path.join(work, "frame.png")] + extra
+        self.proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                     stderr=self.log, text=True, bufsize=1)
+        threading.Thread(target=self.pump, daemon=True).start()
+
+    def pump(self):
+        for line in self.proc.stdout:
+            e = json.loads(line)
+            e["t"] = time.perf_counter()
+            self.events.put(e)
+        self.events.put(None)
+
+    def send(self, eid, kind, node, arg, value):
+        text = "%s %s.%s=%s" % (kind, node, arg, value if kind == "rewire" else json.dumps(value))
+        self.proc.stdin.write("%d %s\n" % (eid, text))
+        self.proc.stdin.flush()
+
+    def close(self):
+        try:
+            self.proc.stdin.write("quit\n")
+            self.proc.stdin.close()
+        except OSError:
+            pass
+        self.proc.wait(timeout=60)
+        self.log.close()
+
+
+class WebSocket:
+    """The browser preview: texrender --serve (scripts/serve.py), driven over /ws as the page
+    drives it. Events are the page's messages, named as texrender's (hello -> ready)."""
+    name = "ws"
+
+    def __init__(self, tools, textures, extra, work):
+        self.events = queue.Queue()
+        self.log_path = os.path.join(work, "serve-%d.log" % time.monotonic_ns())
+        self.log = open(self.log_path, "w")
+        cmd = [tools.texrender, "--serve=0", SCENE, "--textures", textures, "--size", SIZE,
+               "--spp", str(SPP), "--device", tools.device, "--cache-dir", tools.cache] + extra
+        self.proc = subprocess.Popen(cmd, stdout=self.log, stderr=subprocess.PIPE, text=True,
+                                     start_new_session=True)
+        self.port = None
+        for line in self.proc.stderr:
+            self.log.write(line)
+            m = re.search(r"preview at http://[^:]+:(\d+)/", line)
+            if m:
+                self.port = int(m.group(1))
+                break
+        if self.port is None:
+            raise common.BenchError("texrender --serve did not start (see %s)" % self.log_path)
+        threading.Thread(target=self.copy_log, daemon=True).start()
+        self.loop = asyncio.new_event_loop()
+        self.ready = threading.Event()
+        threading.Thread(target=self.loop.run_until_complete, args=(self.run(),),
+                         daemon=True).start()
+        if not self.ready.wait(TIMEOUT):
+            raise common.BenchError("could not open the preview's WebSocket")
+
+    def copy_log(self):
+        for line in self.proc.stderr:
+            self.log.write(line)
+
+    async def run(self):
+        import aiohttp
+        url = "http://127.0.0.1:%d" % self.port
+        async with aiohttp.ClientSession() as session:
+            async with session.ws_connect(url + "/ws", headers={"Origin": url},
+                                          max_msg_size=0) as ws:
+                self.ws = ws
+                self.ready.set()
+                async for msg in ws:
+                    if msg.type != aiohttp.WSMsgType.TEXT:
+                        continue  # the PNG after a frame message
+                    e = json.loads(msg.data)
+                    e["t"] = time.perf_counter()
+                    e["event"] = {"hello": "ready"}.get(e.get("type"), e.get("type"))
+                    self.events.put(e)
+        self.events.put(None)
+
+    def send(self, eid, kind, node, arg, value):
+        msg = {"type": kind, "id": eid, "node": node, "arg": arg}
+        msg["source" if kind == "rewire" else "value"] = value
+        asyncio.run_coroutine_threadsafe(self.ws.send_str(json.dumps(msg)), self.loop).result()
+
+    def close(self):
+        os.killpg(self.proc.pid, signal.SIGTERM)
+        self.proc.wait(timeout=60)
+        self.log.close()
+
+
+def next_event(ch, pred, what):
+    deadline = time.perf_counter() + TIMEOUT
+    while True:
+        try:
+            e = ch.events.get(timeout=max(0.1, deadline - time.perf_counter()))
+        except queue.Empty:
+            raise common.BenchError("%s: timed out waiting for %s" % (ch.name, what))
+        if e is None:
+            raise common.BenchError("%s: the session ended before %s" % (ch.name, what))
+        if e.get("event") == "error" and e.get("id") is not None:
+            raise common.BenchError("%s: edit %s refused: %s" % (ch.name, e["id"], e["message"]))
+        if pred(e):
+            return e
+
+
+def is_frame(e, spp=None, tier=None):
+    return e.get("event") == "frame" and (spp is None or e.get("spp") == spp) and \
+        (tier is None or e.get("tier") == tier)
+
+
+def percentile(values, p):
+    v = sorted(values)
+    k = (len(v) - 1) * p / 100.0
+    lo = int(k)
+    hi = min(lo + 1, len(v) - 1)
+    return v[lo] + (v[hi] - v[lo]) * (k - lo)
+
+
+def summary(ms):
+    return {"p50": percentile(ms, 50), "p95": percentile(ms, 95), "min": min(ms),
+            "max": max(ms), "n": len(ms)}
+
+
+def edit_session(transport, tools, textures, first_pass, work):
+    ch = transport(tools, textures, ["--first-pass=" + first_pass], work)
+    try:
+        next_event(ch, lambda e: e.get("event") == "ready", "ready")
+        builds0 = next_event(ch, lambda e: is_frame(e, SPP), "the first complete frame")["builds"]
+        rows = []
+        for eid, (kind, node, arg, value) in enumerate(script(), 1):
+            t0 = time.perf_counter()
+            ch.send(eid, kind, node, arg, value)
+            first = next_event(ch, lambda e: is_frame(e) and e.get("edit") == eid,
+                               "the first frame of edit %d" % eid)
+            full = first
+            if first.get("reduced") or (ch.name == "ws" and first_pass == "reduced"):
+                full = next_event(ch, lambda e: is_frame(e) and e.get("edit") == eid,
+                                  "the full-resolution frame of edit %d" % eid)
+            rows.append({"edit": "%s %s.%s=%s" % (kind, node, arg, value),
+                         "firstFrameMs": (first["t"] - t0) * 1000,
+                         "fullFrameMs": (full["t"] - t0) * 1000,
+                         "texrenderLatencyMs": first.get("latency_ms"),
+                         "split": first.get("split"), "tier": first.get("tier")})
+            time.sleep(THINK)
+        builds1 = next_event(ch, lambda e: is_frame(e, SPP), "the last complete frame")["builds"]
+    finally:
+        ch.close()
+    moves = [r for r in rows if r["edit"].startswith("set")]
+    rewires = [r for r in rows if r["edit"].startswith("rewire")]
+    return {"firstPass": first_pass, "transport": ch.name, "kernelBuilds": builds1 - builds0,
+            "firstFrameMs": summary([r["firstFrameMs"] for r in rows]),
+            "fullFrameMs": summary([r["fullFrameMs"] for r in rows]),
+            "sliderFirstFrameMs": summary([r["firstFrameMs"] for r in moves]),
+            "rewireFirstFrameMs": summary([r["firstFrameMs"] for r in rewires]),
+            "edits": rows}
+
+
+def source_edit(transport, tools, textures, folder, work):
+    """Saves a copy of rust.cl with one constant changed while the preview is idle."""
+    path = os.path.join(folder, "rust.cl")
+    with open(path) as f:
+        original = f.read()
+    ch = transport(tools, textures, [], work)
+    try:
+        next_event(ch, lambda e: e.get("event") == "ready", "ready")
+        next_event(ch, lambda e: is_frame(e, SPP, "shape"), "a complete frame of the shape tier")
+        time.sleep(0.3)
+        while not ch.events.empty():
+            ch.events.get()
+        edited = change_constant(original)
+        t0 = time.perf_counter()
+        with open(path, "r+") as f:  # in place, as an editor saving
+            f.write(edited)
+            f.truncate()
+        first = next_event(ch, is_frame, "the first frame with the new code")
+        shape = first if first.get("tier") == "shape" else \
+            next_event(ch, lambda e: is_frame(e, tier="shape"), "the new shape kernel's frame")
+    finally:
+        ch.close()
+        with open(path, "w") as f:
+            f.write(original)
+    return {"firstFrameMs": (first["t"] - t0) * 1000, "firstFrameTier": first.get("tier"),
+            "shapeFrameMs": (shape["t"] - t0) * 1000}
+
+
+def change_constant(text):
+    """rust.cl with its first floating-point literal in a function body nudged (a new kernel
+    source: the program caches do not have it)."""
+    body = text.index("{")
+    m = re.compile(r"(?<![\w.])(\d+\.\d+)f?").search(text, body)
+    if not m:
+        raise common.BenchError("rust.cl: no floating-point constant to change")
+    value = float(m.group(1)) * 1.0001 + 1e-4
+    return text[:m.start(1)] + repr(value) + text[m.end(1):]
+
+
+def pick_transport(name):
+    if name == "control":
+        return Control
+    try:
+        import aiohttp  # noqa: F401
+    except ImportError:
+        if name == "ws":
+            raise common.BenchError("aiohttp missing: scripts/serve.sh --install")
+        return Control
+    return WebSocket
+
+
+def uptime():
+    return subprocess.run(["uptime"], stdout=subprocess.PIPE, text=True).stdout.strip()
+
+
+def measure(tools, quick, transport_name="auto"):
+    transport = pick_transport(transport_name)
+    work = tempfile.mkdtemp(prefix="lookdev-", dir=tools.work)
+    folder, textures = prepare(tools, work)
+    reps = 1 if quick else 2
+    out = {"transport": transport.name, "size": SIZE, "spp": SPP, "thinkSeconds": THINK,
+           "uptimeBefore": uptime(), "sessions": [], "sourceEdits": []}
+    # Warm the program cache with the kernels of both folders (not part of any figure).
+    for mode in ("interp", "shape"):
+        common.texrender(tools, SCENE, textures[mode], "lookdev-warm-" + mode,
+                         ["--size", SIZE, "--spp", "1"])
+    for _ in range(reps):
+        for first_pass in ("reduced", "full"):
+            out["sessions"].append(edit_session(transport, tools, textures["interp"],
+                                                first_pass, work))
+            common.log("lookdev: %s first pass: p50 %.0f ms, p95 %.0f ms, %d build(s)" % (
+                first_pass, out["sessions"][-1]["firstFrameMs"]["p50"],
+                out["sessions"][-1]["firstFrameMs"]["p95"], out["sessions"][-1]["kernelBuilds"]))
+        out["sourceEdits"].append(source_edit(transport, tools, textures["shape"], folder, work))
+    out["uptimeAfter"] = uptime()
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--transport", choices=("auto", "ws", "control"), default="auto")
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--device", default="0")
+    ap.add_argument("--out", help="result file (default bench/results/lookdev.json)")
+    args = ap.parse_args()
+    tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-bench-"),
+                         args.device)
+    data = measure(tools, args.quick, args.transport)
+    data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    data["git"] = common.git_head()
+    data["command"] = "bench/lookdev.py " + " ".join(sys.argv[1:])
+    common.save("lookdev", data, args.out)
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except common.BenchError as e:
+        sys.stderr.write("lookdev: error: %s\n" % e)
+        sys.exit(1)
