@@ -186,7 +186,7 @@ static inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->sett
 #if TEXCC_POSITION_OFFSET
 /* Bump (docs/graph.md "Bump"). The step of the moved evaluations: TEXCC_BUMP_ANGLE radians
  * seen from the camera (texrender has no ray differentials; 2.8e-4 is 0.1 pixel of a
- * 256-pixel-wide 40-degree view, Cycles' default Filter Width of 0.1 pixel), at least 1e-5 of
+ * 256-pixel-wide 40-degree view, Cycles' default Filter Width of 0.1 pixel), at least 1e-4 of
  * the position's magnitude (float resolution). */
 #ifndef TEXCC_BUMP_ANGLE
 #define TEXCC_BUMP_ANGLE 2.8e-4f
@@ -195,7 +195,7 @@ static inline float texcc_bump_step(const TexccCtx *c) {
   const float3 p = c->hit.worldPos.xyz;
   const float3 a = fabs(p);
   return fmax(TEXCC_BUMP_ANGLE * length(p - c->settings->cameraPos.xyz),
-              1e-5f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
+              1e-4f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
 }
 /* The unit tangent of the moved evaluations: Tangent made orthogonal to Normal (any
  * orthogonal vector if they are parallel); the bitangent is cross(Normal, tangent). */

@@ -479,7 +479,7 @@ inline float texcc_bump_step(const TexccCtx *c) {
   const float3 p = texcc_f3(c->hit.worldPos);
   const float3 a = fabs(p);
   return fmax(TEXCC_BUMP_ANGLE * length(p - texcc_f3(c->settings->cameraPos)),
-              1e-5f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
+              1e-4f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
 }
 inline float3 texcc_bump_tangent(const TexccCtx *c) {
   const float3 n = texcc_f3(c->hit.normal), t0 = texcc_f3(c->hit.tangent);
