@@ -63,30 +63,42 @@ static inline int rt_pick_light(__global const float *cdf, int n, float u) {
 }
 
 /* Radiance arriving from the environment (sky and sun) along d, MIS-weighted against the pdf
- * with which next-event estimation would have chosen d. */
+ * with which next-event estimation would have chosen d: the sun's from its cone, the sky's
+ * (cosine-weighted about the previous vertex's shading normal) kept in skyPdf. */
 static inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, float3 d,
-                             float bsdfPdf, int specular, int length) {
+                             float bsdfPdf, float skyPdf, int specular, int length) {
   float3 le = (float3)(0.0f);
   if (prm.skyLight >= 0) {
     RtLight l = lights[prm.skyLight];
-    float lp = l.select / (4.0f * RT_PI);
-    le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp)) * RT_KEEP(RT_SPLIT_SKY, length);
+    le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, skyPdf)) *
+          RT_KEEP(RT_SPLIT_SKY, length);
   }
   if (prm.sunLight >= 0) {
     RtLight l = lights[prm.sunLight];
     if (dot(d, l.dir.xyz) >= l.dir.w) {
       float lp = l.select / (2.0f * RT_PI * (1.0f - l.dir.w));
-      le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp)) * RT_KEEP(RT_SPLIT_SUN, length);
+      le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, lp)) *
+            RT_KEEP(RT_SPLIT_SUN, length);
     }
   }
   return le;
 }
 
-/* Samples a light from the surface point (u.z chooses the light, u.xy the point on it); returns the direction, the distance limit, the
- * emitted radiance and the solid-angle pdf (0: no contribution). */
+/* The pdf with which next-event estimation picks direction wi for the sky at a vertex of
+ * shading normal n: the sky's selection probability times the cosine-weighted density. */
+static inline float rt_sky_pdf(__global const RtLight *lights, RtShadeParams prm, float3 n,
+                               float3 wi) {
+  return prm.skyLight >= 0 ? lights[prm.skyLight].select * fmax(dot(wi, n), 0.0f) * RT_INV_PI
+                           : 0.0f;
+}
+
+/* Samples a light from the surface point p of shading normal n (u.z chooses the light, u.xy
+ * the point on it; the sky is sampled cosine-weighted about n, as its radiance is constant);
+ * returns the direction, the distance limit, the emitted radiance and the solid-angle pdf
+ * (0: no contribution). */
 static inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
                              __global const RtTri *tris, RtShadeParams prm, float3 p,
-                             float3 u, float3 *wi, float *tmax, float3 *le, int *type) {
+                             float3 n, float3 u, float3 *wi, float *tmax, float3 *le, int *type) {
   int li = rt_pick_light(cdf, prm.numLights, u.z);
   RtLight l = lights[li];
   *type = l.type;
@@ -112,8 +124,8 @@ static inline float rt_sample_light(__global const RtLight *lights, __global con
     *wi = rt_to_world(rt_sample_cone(u1, u2, l.dir.w), l.dir.xyz);
     return l.select / (2.0f * RT_PI * (1.0f - l.dir.w));
   }
-  *wi = rt_sample_sphere(u1, u2);
-  return l.select / (4.0f * RT_PI);
+  *wi = rt_to_world(rt_sample_cosine(u1, u2), n);
+  return l.select * fmax(dot(*wi, n), 0.0f) * RT_INV_PI;
 }
 
 __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
@@ -138,7 +150,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   p.flags &= ~RT_PATH_ALIVE;
 
   if (h.tri < 0) {
-    p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, specular, p.depth);
+    p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, p.radiance.w, specular, p.depth);
     paths[pid] = p;
     return;
   }
@@ -160,6 +172,10 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   uint rng = p.rng;
   int base = i * maxOutputs;
   int node = materials[mesh.material].root;
+  uint sample = as_uint(p.origin.w), key = as_uint(p.throughput.w);
+  /* One sampler number for the whole tree: each blend's choice rescales it into [0, 1) for
+   * the next, so the choices stay stratified. */
+  float ub = 0.0f;
   for (int guard = 0; guard < 32 && bsdfs[node].type == RT_BSDF_BLEND; ++guard) {
     float m = rt_input(bsdfs[node].in[0], outputs, base).x;
     if (!isfinite(m)) {
@@ -167,7 +183,19 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       return;
     }
     m = clamp(m, 0.0f, 1.0f);
-    node = rt_rand(&rng) < m ? bsdfs[node].b : bsdfs[node].a;
+#ifdef RT_SAMPLER_PCG
+    ub = rt_rand(&rng);
+#else
+    if (guard == 0)
+      ub = rt_sobol1d(sample, rt_pattern_seed(key, RT_PATTERN_BLEND(p.depth)));
+#endif
+    if (ub < m) {
+      node = bsdfs[node].b;
+      ub = fmin(ub / m, 0x1.fffffep-1f);
+    } else {
+      node = bsdfs[node].a;
+      ub = fmin((ub - m) / (1.0f - m), 0x1.fffffep-1f);
+    }
   }
   RtBsdfNode leaf = bsdfs[node];
   float3 color = rt_input(leaf.in[RT_IN_COLOR], outputs, base).xyz;
@@ -220,7 +248,6 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     }
   }
   float3 wo = -d;
-  uint sample = as_uint(p.origin.w), key = as_uint(p.throughput.w);
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
 
   /* Next-event estimation. */
@@ -231,7 +258,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float choice = RT_SAMPLE1(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT_CHOICE(p.depth)));
     float2 lu = RT_SAMPLE2(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT(p.depth)));
     float3 u = (float3)(lu, choice);
-    float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, u, &wi, &tmax, &le, &type);
+    float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, s.ns, u, &wi, &tmax, &le, &type);
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
       float3 f = leaf.type == RT_BSDF_PRINCIPLED
@@ -292,6 +319,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
         p.origin = (float4)(rt_offset(s, wi, prm.epsilon), as_float(sample));
         p.dir = (float4)(wi, delta ? -1.0f : pdf);
         p.throughput = (float4)(thr, as_float(key));
+        p.radiance.w = delta ? 0.0f : rt_sky_pdf(lights, prm, s.ns, wi);
         p.flags = RT_PATH_ALIVE | (delta ? RT_PATH_SPECULAR : 0);
         p.depth += 1;
       }

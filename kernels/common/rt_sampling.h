@@ -114,11 +114,13 @@ static inline uint rt_pixel_key(uint pixel, uint seed) {
 }
 
 /* Patterns of a path: the camera's pixel position; at each vertex (depth = segments traced so
- * far) the light choice, the point on the light and the BSDF sample. */
+ * far) the light choice, the point on the light, the BSDF sample and the choice of a leaf in
+ * the material's blend tree. */
 #define RT_PATTERN_CAMERA 0u
 #define RT_PATTERN_LIGHT_CHOICE(depth) (4u * (uint)(depth) + 1u)
 #define RT_PATTERN_LIGHT(depth) (4u * (uint)(depth) + 2u)
 #define RT_PATTERN_BSDF(depth) (4u * (uint)(depth) + 3u)
+#define RT_PATTERN_BLEND(depth) (4u * (uint)(depth) + 4u)
 
 /* Builds tangents t, b so that (t, b, n) is orthonormal (Duff et al. 2017). */
 static inline void rt_frame(float3 n, float3 *t, float3 *b) {
