@@ -180,7 +180,7 @@ def source_steps(page, spp, work, before):
     path = os.path.join(work, "rust.cl")
     with open(path) as f:
         good = f.read()
-    hellos = page.state()["hellos"]
+    hellos, saved_at = page.state()["hellos"], page.state()["frames"]
     with open(path, "w") as f:
         f.write(good.replace("return smoothstep(threshold - s, threshold + s, c);",
                              "return smoothstep(threshold - s, threshold + s, c)"))
@@ -188,8 +188,9 @@ def source_steps(page, spp, work, before):
                                                            page.text("errors")), timeout=60)
     error = next(l for l in page.text("errors").splitlines() if re.search(r"rust\.cl:\d+:\d+:", l))
     print("syntax error shown: " + error[error.rindex("/") + 1:])
-    frames = page.state()["frames"]
-    page.wait("a complete frame after the error", complete(spp, after_frames=frames), timeout=60)
+    # The save restarted accumulation with the old kernel; the frames since (before or after the
+    # error, depending on how fast texcc fails) must show the old texture.
+    page.wait("a complete frame since the save", complete(spp, after_frames=saved_at), timeout=60)
     print(f"after the error: frames keep coming, the old texture: {page.png() == before}")
     with open(path, "w") as f:
         f.write(good.replace("return smoothstep(threshold - s, threshold + s, c);",
