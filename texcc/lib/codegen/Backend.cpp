@@ -5,9 +5,34 @@
 #include "texcc/Codegen/Backend.h"
 
 #include "Emit.h"
+#include "texcc/Kernel/Attributes.h"
 
 namespace texcc::codegen {
 namespace {
+
+/// The attributes the interpreter's decoder (texcc_interp_attr) has a case for: those the
+/// nodes' arguments read, of dead nodes too, and the graph's attribute arguments.
+std::vector<std::string> decodedAttributes(const graph::CompiledGraph &CG) {
+  std::set<int> Ids(CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());
+  for (const graph::CompiledNode &N : CG.Nodes)
+    for (const graph::CompiledArg &A : N.Args)
+      if (A.Src == graph::CompiledArg::Source::Attribute)
+        Ids.insert(A.AttrId);
+  std::vector<std::string> Names;
+  for (int Id : Ids)
+    Names.push_back(kernel::attributeName(static_cast<unsigned>(Id)));
+  return Names;
+}
+
+/// An interpreter's capabilities (interp, and shape's fallback): values re-encoded in args.bin,
+/// a value stack of CG.StackSlots, the decoder's attributes.
+kernel::Capabilities interpreterCapabilities(const graph::CompiledGraph &CG) {
+  kernel::Capabilities C;
+  C.ReEncodes = true;
+  C.ValueStackSlots = CG.StackSlots;
+  C.DecodedAttributes = decodedAttributes(CG);
+  return C;
+}
 
 class InterpBackend final : public Backend {
 public:
@@ -20,6 +45,14 @@ public:
     C.InterpHoists = !O.NoHoist;
   }
   bool interprets() const override { return true; }
+  /// The wiring is data (the program in args.bin) and the value stack's depth a -D.
+  kernel::Capabilities capabilities(const graph::CompiledGraph &CG,
+                                    const CodegenOptions &) const override {
+    kernel::Capabilities C = interpreterCapabilities(CG);
+    C.WiringIsData = true;
+    C.StackHeadroom = true;
+    return C;
+  }
   const char *summary() const override {
     return "the interpreter: kernel texcc_proctex runs the material's program from fakeStack,\n"
            " *      one switch case per texture function (and per quickened opcode)";
@@ -46,6 +79,13 @@ public:
 class WavefrontBackend final : public Backend {
 public:
   const char *name() const override { return "wavefront"; }
+  /// Values in args.bin; the node kernels and their launches are code.
+  kernel::Capabilities capabilities(const graph::CompiledGraph &,
+                                    const CodegenOptions &) const override {
+    kernel::Capabilities C;
+    C.ReEncodes = true;
+    return C;
+  }
   const char *summary() const override {
     return "one kernel texcc_wf_<node> per live node (launch order: layout.json kernel.launches),\n"
            " *      then texcc_wf_outputs";
@@ -63,6 +103,14 @@ public:
   const char *name() const override { return "shape"; }
   bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
   bool writesInterpreter() const override { return true; }
+  /// Values in args.bin, code per shape, and the interp fallback of the same args.bin.
+  kernel::Capabilities capabilities(const graph::CompiledGraph &CG,
+                                    const CodegenOptions &) const override {
+    kernel::Capabilities C = interpreterCapabilities(CG);
+    C.ShapeKeyed = true;
+    C.InterpFallback = true;
+    return C;
+  }
   std::set<std::string> hoistedInUserCode(const graph::CompiledGraph &CG) const override {
     return hoistingFunctions(CG);
   }
@@ -96,6 +144,17 @@ public:
     emitHost(OS, CG);
   }
 };
+
+} // namespace
+
+kernel::Capabilities Backend::capabilities(const graph::CompiledGraph &,
+                                           const CodegenOptions &) const {
+  kernel::Capabilities C;
+  C.ReEncodes = false;
+  return C;
+}
+
+namespace {
 
 const InterpBackend Interp;
 const InlineBackend Inline;

@@ -1,47 +1,43 @@
-// layout.json: the graph library's part (graph::layoutJson) plus what code generation decides:
-// the mode, the target, the kernel entry points and launch plan, the scratch size per hit.
+// layout.json: the graph library's part of the manifest (graph::layoutManifest) plus what code
+// generation decides: the mode, the target, the kernel entry points and launch plan, the scratch
+// size per hit, and the backend's capabilities; written by the kernel library (writeManifest).
 #include "Emit.h"
-
-#include <nlohmann/json.hpp>
+#include "texcc/Codegen/Backend.h"
 
 using namespace texcc::graph;
-using Json = nlohmann::ordered_json;
 
 namespace texcc::codegen {
 
-static Json kernelJson(const CompiledGraph &CG, const CodegenOptions &Opts) {
-  Json K = Json::object();
-  K["source"] = kernelFileName(Opts.Tgt);
+/// kernel: the entry points, the shapes and launch plan.
+static kernel::KernelEntries kernelEntries(const CompiledGraph &CG, const CodegenOptions &Opts) {
+  kernel::KernelEntries K;
+  K.Source = kernelFileName(Opts.Tgt);
   if (Opts.Tgt == Target::Host) {
-    K["entry"] = HostEntry;
+    K.Entry = HostEntry;
     return K;
   }
   if (Opts.EvalMode == Mode::Shape) {
-    K["entry"] = KernelEntry;
-    K["interpFallback"] = InterpFallbackFile;
-    Json Shapes = Json::array();
+    K.Entry = KernelEntry;
+    K.InterpFallback = InterpFallbackFile;
     std::vector<MaterialShape> Groups = groupShapes(CG);
     for (size_t I = 0; I < Groups.size(); ++I)
-      Shapes.push_back(Json{{"id", I}, {"materials", Groups[I].Materials}});
-    K["shapes"] = std::move(Shapes);
-    K["shapeHash"] = shapeHash(CG);
+      K.Shapes.push_back({static_cast<unsigned>(I), Groups[I].Materials});
+    K.ShapeHash = shapeHash(CG);
     if (!hoistingFunctions(CG).empty())
-      K["uniforms"] = UniformsEntry;
+      K.Uniforms = UniformsEntry;
     return K;
   }
   if (Opts.EvalMode != Mode::Wavefront) {
-    K["entry"] = KernelEntry;
+    K.Entry = KernelEntry;
     if (Opts.EvalMode == Mode::Interp && Opts.InterpHoists && !CG.Nodes.empty() &&
         !interpHoistingFunctions(CG).empty())
-      K["uniforms"] = UniformsEntry;
+      K.Uniforms = UniformsEntry;
     return K;
   }
   // Wavefront: every node kernel in launch order, then the outputs kernel ("entry").
-  K["entry"] = WavefrontOutputsEntry;
-  Json Launches = Json::array();
+  K.Entry = WavefrontOutputsEntry;
   for (unsigned N : CG.WavefrontOrder)
-    Launches.push_back(Json{{"kernel", wavefrontKernelName(N)}, {"node", N}});
-  K["launches"] = std::move(Launches);
+    K.Launches.push_back({wavefrontKernelName(N), N});
   return K;
 }
 
@@ -57,24 +53,22 @@ static unsigned scratchFloat4PerHit(const CompiledGraph &CG, const CodegenOption
 }
 
 std::string generateLayout(const CompiledGraph &CG, const CodegenOptions &Opts) {
-  Json Graph = Json::parse(layoutJson(CG));
-  Json L = Json::object();
-  L["texcc"] = Graph.contains("texcc") ? Graph["texcc"] : Json(1);
-  L["mode"] = modeName(Opts.EvalMode);
-  L["target"] = targetName(Opts.Tgt);
-  L["graph"] = Opts.GraphPath;
-  L["compileOptions"] = Opts.CompileOptions;
-  L["kernel"] = kernelJson(CG, Opts);
-  L["scratchFloat4PerHit"] = scratchFloat4PerHit(CG, Opts);
-  for (auto It = Graph.begin(); It != Graph.end(); ++It)
-    if (!L.contains(It.key()))
-      L[It.key()] = It.value();
+  kernel::Manifest M = layoutManifest(CG);
+  M.Mode = modeName(Opts.EvalMode);
+  M.Target = targetName(Opts.Tgt);
+  M.Graph = Opts.GraphPath;
+  M.CompileOptions = Opts.CompileOptions;
+  M.Kernel = kernelEntries(CG, Opts);
+  M.ScratchFloat4PerHit = scratchFloat4PerHit(CG, Opts);
   // Spilling is an interpreter matter: other modes have no value stack (shape mode keeps it for
   // its interp fallback).
   const bool Interprets = Opts.EvalMode == Mode::Interp || Opts.EvalMode == Mode::Shape;
   if (!Interprets || Opts.Tgt == Target::Host)
-    L["spill"] = false;
-  return L.dump(2) + "\n";
+    M.Spill = false;
+  M.Caps = backendFor(Opts).capabilities(CG, Opts);
+  M.Caps.MaxOutputs = M.MaxOutputs;
+  M.Caps.OutputsEntry = M.Kernel.Entry;
+  return kernel::writeManifest(M);
 }
 
 } // namespace texcc::codegen

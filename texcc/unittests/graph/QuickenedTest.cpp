@@ -198,19 +198,24 @@ TEST(Quickened, LayoutRoundTrip) {
   ASSERT_TRUE(readLayoutQuickened(layoutJson(CG), T, Error)) << Error;
   EXPECT_EQ(T, CG.Quickened);
   T.clear();
-  EXPECT_TRUE(readLayoutQuickened("{}", T, Error)); // an older layout.json: none
+  // A layout.json around the fields under test (the kernel manifest's required ones).
+  auto Manifest = [](const std::string &Fields) {
+    return R"({"texcc": 1, "mode": "interp", "kernel": {}, "materials": [])" +
+           (Fields.empty() ? std::string() : ", " + Fields) + "}";
+  };
+  EXPECT_TRUE(readLayoutQuickened(Manifest(""), T, Error)); // an older layout.json: none
   EXPECT_TRUE(T.empty());
-  EXPECT_FALSE(readLayoutQuickened(R"({"quickened": [{"opcode": 1}]})", T, Error));
+  EXPECT_FALSE(readLayoutQuickened(Manifest(R"("quickened": [{"opcode": 1}])"), T, Error));
   EXPECT_NE(Error.find("malformed layout.json"), std::string::npos);
   // Entries that would make the editor write an opcode the kernel runs wrongly.
-  auto Bad = [](const std::string &Entry) {
+  auto Bad = [&](const std::string &Entry) {
     std::vector<QuickenedOp> Table;
     std::string Why;
     EXPECT_FALSE(readLayoutQuickened(
-        R"({"functions": [{"id": 0, "name": "lite", "params": [{"type": "float"}, {"type": "float"}]},
+        Manifest(R"("functions": [{"id": 0, "name": "lite", "params": [{"type": "float"}, {"type": "float"}]},
                           {"id": 3, "name": "octv", "params": [{"type": "float"}, {"type": "int"}]}],
             "superinstructions": [{"opcode": 1, "first": "lite", "second": "lite", "paramIndex": 0}],
-            "quickened": [)" + Entry + "]}",
+            "quickened": [)" + Entry + "]"),
         Table, Why));
     return Why;
   };
@@ -240,13 +245,13 @@ TEST(Quickened, LayoutRoundTrip) {
   // (superinstructions were removed: edits never encode it) is left out, its opcode taken.
   std::vector<QuickenedOp> Good;
   ASSERT_TRUE(readLayoutQuickened(
-      R"({"functions": [{"id": 0, "name": "lite", "params": [{"type": "float"}, {"type": "float"}]},
+      Manifest(R"("functions": [{"id": 0, "name": "lite", "params": [{"type": "float"}, {"type": "float"}]},
                         {"id": 3, "name": "octv", "params": [{"type": "float"}, {"type": "int"}]}],
           "superinstructions": [{"opcode": 1, "first": "lite", "second": "lite", "paramIndex": 0}],
           "quickened": [{"opcode": 2, "function": "octv", "sources": ["slot", "int:-2"]},
                         {"opcode": 4, "function": "lite", "sources": ["attr:AO", "const"],
                          "second": {"function": "lite", "paramIndex": 0,
-                                    "sources": ["fed", "slot.x"]}}]})",
+                                    "sources": ["fed", "slot.x"]}}])"),
       Good, Error))
       << Error;
   ASSERT_EQ(Good.size(), 1u);

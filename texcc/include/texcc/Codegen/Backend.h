@@ -8,6 +8,7 @@
 // Backend.cpp is the only place the mode names are spelled.
 
 #include "texcc/Codegen/Codegen.h"
+#include "texcc/Kernel/Manifest.h"
 
 #include <set>
 #include <sstream>
@@ -53,6 +54,11 @@ public:
   /// The evaluation code and kernels, after the user code.
   virtual void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
                     const CodegenOptions &Opts) const = 0;
+  /// What this backend's kernel of CG can absorb without being made again (layout.json
+  /// "capabilities", docs/abi.md): the runtime plans edits with it, never with the mode's name.
+  /// The base: values are literals (every edit regenerates), no value stack, no decoder.
+  virtual kernel::Capabilities capabilities(const graph::CompiledGraph &CG,
+                                            const CodegenOptions &Opts) const;
   /// Files besides the kernel, layout.json and args.bin (shape: its interp fallback kernel).
   virtual void addOutputs(std::vector<OutputFile> &, const graph::CompiledGraph &,
                           const CodegenOptions &) const {}

@@ -8,6 +8,7 @@
 
 #include "texcc/Graph/Graph.h"
 #include "texcc/Graph/Signature.h"
+#include "texcc/Kernel/Manifest.h"
 
 #include <cstdint>
 #include <map>
@@ -120,12 +121,12 @@ struct CompiledNode {
   /// arguments differ from the first material's (the source words differ; the parameter
   /// blocks are identical). Instruction::RecordOffset says which one an instruction uses.
   std::vector<uint32_t> RecordCopies;
-};
   /// Bump (Bump.h): 0, or 1/2 for a copy of a height node that runs with the position moved
   /// along the tangent/bitangent; OffsetOf is the id of the node it copies ("" for a node of
   /// the moved WorldPos/ObjectPos itself), whose edits it follows.
   unsigned PositionOffset = 0;
   std::string OffsetOf;
+};
 
 struct Instruction {
   unsigned Node = 0;          // index into CompiledGraph::Nodes
@@ -238,15 +239,25 @@ std::vector<MaterialShape> groupShapes(const CompiledGraph &CG);
 /// graph with an upload. layout.json kernel.shapeHash; the runtime compares it after an edit.
 std::string shapeHash(const CompiledGraph &CG);
 
-/// The graph part of layout.json (docs/abi.md); code generation adds "mode" and "kernel".
+/// The graph part of the kernel manifest (docs/abi.md); code generation adds the mode, the
+/// kernel's entries and the backend's capabilities.
+kernel::Manifest layoutManifest(const CompiledGraph &CG);
+/// kernel::writeManifest(layoutManifest(CG)).
 std::string layoutJson(const CompiledGraph &CG);
 
-/// Reads layout.json's "quickened" (absent: none) for the runtime's live edits.
+/// The manifest's "quickened" (absent: none), checked against its functions, for the runtime's
+/// live edits.
+bool readLayoutQuickened(const kernel::Manifest &M, std::vector<QuickenedOp> &Table,
+                         std::string &Error);
+/// The same from layout.json's text (kernel::readManifest, then the above).
 bool readLayoutQuickened(const std::string &LayoutJsonText, std::vector<QuickenedOp> &Table,
                          std::string &Error);
 
-/// Reads the signatures back from a layout.json (for the runtime's live edits), keyed by name,
+/// The signatures of the manifest's functions (for the runtime's live edits), keyed by name,
 /// and the function ids in use.
+bool readLayoutSignatures(const kernel::Manifest &M, SignatureMap &Sigs,
+                          std::map<std::string, unsigned> &FnIds, std::string &Error);
+/// The same from layout.json's text.
 bool readLayoutSignatures(const std::string &LayoutJsonText, SignatureMap &Sigs,
                           std::map<std::string, unsigned> &FnIds, std::string &Error);
 

@@ -1,0 +1,226 @@
+// The kernel manifest (layout.json): every field round-trips through writeManifest and
+// readManifest; malformed input names the file, position and field; an old layout without
+// "capabilities" gets its mode's.
+
+#include "texcc/Kernel/Attributes.h"
+#include "texcc/Kernel/Manifest.h"
+
+#include <gtest/gtest.h>
+
+using namespace texcc::kernel;
+
+namespace {
+
+/// A manifest with every field set away from its default.
+Manifest everyField() {
+  Manifest M;
+  M.Mode = "shape";
+  M.Target = "opencl";
+  M.Graph = "/g/graph.json";
+  M.CompileOptions = {"--mode=shape", "-DX=1", "-I/inc"};
+  M.Kernel.Source = "k.cl";
+  M.Kernel.Entry = "entry_fn";
+  M.Kernel.InterpFallback = "proctex.interp.cl";
+  M.Kernel.Shapes = {{0, {0, 2}}, {1, {1}}};
+  M.Kernel.ShapeHash = "0123456789abcdef";
+  M.Kernel.Uniforms = "texcc_uniforms";
+  M.Kernel.Launches = {{"texcc_wf_0", 0}, {"texcc_wf_3", 3}};
+  M.Caps.ReEncodes = false;
+  M.Caps.WiringIsData = true;
+  M.Caps.ShapeKeyed = true;
+  M.Caps.InterpFallback = true;
+  M.Caps.StackHeadroom = true;
+  M.Caps.MaxOutputs = 3;
+  M.Caps.ValueStackSlots = 7;
+  M.Caps.DecodedAttributes = {"Normal", "AO"};
+  M.Caps.OutputsEntry = "entry_fn";
+  M.ScratchFloat4PerHit = 5;
+  M.StackSlots = 9;
+  M.StackLimit = 40;
+  M.Spill = true;
+  M.ValueStack = "global";
+  M.MaxOutputs = 3;
+  M.ArgsBinSize = 4096;
+  M.ProgramWords = 12;
+  M.RecordsOffset = 48;
+  M.Attributes = {"WorldPos", "AO"};
+  M.Settings = {"Time"};
+  M.Images = {{"img", "/i/a.png", 0}};
+  FunctionLayout F;
+  F.Id = 2;
+  F.Name = "noise";
+  F.Renamed = "texcc_fn_noise";
+  F.File = "/src/noise.cl";
+  F.Return = "float3";
+  F.BlockSize = 32;
+  F.Params = {{"p", "float3", 16, 16, 0}, {"n", "int", 4, 4, 16}};
+  F.Attributes = {"Normal"};
+  F.Settings = {"Frame"};
+  F.Cost = 17;
+  F.HasHoisted = true;
+  F.Hoisted = {{"h", "float", 4, 20}};
+  F.HoistedFrom = {"n"};
+  M.Functions = {F};
+  QuickenedLayout Q;
+  Q.Opcode = 9;
+  Q.Function = "noise";
+  Q.Sources = {"attr:Normal", "int:3"};
+  M.Quickened = {Q};
+  NodeLayout N;
+  N.Index = 0;
+  N.Id = "n0";
+  N.Merged = {"n0b"};
+  N.Fn = "noise";
+  N.FnId = 2;
+  N.RecordOffset = 48;
+  N.RecordSize = 32;
+  N.Copies = {80, 112};
+  ArgLayout A1, A2, A3;
+  A1.Name = "p";
+  A1.Src = ArgLayout::Source::Attribute;
+  A1.Attr = "Normal";
+  A1.Broadcast = true;
+  A1.Offset = 0;
+  A2.Name = "n";
+  A2.Src = ArgLayout::Source::Constant;
+  A2.IntValue = true;
+  A2.Value = {3};
+  A2.Bake = true;
+  A2.Offset = 16;
+  A3.Name = "tab";
+  A3.Src = ArgLayout::Source::Constant;
+  A3.IsArray = true;
+  A3.ArrayOffset = 256;
+  A3.ArrayCount = 2;
+  A3.Value = {0.25, 0.1};
+  A3.Image = "img";
+  A3.Offset = 20;
+  N.Args = {A1, A2, A3};
+  NodeLayout N1;
+  N1.Index = 1;
+  N1.Id = "n1";
+  N1.Fn = "noise";
+  ArgLayout A4;
+  A4.Name = "p";
+  A4.Src = ArgLayout::Source::Node;
+  A4.Node = 0;
+  N1.Args = {A4};
+  M.Nodes = {N, N1};
+  M.WavefrontOrder = {0, 1};
+  MaterialLayout Mat;
+  Mat.Name = "red";
+  Mat.Index = 1;
+  Mat.ProgramWordOffset = 4;
+  Mat.ProgramInstructions = 2;
+  Mat.ProgramStackSlots = 3;
+  Mat.Outputs = {{1, 2, "float3"}};
+  Mat.Surface.Type = "blend";
+  Bsdf Diffuse;
+  Diffuse.Type = "diffuse";
+  Diffuse.Inputs = {{"color", {true, 0, {}}}, {"roughness", {false, -1, {0.5}}}};
+  Mat.Surface.Inputs = {{"mask", {false, -1, {0.3}}}};
+  Mat.Surface.Children = {{"a", Diffuse}, {"b", Diffuse}};
+  M.Materials = {Mat};
+  return M;
+}
+
+Manifest read(const std::string &Text, ManifestError *Err = nullptr) {
+  Manifest M;
+  ManifestError E;
+  bool Ok = readManifest(Text, "layout.json", M, E);
+  if (Err)
+    *Err = E;
+  else
+    EXPECT_TRUE(Ok) << E.str();
+  return M;
+}
+
+std::string readError(const std::string &Text) {
+  Manifest M;
+  ManifestError E;
+  EXPECT_FALSE(readManifest(Text, "dir/layout.json", M, E));
+  return E.str();
+}
+
+} // namespace
+
+TEST(Manifest, RoundTripEveryField) {
+  const Manifest M = everyField();
+  const std::string Text = writeManifest(M);
+  const Manifest Back = read(Text);
+  EXPECT_TRUE(Back == M) << Text;
+  EXPECT_EQ(writeManifest(Back), Text);
+  // Each part on its own, so a failure says which.
+  EXPECT_TRUE(Back.Kernel == M.Kernel);
+  EXPECT_TRUE(Back.Caps == M.Caps);
+  EXPECT_TRUE(Back.Functions == M.Functions);
+  EXPECT_TRUE(Back.Nodes == M.Nodes);
+  EXPECT_TRUE(Back.Materials == M.Materials);
+  EXPECT_TRUE(Back.Quickened == M.Quickened);
+  EXPECT_TRUE(Back.HasCapabilities && Back.HasCompileOptions);
+}
+
+TEST(Manifest, SyntaxErrorHasLineAndColumn) {
+  EXPECT_EQ(readError("{\n  \"texcc\": 1,\n  \"mode\": ]\n}").substr(0, 21), "dir/layout.json:3:11:");
+}
+
+TEST(Manifest, FieldErrorNamesPointerAndPosition) {
+  std::string Text = writeManifest(everyField());
+  // A mistyped field: its pointer and where its value starts.
+  std::string Bad = Text;
+  Bad.replace(Bad.find("\"entry\": \"entry_fn\""), 19, "\"entry\": 5");
+  EXPECT_EQ(readError(Bad), "dir/layout.json:13:14: /kernel/entry: expected a string, not number");
+  // A missing field: the object it is missing from.
+  std::string NoName = Text;
+  size_t At = NoName.find("\"name\": \"red\",");
+  NoName.erase(At, std::string("\"name\": \"red\",").size());
+  std::string E = readError(NoName);
+  EXPECT_NE(E.find(": /materials/0: missing \"name\""), std::string::npos) << E;
+  EXPECT_EQ(E.rfind("dir/layout.json:", 0), 0u) << E;
+  // A wrong version.
+  std::string V2 = Text;
+  V2.replace(V2.find("\"texcc\": 1"), 10, "\"texcc\": 2");
+  EXPECT_EQ(readError(V2),
+            "dir/layout.json:2:12: /texcc: layout version 2, expected 1 (run this texcc again)");
+  // An argument of an unknown source.
+  std::string Src = Text;
+  Src.replace(Src.find("\"source\": \"node\""), 16, "\"source\": \"wire\"");
+  E = readError(Src);
+  EXPECT_NE(E.find("/nodes/1/args/0/source: expected \"attr\", \"node\" or \"const\""),
+            std::string::npos)
+      << E;
+}
+
+TEST(Manifest, OldLayoutWithoutCapabilitiesGetsItsModes) {
+  // A layout of texcc before the capabilities block (and before compileOptions).
+  const char *Old = R"({"texcc": 1, "mode": "interp", "maxOutputs": 2,
+                        "kernel": {"source": "proctex.cl", "entry": "texcc_proctex"},
+                        "materials": []})";
+  Manifest M = read(Old);
+  EXPECT_FALSE(M.HasCapabilities);
+  EXPECT_TRUE(M.Caps.ReEncodes && M.Caps.WiringIsData && M.Caps.StackHeadroom);
+  EXPECT_FALSE(M.Caps.ShapeKeyed || M.Caps.InterpFallback);
+  EXPECT_EQ(M.Caps.MaxOutputs, 2u);
+  EXPECT_EQ(M.Caps.OutputsEntry, "texcc_proctex");
+  EXPECT_FALSE(M.HasCompileOptions);
+  EXPECT_EQ(M.CompileOptions, std::vector<std::string>{"--mode=interp"});
+  // Each mode as the runtime assumed it; an unknown mode without the block is an error.
+  EXPECT_FALSE(capabilitiesOfMode("inline")->ReEncodes);
+  EXPECT_TRUE(capabilitiesOfMode("wavefront")->ReEncodes);
+  EXPECT_TRUE(capabilitiesOfMode("shape")->InterpFallback);
+  EXPECT_FALSE(capabilitiesOfMode("host"));
+  std::string E = readError(R"({"texcc": 1, "mode": "fast", "kernel": {}, "materials": []})");
+  EXPECT_NE(E.find("/mode: unknown mode 'fast' and no \"capabilities\""), std::string::npos) << E;
+  // A shape layout must name its fallback kernel.
+  E = readError(R"({"texcc": 1, "mode": "shape", "kernel": {}, "materials": []})");
+  EXPECT_NE(E.find("/kernel: missing \"interpFallback\""), std::string::npos) << E;
+}
+
+TEST(Attributes, OneTable) {
+  EXPECT_EQ(NumAttributes, 8u);
+  EXPECT_EQ(attributeId("WorldPos"), 0);
+  EXPECT_EQ(attributeId("ViewDir"), 7);
+  EXPECT_EQ(attributeId("viewdir"), -1);
+  EXPECT_STREQ(attributeName(6), "AO");
+  EXPECT_EQ(AttributeTable[5].Components, 2u); // TexCoord0
+}
