@@ -177,6 +177,8 @@ static Bvh buildBvhSteps(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
     }
     Builder B;
     B.Device = rtcNewDevice(nullptr);
+    if (!B.Device && rtcGetDeviceError(nullptr) == RTC_ERROR_OUT_OF_MEMORY)
+      throw std::bad_alloc(); // named by buildBvh's step (Embree's threads did not start)
     if (!B.Device)
       throw Error("cannot start Embree to build the BVH: " +
                   std::to_string(int(rtcGetDeviceError(nullptr))));

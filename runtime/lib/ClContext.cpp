@@ -59,25 +59,64 @@ std::string defaultCacheDir() {
   return "";
 }
 
-static std::vector<std::pair<cl::Device, std::string>> allDevices() {
+/// The first call of device discovery that failed, and how.
+struct DiscoveryFailure {
+  std::string Call;
+  cl_int Code = CL_SUCCESS;
+};
+
+static std::vector<std::pair<cl::Device, std::string>>
+allDevices(DiscoveryFailure *Failure = nullptr) {
   std::vector<std::pair<cl::Device, std::string>> Out;
   std::vector<cl::Platform> Platforms;
+  auto failed = [&](const char *Call, const cl::Error &E) {
+    if (Failure && Failure->Code == CL_SUCCESS)
+      *Failure = {Call, E.err()};
+  };
   try {
     cl::Platform::get(&Platforms);
-  } catch (const cl::Error &) {
+  } catch (const cl::Error &E) {
+    failed("clGetPlatformIDs", E);
     return Out;
   }
   for (auto &P : Platforms) {
     std::vector<cl::Device> Devs;
     try {
       P.getDevices(CL_DEVICE_TYPE_ALL, &Devs);
-    } catch (const cl::Error &) {
+    } catch (const cl::Error &E) {
+      if (E.err() != CL_DEVICE_NOT_FOUND)
+        failed("clGetDeviceIDs", E);
       continue;
     }
     for (auto &D : Devs)
       Out.push_back({D, D.getInfo<CL_DEVICE_NAME>() + " (" + P.getInfo<CL_PLATFORM_NAME>() + ")"});
   }
   return Out;
+}
+
+/// Whether an OpenCL ICD is installed for the ICD loader to load (a vendors file, or the
+/// loader's environment variables naming one).
+static bool icdInstalled() {
+  if (std::getenv("OCL_ICD_VENDORS") || std::getenv("OCL_ICD_FILENAMES"))
+    return true;
+  std::error_code Ec;
+  for (const auto &E : fs::directory_iterator("/etc/OpenCL/vendors", Ec))
+    if (E.path().extension() == ".icd")
+      return true;
+  return false;
+}
+
+/// Why no device was found. Under a memory limit the platform itself cannot start: the ICD
+/// loader fails to load PoCL (no platform, though one is installed) or PoCL's device discovery
+/// runs out of host memory; that says so, rather than suggest installing an ICD.
+static std::string noDeviceMessage(const DiscoveryFailure &F) {
+  const bool OutOfMemory = F.Code == CL_OUT_OF_HOST_MEMORY || F.Code == CL_OUT_OF_RESOURCES;
+  if (OutOfMemory || (F.Code == CL_PLATFORM_NOT_FOUND_KHR && icdInstalled()))
+    return "no OpenCL device found: the OpenCL platform could not be initialised (" + F.Call +
+           ": " + clErrorName(F.Code) +
+           (OutOfMemory ? "" : ", though an ICD is installed") +
+           "); memory may be the cause (a `ulimit -v` or a container's limit)";
+  return "no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)";
 }
 
 std::vector<std::string> listDevices() {
@@ -88,9 +127,10 @@ std::vector<std::string> listDevices() {
 }
 
 ClContext::ClContext(int DeviceIndex, std::string CacheDirIn) : CacheDir(std::move(CacheDirIn)) {
-  auto Devs = allDevices();
+  DiscoveryFailure Failure;
+  auto Devs = allDevices(&Failure);
   if (Devs.empty())
-    throw Error("no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
+    throw Error(noDeviceMessage(Failure));
   if (DeviceIndex < 0 || DeviceIndex >= static_cast<int>(Devs.size()))
     throw Error("--device " + std::to_string(DeviceIndex) + ": no such OpenCL device (" +
                 std::to_string(Devs.size()) + " found; use 0.." +

@@ -229,6 +229,9 @@ static Scene readScene(const std::string &Path);
 
 Scene loadScene(const std::string &Path) {
   const std::string Step = "reading '" + Path + "'";
+  // Unwinding out of a half-parsed scene would allocate (texcc/OutOfMemory.h): out of memory
+  // exits here, with the step's line.
+  texcc::ExitOnOutOfMemory ExitHere("texrender");
   return texcc::whileAllocating(Step.c_str(), [&] { return readScene(Path); });
 }
 

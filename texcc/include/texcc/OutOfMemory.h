@@ -94,6 +94,29 @@ inline void installOutOfMemoryHandler(const char *Tool) {
   });
 }
 
+/// While it lives, a failed allocation exits at once with "<Tool>: error: out of memory while
+/// <current step>" and status 1, as installOutOfMemoryHandler does for a whole tool: for a
+/// step whose unwinding would allocate in a tool that otherwise unwinds (texrender). A
+/// nlohmann::json array being destroyed allocates a vector of its size, so a std::bad_alloc
+/// while parsing a large JSON file, unwinding through the half-built value, was std::terminate.
+class ExitOnOutOfMemory {
+public:
+  explicit ExitOnOutOfMemory(const char *Tool)
+      : OuterTool(detail::toolName()), Outer(std::set_new_handler([] { exitOutOfMemory(); })) {
+    detail::toolName() = Tool;
+  }
+  ~ExitOnOutOfMemory() {
+    std::set_new_handler(Outer);
+    detail::toolName() = OuterTool;
+  }
+  ExitOnOutOfMemory(const ExitOnOutOfMemory &) = delete;
+  ExitOnOutOfMemory &operator=(const ExitOnOutOfMemory &) = delete;
+
+private:
+  const char *OuterTool;
+  std::new_handler Outer;
+};
+
 /// For a tool's top-level catch: prints "<Tool>: error: out of memory while <what>" (or
 /// "... out of memory" when E does not say) on stderr, without allocating.
 inline void reportOutOfMemory(const char *Tool, const std::bad_alloc &E) {
