@@ -17,8 +17,8 @@ float f(int n, int k) {
   // CHECK: {{^}}  for (int i = 0; (i < 10) && texcc_loop_continues(texcc_ctx, __LINE__); ++i)
   for (int i = 0; i < 10; ++i)
     i += k;
-  // The bound is a parameter: per iteration.
-  // CHECK: {{^}}  for (int i = 0; (i < n) && texcc_loop_continues(texcc_ctx, __LINE__); ++i)
+  // The bound is a parameter: charged its span (loop-budget-invariant.cl).
+  // CHECK: {{^}}  if (!texcc_loop_charge_span(texcc_ctx, (long)(n) - (long)(0), __LINE__)) {} else for (int i = 0; i < n; ++i)
   for (int i = 0; i < n; ++i)
     s += 1.0f;
   // Counting up to a bound below the start with !=: would not end, per iteration.

@@ -5,8 +5,8 @@
 
 float f(int n) {
   float s = 0.0f;
-  // CHECK: {{^}}  for (int i = 0; (i < n) && texcc_loop_continues(texcc_ctx, __LINE__); ++i)
-  for (int i = 0; i < n; ++i)
+  // CHECK: {{^}}  for (int i = 0; (i * i < n) && texcc_loop_continues(texcc_ctx, __LINE__); ++i)
+  for (int i = 0; i * i < n; ++i)
     s += 1.0f;
   // CHECK: {{^}}  while ((s > 2.0f) && texcc_loop_continues(texcc_ctx, __LINE__))
   while (s > 2.0f)

@@ -394,6 +394,11 @@ inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
   return false;
 }
 
+inline bool texcc_loop_charge_span(const TexccCtx *c, long long span, int line) {
+  return texcc_loop_charge(
+      c, span <= 0 ? 0u : span >= static_cast<long long>(UINT_MAX) ? UINT_MAX : uint(span), line);
+}
+
 inline bool texcc_index_ok(const TexccCtx *c, long long i, uint n, int line) {
   if (!TEXCC_CHECKS || (i >= 0 && static_cast<unsigned long long>(i) < n))
     return true;

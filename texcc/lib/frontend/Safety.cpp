@@ -97,6 +97,133 @@ static std::optional<uint64_t> constantTripCount(const ForStmt *F, const ASTCont
   }
 }
 
+/// Charged once before a loop whose trip count is a loop-invariant span (invariantTripSpan).
+static const char *const LoopChargeSpan = "texcc_loop_charge_span(texcc_ctx, ";
+
+/// Whether V's address is taken anywhere under S (then a write through a pointer could change it
+/// where no assignment names it).
+static bool addressTaken(const Stmt *S, const VarDecl *V) {
+  if (!S)
+    return false;
+  if (const auto *U = dyn_cast<UnaryOperator>(S); U && U->getOpcode() == UO_AddrOf)
+    if (const auto *Ref = dyn_cast<DeclRefExpr>(U->getSubExpr()->IgnoreParens());
+        Ref && Ref->getDecl() == V)
+      return true;
+  for (const Stmt *Child : S->children())
+    if (addressTaken(Child, V))
+      return true;
+  return false;
+}
+
+/// Whether E is side-effect free and has the same value before the loop F and at every test of
+/// it: integer literals, arithmetic, casts, and reads of integer variables that are local,
+/// parameters or const, whose address the function never takes, that neither F's body nor its
+/// condition nor its increment writes, and that are not Counter.
+static bool loopInvariant(const Expr *E, const ForStmt *F, const VarDecl *Counter,
+                          const FunctionDecl *Fn) {
+  E = E->IgnoreParens();
+  if (isa<IntegerLiteral, CharacterLiteral>(E))
+    return true;
+  if (const auto *C = dyn_cast<CastExpr>(E))
+    return (isa<ImplicitCastExpr>(C) || isa<CStyleCastExpr>(C)) &&
+           C->getType()->isIntegerType() && loopInvariant(C->getSubExpr(), F, Counter, Fn);
+  if (const auto *U = dyn_cast<UnaryOperator>(E))
+    return (U->getOpcode() == UO_Minus || U->getOpcode() == UO_Plus ||
+            U->getOpcode() == UO_Not) &&
+           loopInvariant(U->getSubExpr(), F, Counter, Fn);
+  if (const auto *B = dyn_cast<BinaryOperator>(E))
+    return !B->isAssignmentOp() && !B->isCommaOp() &&
+           loopInvariant(B->getLHS(), F, Counter, Fn) && loopInvariant(B->getRHS(), F, Counter, Fn);
+  if (const auto *C = dyn_cast<ConditionalOperator>(E))
+    return loopInvariant(C->getCond(), F, Counter, Fn) &&
+           loopInvariant(C->getTrueExpr(), F, Counter, Fn) &&
+           loopInvariant(C->getFalseExpr(), F, Counter, Fn);
+  const auto *Ref = dyn_cast<DeclRefExpr>(E);
+  if (!Ref)
+    return false;
+  if (isa<EnumConstantDecl>(Ref->getDecl()))
+    return true;
+  const auto *V = dyn_cast<VarDecl>(Ref->getDecl());
+  if (!V || V == Counter || !V->getType()->isIntegerType() ||
+      V->getType().isVolatileQualified())
+    return false;
+  if (!V->hasLocalStorage())
+    return V->getType().isConstQualified();
+  return !addressTaken(Fn->getBody(), V) && onlyReads(F->getBody(), F, V) &&
+         onlyReads(F->getCond(), F, V) && onlyReads(F->getInc(), F, V);
+}
+
+/// The source text of E if it is spelled in File without macros at its ends.
+static std::optional<std::string> spelledText(const Expr *E, const FileContext &FC, FileID File) {
+  SourceLocation B = E->getBeginLoc(), End = E->getEndLoc();
+  if (B.isInvalid() || End.isInvalid() || !B.isFileID() || !End.isFileID() ||
+      FC.SM.getFileID(B) != File || FC.SM.getFileID(End) != File)
+    return std::nullopt;
+  return Lexer::getSourceText(CharSourceRange::getTokenRange(B, End), FC.SM,
+                              FC.Ctx.getLangOpts())
+      .str();
+}
+
+/// For `for (int i = A; i + K < B; ++i)` (K an integer constant, 0 when absent) or
+/// `for (int i = A; i + K > B; --i)`, with A and B side-effect free, B loop-invariant
+/// (loopInvariant), i a signed integer of at least 32 bits that the body only reads and the
+/// comparison signed: the text of the trip count's span, `(long)(B) - (long)(A) - K` (up) or
+/// `(long)(A) - (long)(B) + K` (down), which the device clamps at 0 (texcc_loop_charge_span).
+/// std::nullopt for any other loop. A loop that leaves early (break, return) is charged its
+/// whole span: the budget is an upper bound.
+static std::optional<std::string> invariantTripSpan(const ForStmt *F, const FunctionDecl *Fn,
+                                                    const FileContext &FC, FileID File) {
+  const auto *Init = dyn_cast_or_null<DeclStmt>(F->getInit());
+  if (!Init || !Init->isSingleDecl())
+    return std::nullopt;
+  const auto *V = dyn_cast<VarDecl>(Init->getSingleDecl());
+  if (!V || !V->getInit() || !V->getType()->isSignedIntegerType() ||
+      FC.Ctx.getTypeSize(V->getType()) < 32 || V->getType().isVolatileQualified())
+    return std::nullopt;
+  const auto *Cond = dyn_cast_or_null<BinaryOperator>(F->getCond());
+  const auto *Inc = dyn_cast_or_null<UnaryOperator>(F->getInc());
+  if (!Cond || !Inc || !Inc->isIncrementDecrementOp() ||
+      !Cond->getLHS()->getType()->isSignedIntegerType() ||
+      FC.Ctx.getTypeSize(Cond->getLHS()->getType()) > 64)
+    return std::nullopt;
+  const bool Up = Inc->isIncrementOp();
+  if (Cond->getOpcode() != (Up ? BO_LT : BO_GT))
+    return std::nullopt;
+  const auto *IncRef = dyn_cast<DeclRefExpr>(Inc->getSubExpr()->IgnoreParens());
+  if (!IncRef || IncRef->getDecl() != V)
+    return std::nullopt;
+  // The left side: i, or i + K / i - K.
+  const Expr *Lhs = Cond->getLHS()->IgnoreParenImpCasts();
+  int64_t K = 0;
+  if (const auto *Add = dyn_cast<BinaryOperator>(Lhs);
+      Add && (Add->getOpcode() == BO_Add || Add->getOpcode() == BO_Sub)) {
+    Expr::EvalResult R;
+    if (Add->getRHS()->isValueDependent() || !Add->getRHS()->EvaluateAsInt(R, FC.Ctx) ||
+        R.Val.getInt().getMinSignedBits() > 32)
+      return std::nullopt;
+    K = Add->getOpcode() == BO_Add ? R.Val.getInt().getExtValue() : -R.Val.getInt().getExtValue();
+    Lhs = Add->getLHS()->IgnoreParenImpCasts();
+  }
+  const auto *CondRef = dyn_cast<DeclRefExpr>(Lhs);
+  if (!CondRef || CondRef->getDecl() != V || !onlyReads(F->getBody(), F, V))
+    return std::nullopt;
+  const Expr *Start = V->getInit(), *End = Cond->getRHS();
+  if (Start->HasSideEffects(FC.Ctx) || !loopInvariant(Start, F, V, Fn) ||
+      !loopInvariant(End, F, V, Fn))
+    return std::nullopt;
+  std::optional<std::string> A = spelledText(Start, FC, File), B = spelledText(End, FC, File);
+  if (!A || !B)
+    return std::nullopt;
+  std::string Span = Up ? "(long)(" + *B + ") - (long)(" + *A + ")"
+                        : "(long)(" + *A + ") - (long)(" + *B + ")";
+  const int64_t Shift = Up ? -K : K;
+  if (Shift > 0)
+    Span += " + " + std::to_string(Shift);
+  else if (Shift < 0)
+    Span += " - " + std::to_string(-Shift);
+  return Span;
+}
+
 /// The tokens of a loop head, from its '(' to its ')', spelled in one file.
 struct LoopHead {
   FileID File;
@@ -173,6 +300,14 @@ void LoopBudget::run(const MatchFinder::MatchResult &Result) {
                                       "u, __LINE__)) {} else for");
     return;
   }
+  // A loop whose bound does not change while it runs (fbm's octaves, a ramp's stop count) is
+  // charged its span once in the same way.
+  if (ForLoc.isFileID() && FC.SM.getFileID(ForLoc) == Head->File)
+    if (std::optional<std::string> Span = invariantTripSpan(For, Fn, FC, Head->File)) {
+      FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopChargeSpan) + *Span +
+                                        ", __LINE__)) {} else for");
+      return;
+    }
   // for (init; c; inc) -> for (init; (c) && tick; inc); for (init;; inc) -> for (init; tick; inc).
   std::vector<size_t> Semis;
   int Depth = 0;
