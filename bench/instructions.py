@@ -117,3 +117,55 @@ def measure(tools, quick):
                          "instructions": ir, "texturedHits": hits,
                          "perHit": ir / hits})
     return {"grid": grid, "pocl": POCL_ENV, "rows": rows}
+
+
+# The examples whose loops and array reads the checks guard (bench/per_hit.py's GRAPHS).
+CHECK_GRAPHS = {"rust": "examples/rust/graph.json", "scratches": "examples/scratches/graph.json",
+                "marble": "examples/marble/graph.json", "wood": "examples/wood/graph.json"}
+CHECK_MODES = ("inline", "interp", "shape")
+
+
+def measure_checks(tools, names, grid):
+    """The cost of the loop budget and the bounds checks in instructions (bench/loop-budget.md):
+    per example and mode, the kernel as texcc compiles it against `texcc --no-checks`, counted
+    as above; the ratio minus 1 is the checks' cost per hit, free of the machine's load."""
+    rows = []
+    for tex in names:
+        graph_path = os.path.join(common.ROOT, CHECK_GRAPHS[tex])
+        for mode in CHECK_MODES:
+            counts = {}
+            for label, extra in (("checked", []), ("unchecked", ["--no-checks"])):
+                folder = os.path.join(tools.work, "checks-%s-%s-%s" % (tex, mode, label))
+                common.texcc(tools, graph_path, folder, mode, extra)
+                counts[label] = count(tools, folder, grid) / textured_hits(folder, grid)
+            cost = counts["checked"] / counts["unchecked"] - 1.0
+            common.log("checks %s %s: %.1f instructions per hit checked, %.1f unchecked: %+.2f%%"
+                       % (tex, mode, counts["checked"], counts["unchecked"], 100 * cost))
+            rows.append({"texture": tex, "mode": mode, "checkedPerHit": counts["checked"],
+                         "uncheckedPerHit": counts["unchecked"], "cost": cost})
+    return {"grid": grid, "pocl": POCL_ENV, "rows": rows}
+
+
+def main():
+    import argparse
+    ap = argparse.ArgumentParser(description="--checks: the checks' cost in instructions per hit")
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--work", default=None)
+    ap.add_argument("--checks", action="store_true", required=True)
+    ap.add_argument("--only", default=",".join(CHECK_GRAPHS))
+    ap.add_argument("--out", default=os.path.join(common.RESULTS, "instructions-checks.json"))
+    args = ap.parse_args()
+    work = args.work or os.path.join(args.build, "bench-instructions")
+    os.makedirs(work, exist_ok=True)
+    tools = common.Tools(args.build, work)
+    data = {"machine": common.machine(), "git": common.git_head()}
+    data.update(measure_checks(tools, args.only.split(","), GRID))
+    common.save(None, data, args.out)
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except common.BenchError as e:
+        print("bench/instructions.py: error: %s" % e, file=common.sys.stderr)
+        common.sys.exit(1)
