@@ -325,6 +325,8 @@ private:
   // render loop free to handle it, the edit applied, the pass that shows it started and done.
   double HandledAt = 0, AppliedAt = 0, PassStart = 0, PassEnd = 0;
   bool TierPending = false, TierSwitch = false;
+  // What is rendered changed since the last complete frame (an edit, a reload, a new kernel).
+  bool Dirty = true;
   // Accumulations started (one per render()) and the last one written, with its samples: a
   // frame is written once.
   unsigned Accumulation = 0, WrittenAccumulation = 0;
@@ -479,9 +481,16 @@ WatchResult Session::run() {
     Input = std::make_unique<ControlInput>();
   }
   while (!stopping() && !Ended) {
-    // A change that came during the reduced pass or the pause after it is handled first.
-    if (!changePending())
-      renderFrame();
+    // A change that came during the reduced pass or the pause after it is handled first. A
+    // complete frame is not rendered again until something it shows changed (texcc running
+    // in the background changes nothing yet).
+    if (!changePending()) {
+      if (Dirty || TierSwitch)
+        renderFrame();
+      else
+        while (!stopping() && !work())
+          idle();
+    }
     if (stopping())
       break;
     if (jobDone())
@@ -515,6 +524,7 @@ void Session::renderFrame() {
     writeProgress(Image, F.SamplesDone);
   if (F.Interrupted)
     return;
+  Dirty = false;
   ++Frames;
   say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
       ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
@@ -594,6 +604,7 @@ void Session::handleCommand(const Command &C) {
   applyToGraphJson(Graph, Ed);
   unsigned Built = R->cl().foregroundBuilds() - Builds;
   LastEdit = Id;
+  Dirty = true;
   EditAt = C.ReadAt;
   AppliedAt = nowSeconds();
   say("applied '" + Ed.Text + "' (id " + std::to_string(*Id) + ") in " + ms(Took) + ", " +
@@ -646,6 +657,7 @@ void Session::reloadScene() {
         NewEditor->apply(parseEdit(E), *New);
     R = std::move(New);
     Editor = std::move(NewEditor);
+    Dirty = true;
     ChangeAt = Noticed;
     say(O.ScenePath + " reloaded");
   } catch (const std::exception &E) {
@@ -718,6 +730,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
     return;
   }
   Graph = New;
+  Dirty = true;
   ChangeAt = Noticed;
   say("applied '" + Text + "' in " + ms(nowSeconds() - T0) + ", " +
       std::to_string(R->cl().foregroundBuilds() - Builds) + " kernel build(s)");
@@ -782,6 +795,7 @@ void Session::adoptJob() {
   if (J->KeepEdits)
     applyKeptEdits(Edited);
   watchFiles();
+  Dirty = true;
   ChangeAt = J->Started;
   say("new kernel from texcc after " + ms(nowSeconds() - J->Started) + ", " +
       std::to_string(R->cl().foregroundBuilds() - Builds) + " kernel build(s) waited for");
