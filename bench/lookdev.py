@@ -2,12 +2,13 @@
 
 A scripted session plays a user at the browser preview: 50 slider moves (five float arguments of
 the rust graph, ten values each) and 5 rewirings (mask.noise onto another float node), one at a
-time: the edit is sent, its first frame awaited, then its first full-resolution frame, then a
-pause of THINK seconds (the renderer keeps refining meanwhile, so the next edit usually meets a
-pass in flight). Measured per edit at the client: the time from sending the message to receiving
-the first frame that contains the edit ("first frame"; with texrender's default
---first-pass=reduced that frame has a quarter of the pixels) and to the first frame at full
-resolution. Kernel builds: texrender's count (foreground and background) before the first edit
+time. Five times: ten slider moves as a drag (each sent THINK seconds after the previous one's
+first frame arrived), the last of them followed until its first full-resolution frame, then,
+THINK seconds later (the renderer is refining at full resolution by then), a rewiring, also
+followed to its first full-resolution frame. Measured per edit at the client: the time from
+sending the message to receiving the first frame that contains the edit ("first frame"; with
+texrender's default --first-pass=reduced that frame has a quarter of the pixels) and, where
+followed, to the first frame at full resolution. Kernel builds: texrender's count (foreground and background) before the first edit
 and after the last; they must not change. The session runs once per first-pass configuration
 (reduced, full), interleaved.
 
@@ -221,18 +222,23 @@ def edit_session(transport, tools, textures, first_pass, work):
         next_event(ch, lambda e: e.get("event") == "ready", "ready")
         builds0 = next_event(ch, lambda e: is_frame(e, SPP), "the first complete frame")["builds"]
         rows = []
-        for eid, (kind, node, arg, value) in enumerate(script(), 1):
+        edits = script()
+        for eid, (kind, node, arg, value) in enumerate(edits, 1):
             t0 = time.perf_counter()
             ch.send(eid, kind, node, arg, value)
             first = next_event(ch, lambda e: is_frame(e) and e.get("edit") == eid,
                                "the first frame of edit %d" % eid)
-            full = first
-            if first.get("reduced") or (ch.name == "ws" and first_pass == "reduced"):
-                full = next_event(ch, lambda e: is_frame(e) and e.get("edit") == eid,
-                                  "the full-resolution frame of edit %d" % eid)
+            full = None
+            if eid == len(edits) or edits[eid][0] == "rewire" or kind == "rewire":
+                full = first
+                # Over the WebSocket a frame does not say it is reduced: with the reduced
+                # first pass the first frame of an edit is, the next one is not.
+                if first.get("reduced") or (ch.name == "ws" and first_pass == "reduced"):
+                    full = next_event(ch, lambda e: is_frame(e) and e.get("edit") == eid,
+                                      "the full-resolution frame of edit %d" % eid)
             rows.append({"edit": "%s %s.%s=%s" % (kind, node, arg, value),
                          "firstFrameMs": (first["t"] - t0) * 1000,
-                         "fullFrameMs": (full["t"] - t0) * 1000,
+                         "fullFrameMs": None if full is None else (full["t"] - t0) * 1000,
                          "texrenderLatencyMs": first.get("latency_ms"),
                          "split": first.get("split"), "tier": first.get("tier")})
             time.sleep(THINK)
@@ -243,7 +249,7 @@ def edit_session(transport, tools, textures, first_pass, work):
     rewires = [r for r in rows if r["edit"].startswith("rewire")]
     return {"firstPass": first_pass, "transport": ch.name, "kernelBuilds": builds1 - builds0,
             "firstFrameMs": summary([r["firstFrameMs"] for r in rows]),
-            "fullFrameMs": summary([r["fullFrameMs"] for r in rows]),
+            "fullFrameMs": summary([r["fullFrameMs"] for r in rows if r["fullFrameMs"]]),
             "sliderFirstFrameMs": summary([r["firstFrameMs"] for r in moves]),
             "rewireFirstFrameMs": summary([r["firstFrameMs"] for r in rewires]),
             "edits": rows}
