@@ -92,17 +92,26 @@ static inline float rt_sky_pdf(__global const RtLight *lights, RtShadeParams prm
                            : 0.0f;
 }
 
-/* Samples a light from the surface point p of shading normal n (u.z chooses the light, u.xy
- * the point on it; the sky is sampled cosine-weighted about n, as its radiance is constant);
- * returns the direction, the distance limit, the emitted radiance and the solid-angle pdf
- * (0: no contribution). */
+/* Samples a light from the surface point p of shading normal n, the sky cosine-weighted about n
+ * (its radiance is constant). u.xy is a 2D sampler point: u.x chooses the light, and the part
+ * of u.x within the chosen light's CDF interval, rescaled, is the first coordinate of the point
+ * on it (so the points of one light stay stratified); u.z (an independent number) replaces it
+ * when the interval is too narrow for the float's bits. Returns the direction, the distance
+ * limit, the emitted radiance and the solid-angle pdf (0: no contribution). */
 static inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
                              __global const RtTri *tris, RtShadeParams prm, float3 p,
                              float3 n, float3 u, float3 *wi, float *tmax, float3 *le, int *type) {
-  int li = rt_pick_light(cdf, prm.numLights, u.z);
+#ifdef RT_SAMPLER_PCG
+  int li = rt_pick_light(cdf, prm.numLights, u.z); /* the stream's order of before */
+  float u1 = u.x, u2 = u.y;
+#else
+  int li = rt_pick_light(cdf, prm.numLights, u.x);
+  float c0 = li > 0 ? cdf[li - 1] : 0.0f, width = cdf[li] - c0;
+  float u1 = width >= 1.0f / 4096.0f ? clamp((u.x - c0) / width, 0.0f, 0x1.fffffep-1f) : u.z;
+  float u2 = u.y;
+#endif
   RtLight l = lights[li];
   *type = l.type;
-  float u1 = u.x, u2 = u.y;
   *le = l.radiance.xyz;
   if (l.type == RT_LIGHT_TRIANGLE) {
     __global const RtTri *t = &tris[l.tri];
