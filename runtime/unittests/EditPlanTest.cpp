@@ -1,6 +1,7 @@
 // The live-edit planner (EditPlan.h) without a device: every row of docs/modes.md's "What an
-// edit costs" in every mode texrender runs, from the modes' capabilities (Layout.cpp's table)
-// and the facts the graph library reports about the edited graph.
+// edit costs" for every kind of kernel texrender runs, from capabilities as the backends write
+// them into layout.json (hand-written here, one struct per column of the table) and the facts
+// the graph library reports about the edited graph. No mode names: the planner never sees one.
 #include "texrender/EditPlan.h"
 #include "texrender/Error.h"
 #include "texrender/Layout.h"
@@ -15,14 +16,31 @@ using namespace texrender;
 
 namespace {
 
-KernelCapabilities caps(const char *Mode) {
-  std::optional<KernelCapabilities> C = modeCapabilities(Mode);
-  EXPECT_TRUE(C) << Mode;
-  return C ? *C : KernelCapabilities{};
+/// The kernels of docs/modes.md's edit-cost table, by what their backend publishes.
+enum class Kernel { Interp, Inline, Wavefront, Shape };
+constexpr Kernel Interp = Kernel::Interp, Inline = Kernel::Inline,
+                 Wavefront = Kernel::Wavefront, Shape = Kernel::Shape;
+
+KernelCapabilities caps(Kernel K) {
+  KernelCapabilities C;
+  switch (K) {
+  case Kernel::Interp: // the wiring is data, the value stack's depth a -D
+    C.WiringIsData = C.StackHeadroom = true;
+    break;
+  case Kernel::Inline: // values are literals
+    C.ReEncodes = false;
+    break;
+  case Kernel::Wavefront: // values in args.bin, launches are code
+    break;
+  case Kernel::Shape: // code per shape, an interp fallback of the same args.bin
+    C.ShapeKeyed = C.InterpFallback = true;
+    break;
+  }
+  return C;
 }
 
-const char *plan(const char *Mode, const EditFacts &F, TierState S = {TierPolicy::Auto, 8, 8}) {
-  return editActionName(planEdit(F, caps(Mode), S));
+const char *plan(Kernel K, const EditFacts &F, TierState S = {TierPolicy::Auto, 8, 8}) {
+  return editActionName(planEdit(F, caps(K), S));
 }
 
 /// A parameter value: nothing about the wiring or the kernel changes.
@@ -54,20 +72,13 @@ EditFacts needing(bool OnlyStack, unsigned Slots, unsigned Outputs = 1, bool Att
 
 } // namespace
 
-TEST(EditPlan, ModesAreTheLayoutsOnly) {
-  for (const char *M : {"interp", "inline", "wavefront", "shape"})
-    EXPECT_TRUE(modeCapabilities(M)) << M;
-  EXPECT_FALSE(modeCapabilities("host")); // texrender runs OpenCL output only
-  EXPECT_FALSE(modeCapabilities("Interp"));
-}
-
 // Row 1: a parameter value.
 TEST(EditPlan, ValueEdit) {
-  EXPECT_STREQ(plan("interp", valueEdit()), "upload");
-  EXPECT_STREQ(plan("inline", valueEdit()), "regenerate"); // the value is a literal
-  EXPECT_STREQ(plan("wavefront", valueEdit()), "upload");
+  EXPECT_STREQ(plan(Interp, valueEdit()), "upload");
+  EXPECT_STREQ(plan(Inline, valueEdit()), "regenerate"); // the value is a literal
+  EXPECT_STREQ(plan(Wavefront, valueEdit()), "upload");
   for (TierPolicy T : {TierPolicy::Auto, TierPolicy::Interp, TierPolicy::Shape})
-    EXPECT_STREQ(plan("shape", valueEdit(), {T, 8, 8}), "upload");
+    EXPECT_STREQ(plan(Shape, valueEdit(), {T, 8, 8}), "upload");
 }
 
 // Row 1, shape mode: a baked argument is a literal of the shape code, so its edit is a new shape.
@@ -75,49 +86,49 @@ TEST(EditPlan, BakedArgumentInShapeMode) {
   EditFacts F = valueEdit();
   F.Structural = true; // the argument is {"value": v, "bake": true}
   F.ShapeChanged = true;
-  EXPECT_STREQ(plan("shape", F, {TierPolicy::Auto, 8, 0}), "switch-shapes");
-  EXPECT_STREQ(plan("shape", F, {TierPolicy::Interp, 8, 0}), "upload");
-  EXPECT_STREQ(plan("shape", F, {TierPolicy::Shape, 0, 0}), "regenerate");
+  EXPECT_STREQ(plan(Shape, F, {TierPolicy::Auto, 8, 0}), "switch-shapes");
+  EXPECT_STREQ(plan(Shape, F, {TierPolicy::Interp, 8, 0}), "upload");
+  EXPECT_STREQ(plan(Shape, F, {TierPolicy::Shape, 0, 0}), "regenerate");
   // auto, but the fallback is still building: the edit regenerates in the foreground.
-  EXPECT_STREQ(plan("shape", F, {TierPolicy::Auto, 0, 0}), "regenerate");
+  EXPECT_STREQ(plan(Shape, F, {TierPolicy::Auto, 0, 0}), "regenerate");
 }
 
 // Row 2: a rewiring onto any node of the graph.
 TEST(EditPlan, Rewire) {
-  EXPECT_STREQ(plan("interp", rewire()), "upload"); // the wiring is data
-  EXPECT_STREQ(plan("inline", rewire()), "regenerate");
-  EXPECT_STREQ(plan("wavefront", rewire()), "regenerate"); // the wiring is code (the launches)
-  EXPECT_STREQ(plan("shape", rewire()), "switch-shapes");   // tiered: interp fallback meanwhile
-  EXPECT_STREQ(plan("shape", rewire(), {TierPolicy::Shape, 0, 0}), "regenerate");
-  EXPECT_STREQ(plan("shape", rewire(), {TierPolicy::Interp, 8, 0}), "upload");
+  EXPECT_STREQ(plan(Interp, rewire()), "upload"); // the wiring is data
+  EXPECT_STREQ(plan(Inline, rewire()), "regenerate");
+  EXPECT_STREQ(plan(Wavefront, rewire()), "regenerate"); // the wiring is code (the launches)
+  EXPECT_STREQ(plan(Shape, rewire()), "switch-shapes");   // tiered: interp fallback meanwhile
+  EXPECT_STREQ(plan(Shape, rewire(), {TierPolicy::Shape, 0, 0}), "regenerate");
+  EXPECT_STREQ(plan(Shape, rewire(), {TierPolicy::Interp, 8, 0}), "upload");
 }
 
 // Row 2, shape mode: no build when every material keeps its shape key.
 TEST(EditPlan, RewireKeepingTheShapes) {
   EditFacts F = rewire();
   F.ShapeChanged = false;
-  EXPECT_STREQ(plan("shape", F), "upload");
-  EXPECT_STREQ(plan("shape", F, {TierPolicy::Shape, 0, 0}), "upload");
+  EXPECT_STREQ(plan(Shape, F), "upload");
+  EXPECT_STREQ(plan(Shape, F, {TierPolicy::Shape, 0, 0}), "upload");
   // A layout without kernel.shapeHash: the JSON-level wiring change decides.
   F.ShapeChanged.reset();
-  EXPECT_STREQ(plan("shape", F), "switch-shapes");
+  EXPECT_STREQ(plan(Shape, F), "switch-shapes");
 }
 
 // Row 2, interp: unless the edit needs more than the kernel has.
 TEST(EditPlan, InterpNeedsMoreThanTheKernel) {
-  EXPECT_STREQ(plan("interp", needing(true, 6), {TierPolicy::Auto, 0, 8}), "upload"); // headroom
-  EXPECT_STREQ(plan("interp", needing(true, 9), {TierPolicy::Auto, 0, 8}), "regenerate");
+  EXPECT_STREQ(plan(Interp, needing(true, 6), {TierPolicy::Auto, 0, 8}), "upload"); // headroom
+  EXPECT_STREQ(plan(Interp, needing(true, 9), {TierPolicy::Auto, 0, 8}), "regenerate");
   EditFacts Spilling = needing(true, 6);
   Spilling.Spill = true;
-  EXPECT_STREQ(plan("interp", Spilling, {TierPolicy::Auto, 0, 8}), "regenerate");
-  EXPECT_STREQ(plan("interp", needing(false, 2, 4)), "regenerate");       // more outputs
-  EXPECT_STREQ(plan("interp", needing(false, 2, 1, true)), "regenerate"); // an attribute case
-  EXPECT_STREQ(plan("interp", needing(false, 2)), "regenerate"); // e.g. wires a hoisted parameter
+  EXPECT_STREQ(plan(Interp, Spilling, {TierPolicy::Auto, 0, 8}), "regenerate");
+  EXPECT_STREQ(plan(Interp, needing(false, 2, 4)), "regenerate");       // more outputs
+  EXPECT_STREQ(plan(Interp, needing(false, 2, 1, true)), "regenerate"); // an attribute case
+  EXPECT_STREQ(plan(Interp, needing(false, 2)), "regenerate"); // e.g. wires a hoisted parameter
 }
 
 // Row 2, shape: the interp fallback runs what its value stack, outputs and decoder hold.
 TEST(EditPlan, ShapeFallbackHeadroom) {
-  KernelCapabilities C = caps("shape");
+  KernelCapabilities C = caps(Shape);
   C.MaxOutputs = 2;
   auto P = [&](const EditFacts &F, TierState S) { return editActionName(planEdit(F, C, S)); };
   EXPECT_STREQ(P(needing(true, 6), {TierPolicy::Auto, 8, 0}), "switch-shapes");
@@ -131,9 +142,9 @@ TEST(EditPlan, ShapeFallbackHeadroom) {
 
 // Wavefront and inline have neither headroom nor a fallback.
 TEST(EditPlan, NoHeadroomElsewhere) {
-  for (const char *M : {"inline", "wavefront"}) {
-    EXPECT_STREQ(plan(M, needing(true, 6), {TierPolicy::Auto, 8, 8}), "regenerate") << M;
-    EXPECT_STREQ(plan(M, needing(false, 2, 1, true), {TierPolicy::Auto, 8, 8}), "regenerate") << M;
+  for (Kernel M : {Inline, Wavefront}) {
+    EXPECT_STREQ(plan(M, needing(true, 6), {TierPolicy::Auto, 8, 8}), "regenerate") << static_cast<int>(M);
+    EXPECT_STREQ(plan(M, needing(false, 2, 1, true), {TierPolicy::Auto, 8, 8}), "regenerate") << static_cast<int>(M);
   }
 }
 

@@ -4,6 +4,8 @@
 // What the runtime reads from texcc's output folder (docs/abi.md): layout.json, args.bin and
 // the generated kernel's source.
 
+#include "texcc/Kernel/Manifest.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -39,24 +41,10 @@ struct LayoutImage {
   std::string Path; // resolved
 };
 
-/// What the kernel of a layout can absorb without being made again (docs/modes.md, "What an
-/// edit costs"): the live editor plans with these (EditPlan.h), never with the mode's name.
-struct KernelCapabilities {
-  /// A parameter value is in args.bin, which the graph library re-encodes (false: values are
-  /// literals of the kernel, every edit regenerates it).
-  bool ReEncodes = true;
-  /// Any rewiring within the kernel's function set is an upload (the wiring is data).
-  bool WiringIsData = false;
-  /// The kernel is code per graph shape: an edit that keeps every shape is an upload.
-  bool ShapeKeyed = false;
-  /// An interp kernel of the same args.bin (kernel.interpFallback) can render while a new
-  /// kernel builds (tiered execution).
-  bool InterpFallback = false;
-  /// The kernel's value stack can be built deeper than the graph needs (stack headroom).
-  bool StackHeadroom = false;
-  /// The texture outputs per material the kernel has room for (maxOutputs).
-  unsigned MaxOutputs = 1;
-};
+/// What the kernel of a layout can absorb without being made again: layout.json "capabilities",
+/// written by the mode's backend (texcc/Kernel/Manifest.h); the live editor plans with these
+/// (EditPlan.h), never with the mode's name.
+using KernelCapabilities = texcc::kernel::Capabilities;
 
 struct Layout {
   std::string Dir;        // the texcc output folder
@@ -86,7 +74,8 @@ struct Layout {
   std::vector<std::string> Settings;
   std::vector<LayoutImage> Images;
   std::vector<LayoutMaterial> Materials;
-  std::string Text;              // layout.json as read (for the graph library)
+  std::string Text;              // layout.json as read
+  texcc::kernel::Manifest Manifest; // layout.json, typed (the kernel library's one reader)
   std::vector<uint8_t> ArgsBin;  // args.bin
 
   /// Index of the material called Name, or -1.
@@ -95,11 +84,7 @@ struct Layout {
   std::string materialNames() const;
 };
 
-/// The capabilities of a mode's kernel ("interp", "inline", "wavefront", "shape" as layout.json
-/// "mode" spells it), std::nullopt for any other name.
-std::optional<KernelCapabilities> modeCapabilities(const std::string &Mode);
-
-/// Reads OUTDIR/layout.json and OUTDIR/args.bin. Errors name the file and the JSON path.
+/// Reads OUTDIR/layout.json and OUTDIR/args.bin. Errors name the file, the position and the field (texcc::kernel::readManifest).
 Layout loadLayout(const std::string &OutDir);
 
 } // namespace texrender

@@ -335,7 +335,8 @@ struct Obj {
       fail(at(K), "expected an array of strings, not " + typeName(A));
     for (size_t I = 0; I < A.size(); ++I) {
       if (!A[I].is_string())
-        fail(at(K) + "/" + std::to_string(I), "expected a string, not " + typeName(A[I]));
+        fail(at(K), "expected an array of strings (element " + std::to_string(I) + " is " +
+                        typeName(A[I]) + ")");
       V.push_back(A[I].get<std::string>());
     }
     return V;
@@ -576,7 +577,7 @@ void readTop(const Json &J, Manifest &M) {
     M.Caps.OutputsEntry = M.Kernel.Entry;
   }
   if (M.Caps.InterpFallback && M.Kernel.InterpFallback.empty())
-    fail("/kernel", "missing \"interpFallback\" (the capabilities name an interp fallback kernel)");
+    fail("/kernel/interpFallback", "missing (the capabilities name an interp fallback kernel)");
   M.ScratchFloat4PerHit = O.u("scratchFloat4PerHit", 0);
   M.StackSlots = O.u("stackSlots", 0);
   M.StackLimit = O.u("stackLimit", 32);
