@@ -5,6 +5,7 @@
 
 #include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
+#include "texcc/Kernel/Manifest.h"
 #include "texcc/OutOfMemory.h"
 
 #include <algorithm>
@@ -80,23 +81,23 @@ int runProcess(const std::vector<std::string> &Argv, const std::string &LogPath)
 }
 
 /// Arguments baked on texcc's command line (--bake NODE.ARG) are marked "bake" in layout.json's
-/// nodes but absent from graph.json: marks them baked in G, so that a regeneration keeps them
-/// baked and an edit of one is known to change the shape.
-void carryCommandLineBakes(texcc::graph::Graph &G, const std::string &LayoutText) {
-  json Layout = json::parse(LayoutText, nullptr, false);
-  if (!Layout.is_object() || !Layout.contains("nodes"))
-    return;
+/// nodes (the kernel manifest) but absent from graph.json: marks them baked in G, so that a
+/// regeneration keeps them baked and an edit of one is known to change the shape.
+void carryCommandLineBakes(texcc::graph::Graph &G, const std::string &LayoutText,
+                           const std::string &LayoutFile) {
+  texcc::kernel::Manifest M;
+  texcc::kernel::ManifestError Why;
+  if (!texcc::kernel::readManifest(LayoutText, LayoutFile, M, Why))
+    throw Error(Why.str());
   std::map<std::string, std::vector<std::string>> Baked; // node id -> baked argument names
-  for (const json &N : Layout["nodes"]) {
-    for (const json &A : N.value("args", json::array())) {
-      if (!A.value("bake", false))
+  for (const texcc::kernel::NodeLayout &N : M.Nodes)
+    for (const texcc::kernel::ArgLayout &A : N.Args) {
+      if (!A.Bake)
         continue;
-      Baked[N.value("id", "")].push_back(A.value("name", ""));
-      for (const json &Merged : N.value("merged", json::array()))
-        if (Merged.is_string())
-          Baked[Merged.get<std::string>()].push_back(A.value("name", ""));
+      Baked[N.Id].push_back(A.Name);
+      for (const std::string &Merged : N.Merged)
+        Baked[Merged].push_back(A.Name);
     }
-  }
   using Kind = texcc::graph::ArgValue::Kind;
   for (texcc::graph::Node &N : G.Nodes) {
     auto It = Baked.find(N.Id);
@@ -240,7 +241,7 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
   if (!G)
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
   Model = std::move(*G);
-  carryCommandLineBakes(Model, Lay.Text);
+  carryCommandLineBakes(Model, Lay.Text, Lay.Dir + "/layout.json");
   initEditor(Model);
 }
 

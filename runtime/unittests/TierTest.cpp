@@ -46,7 +46,7 @@ TEST(Tier, ShapeLayoutNeedsItsFallback) {
     loadLayout(Dir.string());
     FAIL() << "no error";
   } catch (const Error &E) {
-    EXPECT_NE(std::string(E.what()).find("/kernel/interpFallback"), std::string::npos) << E.what();
+    EXPECT_NE(std::string(E.what()).find("interpFallback"), std::string::npos) << E.what();
   }
   std::ofstream(Dir / "layout.json")
       << R"({"texcc": 1, "mode": "shape", "kernel": {"source": "proctex.cl",
