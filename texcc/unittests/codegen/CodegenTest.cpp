@@ -209,11 +209,14 @@ TEST(CodegenLayout, AddsModeTargetGraphAndKernelFirst) {
   nlohmann::ordered_json L =
       nlohmann::ordered_json::parse(generateLayout(twoNodeGraph(), options(Mode::Inline)));
   std::vector<std::string> Keys;
-  for (auto It = L.begin(); It != L.end() && Keys.size() < 7; ++It)
+  for (auto It = L.begin(); It != L.end() && Keys.size() < 8; ++It)
     Keys.push_back(It.key());
   EXPECT_EQ(Keys, (std::vector<std::string>{"texcc", "mode", "target", "graph", "compileOptions",
-                                            "kernel", "scratchFloat4PerHit"}));
+                                            "kernel", "capabilities", "scratchFloat4PerHit"}));
   EXPECT_EQ(L["mode"], "inline");
+  // The inline backend's capabilities: values are literals, every edit regenerates.
+  EXPECT_EQ(L["capabilities"]["reEncodes"], false);
+  EXPECT_EQ(L["capabilities"]["outputsEntry"], "texcc_proctex");
   EXPECT_EQ(L["kernel"]["entry"], "texcc_proctex");
   EXPECT_EQ(L["graph"], "/abs/g.json");
 }
