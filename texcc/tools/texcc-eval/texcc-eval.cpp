@@ -15,6 +15,8 @@
 #include "texcc/Support/TextureFault.h"
 
 #include <CL/opencl.hpp>
+#include "texcc/Kernel/Manifest.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -123,21 +125,21 @@ TexccHitAttrs randomHit(Rng &R) {
 }
 
 LayoutInfo readLayout(const std::string &OutDir) {
-  Json L = Json::parse(readFile(OutDir + "/layout.json"));
+  texcc::kernel::Manifest L;
+  texcc::kernel::ManifestError Why;
+  if (!texcc::kernel::readManifestFile(OutDir + "/layout.json", L, Why))
+    die(Why.str());
   LayoutInfo Info;
-  Info.MaxOutputs = L.value("maxOutputs", 1u);
-  Info.ScratchPerHit = L.value("scratchFloat4PerHit", 0u);
-  for (const Json &M : L.at("materials"))
-    Info.OutputsPerMaterial.push_back(static_cast<unsigned>(M.at("outputs").size()));
+  Info.MaxOutputs = L.MaxOutputs;
+  Info.ScratchPerHit = L.ScratchFloat4PerHit;
+  for (const texcc::kernel::MaterialLayout &M : L.Materials)
+    Info.OutputsPerMaterial.push_back(static_cast<unsigned>(M.Outputs.size()));
   Info.NumMaterials = static_cast<unsigned>(Info.OutputsPerMaterial.size());
-  const Json &K = L.at("kernel");
-  Info.Entry = K.at("entry").get<std::string>();
-  Info.Uniforms = K.value("uniforms", "");
-  if (K.contains("launches"))
-    for (const Json &Launch : K.at("launches"))
-      Info.Launches.push_back(Launch.at("kernel").get<std::string>());
-  if (L.contains("images"))
-    Info.NumImages = static_cast<unsigned>(L.at("images").size());
+  Info.Entry = L.Kernel.Entry;
+  Info.Uniforms = L.Kernel.Uniforms;
+  for (const texcc::kernel::LaunchLayout &Launch : L.Kernel.Launches)
+    Info.Launches.push_back(Launch.Kernel);
+  Info.NumImages = static_cast<unsigned>(L.Images.size());
   return Info;
 }
 
