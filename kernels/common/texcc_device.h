@@ -113,15 +113,6 @@ static inline bool texcc_loop_charge_span(const TexccCtx *c, long span, int line
                            line);
 }
 
-/* A loop whose trip count is a span texcc can compute before it runs (a `for` over a bound that
- * the loop does not change, e.g. fbm's octaves): `if (!texcc_loop_charge_span(texcc_ctx,
- * (long)(n) - (long)(a), __LINE__)) {} else for (int i = a; i < n; ++i)`, charged max(0, span)
- * once as texcc_loop_charge. */
-static inline bool texcc_loop_charge_span(const TexccCtx *c, long span, int line) {
-  return texcc_loop_charge(c, span <= 0 ? 0u : span >= (long)UINT_MAX ? UINT_MAX : (uint)span,
-                           line);
-}
-
 /* texcc turns every read `p[i]` of a __global array parameter into
  * `texcc_read_T(texcc_ctx, p, (i), texcc_n_p, __LINE__)`, texcc_n_p being the array's length
  * (a hidden parameter texcc adds). Out of range: 0, and the first such read's line, node, index
