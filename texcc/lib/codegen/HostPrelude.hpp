@@ -470,11 +470,6 @@ inline float3 texcc_setting_CameraPos(const TexccCtx *c) {
   return texcc_f3(c->settings->cameraPos);
 }
 
-inline float4 texcc_texel(const cl_float4 *texels, TexccImageInfo im, int x, int y) {
-  x = x % im.width;
-  if (x < 0)
-    x += im.width;
-  y = y % im.height;
 // Bump: as texcc_device.h's texcc_bump_step, texcc_bump_tangent, texcc_position_offset and
 // texcc_bump (the same operations in the same order).
 #ifndef TEXCC_BUMP_ANGLE
@@ -517,6 +512,11 @@ inline float3 texcc_bump(const TexccCtx *c, float h, float strength, float dista
   return normalize(s * tilted + (1.0f - s) * normal);
 }
 
+inline float4 texcc_texel(const cl_float4 *texels, TexccImageInfo im, int x, int y) {
+  x = x % im.width;
+  if (x < 0)
+    x += im.width;
+  y = y % im.height;
   if (y < 0)
     y += im.height;
   return texcc_f4(texels[im.offset + y * im.width + x]);
