@@ -778,6 +778,7 @@ void Session::adoptJob() {
       std::fputc('\n', stderr);
     say("texcc failed: the last good kernel keeps rendering");
     errorEvent(J->Log);
+    Dirty = true; // a new accumulation of the last good state shows that it is still there
     return;
   }
   unsigned Builds = R->cl().foregroundBuilds();
