@@ -120,6 +120,9 @@ Layout loadLayout(const std::string &OutDir) {
   if (!texcc::kernel::readManifest(L.Text, File, L.Manifest, Why))
     throw Error(Why.str());
   const texcc::kernel::Manifest &M = L.Manifest;
+  if (M.Mode.empty())
+    throw Error(File + ": /: no \"mode\" and no \"kernel\": a graph-only layout (texcc-graph), "
+                       "not a texture folder made by texcc");
   if (M.Target != "opencl")
     throw Error(File + ": /target: texrender runs OpenCL output only (texcc --target=opencl)");
   L.Mode = M.Mode;

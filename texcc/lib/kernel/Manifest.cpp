@@ -536,13 +536,16 @@ void readTop(const Json &J, Manifest &M) {
     fail("/texcc", "layout version " + J["texcc"].dump() + ", expected " +
                        std::to_string(ManifestVersion) + " (run this texcc again)");
   M.Version = ManifestVersion;
-  M.Mode = O.str("mode");
+  // A graph-only layout (texcc-graph) has neither a mode nor a kernel.
+  const bool GraphOnly = !O.has("mode") && !O.has("kernel");
+  M.Mode = GraphOnly ? std::string() : O.str("mode");
   M.Target = O.str("target", std::string("opencl"));
   M.Graph = O.str("graph", std::string());
   M.HasCompileOptions = O.has("compileOptions");
   M.CompileOptions = M.HasCompileOptions ? O.strings("compileOptions")
+                     : GraphOnly         ? std::vector<std::string>{}
                                          : std::vector<std::string>{"--mode=" + M.Mode};
-  {
+  if (!GraphOnly) {
     Obj K(O.req("kernel"), "/kernel");
     M.Kernel.Source = K.str("source", std::string("proctex.cl"));
     M.Kernel.Entry = K.str("entry", std::string("texcc_proctex"));
@@ -568,6 +571,9 @@ void readTop(const Json &J, Manifest &M) {
   M.HasCapabilities = O.has("capabilities");
   if (M.HasCapabilities) {
     M.Caps = readCapabilities(Obj(J["capabilities"], "/capabilities"));
+  } else if (GraphOnly) {
+    M.Caps = Capabilities{};
+    M.Caps.MaxOutputs = M.MaxOutputs;
   } else {
     std::optional<Capabilities> C = capabilitiesOfMode(M.Mode);
     if (!C)
@@ -801,12 +807,18 @@ OJson argJson(const ArgLayout &A) {
 std::string writeManifest(const Manifest &M) {
   OJson J;
   J["texcc"] = M.Version;
-  J["mode"] = M.Mode;
+  // A graph-only layout (texcc-graph: no mode, no kernel) has no mode, options, kernel or
+  // capabilities to write.
+  const bool HasKernel = !M.Mode.empty();
+  if (HasKernel)
+    J["mode"] = M.Mode;
   J["target"] = M.Target;
   J["graph"] = M.Graph;
-  J["compileOptions"] = M.CompileOptions;
-  J["kernel"] = kernelJson(M.Kernel);
-  J["capabilities"] = capabilitiesJson(M.Caps);
+  if (HasKernel) {
+    J["compileOptions"] = M.CompileOptions;
+    J["kernel"] = kernelJson(M.Kernel);
+    J["capabilities"] = capabilitiesJson(M.Caps);
+  }
   J["scratchFloat4PerHit"] = M.ScratchFloat4PerHit;
   J["stackSlots"] = M.StackSlots;
   J["stackLimit"] = M.StackLimit;
