@@ -675,7 +675,19 @@ def tail_sections():
                        ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`; its AO figure is now `bench/ao.py`)")):
         if os.path.exists(os.path.join(common.ROOT, name)):
             lines.append("- [%s](%s): %s" % (name, name, text))
+    lines += bvh_build_lines()
     return lines + [""]
+
+
+def bvh_build_lines():
+    """The atrium's BVH build times, quoted from their one owner, bench/scenes.md's table."""
+    path = os.path.join(common.ROOT, "bench/scenes.md")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        rows = [l for l in f if l.startswith("| BVH build")]
+    return ["", "BVH build on the atrium, both builders (from bench/scenes.md):", ""] + [
+        "- " + " — ".join(c.strip() for c in row.strip().strip("|").split("|")) for row in rows]
 
 
 def write(args=None):
