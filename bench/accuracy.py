@@ -101,17 +101,8 @@ def peer_settings(quick):
 def sampler_kernels(work, sampler):
     """kernels/ as it is (sampler "sobol"), or with RT_SAMPLER_PCG (the PCG stream of before
     issue 26, bit for bit) put in front of rt_sampling.h."""
-    import shutil
-    out = os.path.join(work, "kernels-" + sampler)
-    shutil.rmtree(out, ignore_errors=True)
-    shutil.copytree(os.path.join(common.ROOT, "kernels"), out)
-    if sampler == "pcg":
-        path = os.path.join(out, "common", "rt_sampling.h")
-        with open(path) as f:
-            src = f.read()
-        with open(path, "w") as f:
-            f.write("#define RT_SAMPLER_PCG 1\n" + src)
-    return out
+    return common.kernel_variant(work, sampler, {"common/rt_sampling.h": "#define RT_SAMPLER_PCG 1\n"}
+                                 if sampler == "pcg" else {})
 
 
 def reference(path, make):

@@ -200,3 +200,19 @@ def fmt(x, digits=3):
 
 def pct(x):
     return ("%+.1f%%" if abs(x) < 10 else "%+.0f%%") % x
+
+
+def kernel_variant(work, name, prepend):
+    """A copy of kernels/ in work/kernels-NAME with text put in front of some of its files:
+    prepend maps a path inside kernels/ to the lines (bench-only defines) to insert."""
+    import shutil
+    out = os.path.join(work, "kernels-" + name)
+    shutil.rmtree(out, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "kernels"), out)
+    for rel, text in prepend.items():
+        path = os.path.join(out, rel)
+        with open(path) as f:
+            src = f.read()
+        with open(path, "w") as f:
+            f.write(text + src)
+    return out

@@ -19,7 +19,6 @@ pixels and RGB), which is what the error of one image at that spp is made of.
 import argparse
 import json
 import os
-import shutil
 import subprocess
 import sys
 import time
@@ -46,22 +45,11 @@ def split_kernels(work, part, sampler="sobol"):
     """A copy of kernels/ whose shade.cl keeps only `part` (and, with sampler "pcg", whose
     sampler is the PCG stream of before issue 26: RT_SAMPLER_PCG in rt_sampling.h)."""
     mask, lo, hi = PARTS[part]
-    out = os.path.join(work, "kernels-%s-%s" % (sampler, part))
-    shutil.rmtree(out, ignore_errors=True)
-    shutil.copytree(os.path.join(common.ROOT, "kernels"), out)
-    path = os.path.join(out, "shade.cl")
-    with open(path) as f:
-        src = f.read()
-    with open(path, "w") as f:
-        f.write("#define RT_SPLIT_LIGHTS %d\n#define RT_SPLIT_MIN_LENGTH %d\n"
-                "#define RT_SPLIT_MAX_LENGTH %d\n" % (mask, lo, hi) + src)
+    prepend = {"shade.cl": "#define RT_SPLIT_LIGHTS %d\n#define RT_SPLIT_MIN_LENGTH %d\n"
+                           "#define RT_SPLIT_MAX_LENGTH %d\n" % (mask, lo, hi)}
     if sampler == "pcg":
-        path = os.path.join(out, "common", "rt_sampling.h")
-        with open(path) as f:
-            src = f.read()
-        with open(path, "w") as f:
-            f.write("#define RT_SAMPLER_PCG 1\n" + src)
-    return out
+        prepend["common/rt_sampling.h"] = "#define RT_SAMPLER_PCG 1\n"
+    return common.kernel_variant(work, "%s-%s" % (sampler, part), prepend)
 
 
 def read_exr(path):
