@@ -261,8 +261,8 @@ LiveEditor::makeEditor(texcc::graph::Graph G) const {
   std::string Why;
   // The kernel's quickened opcodes: an edit re-encodes one only where its pattern still
   // occurs, the plain opcodes elsewhere (docs/modes.md).
-  if (!texcc::graph::readLayoutSignatures(Lay.Text, Sigs, Opts.FixedFunctionIds, Why) ||
-      !texcc::graph::readLayoutQuickened(Lay.Text, Opts.Quickened, Why))
+  if (!texcc::graph::readLayoutSignatures(Lay.Manifest, Sigs, Opts.FixedFunctionIds, Why) ||
+      !texcc::graph::readLayoutQuickened(Lay.Manifest, Opts.Quickened, Why))
     throw Error(Lay.Dir + "/layout.json: " + Why);
   // layout.json lists the function of every node, dead ones included, and the interp kernel
   // (interp mode, shape mode's fallback) has a case for each: a rewiring onto any node is a

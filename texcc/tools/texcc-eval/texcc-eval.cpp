@@ -12,7 +12,7 @@
 #include "texcc_abi.h"
 #include "texcc/OutOfMemory.h"
 #include "texcc/Support/File.h"
-#include "texcc/Support/TextureFault.h"
+#include "texcc/Kernel/TextureFault.h"
 
 #include <CL/opencl.hpp>
 #include "texcc/Kernel/Manifest.h"
@@ -188,7 +188,10 @@ void printOutputs(const LayoutInfo &Info, const Options &Opts, const std::vector
                              size_t Hit) {
   std::string ArgsBin, Why; // without it, an instruction's node is "?"
   texcc::readRegularFile(Opts.OutDir + "/args.bin", ArgsBin, Why);
-  die(texcc::describeTextureFault(F, readFile(Opts.OutDir + "/layout.json"), ArgsBin) +
+  texcc::kernel::Manifest M; // read again on this error path only; "?" names if it fails
+  texcc::kernel::ManifestError ManifestWhy;
+  texcc::kernel::readManifestFile(Opts.OutDir + "/layout.json", M, ManifestWhy);
+  die(texcc::describeTextureFault(F, M, ArgsBin) +
       " at grid point " + std::to_string(Hit / std::max(Info.NumMaterials, 1u)));
 }
 
