@@ -241,7 +241,12 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   }
   /* A shading normal from the material (a bump node): kept on the side of the geometric
    * normal, and tilted towards it so that it is at least a little above the surface. */
+  /* The smooth normal before the bump: a bumped diffuse leaf is shadowed against it as
+   * Cycles' bump map correction (on by default) does (rt_bump_shadowing). */
+  float3 nSmooth = s.ns;
+  int bumped = 0;
   if (leaf.in[RT_IN_NORMAL].output >= 0) {
+    bumped = 1;
     float3 nb = rt_input(leaf.in[RT_IN_NORMAL], outputs, base).xyz;
     if (!rt_finite3(nb)) {
       rt_poison(paths, pid, p, rng);
@@ -274,6 +279,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
                      ? rt_principled_eval(pr, s.ns, wo, wi, &bp)
                      : rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
       float cosI = dot(wi, s.ns);
+      if (bumped && leaf.type == RT_BSDF_DIFFUSE)
+        f *= rt_bump_shadowing(nSmooth, s.ns, wi);
       float3 c = thr * f * le * (cosI * rt_mis(lp, bp) / lp);
 #ifdef RT_SPLIT_LIGHTS
       c *= RT_KEEP(type == RT_LIGHT_TRIANGLE ? RT_SPLIT_MESH
@@ -309,6 +316,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       wgt = rt_principled_sample(pr, s.ns, wo, u1, u2, &wi, &pdf);
     } else {
       wgt = rt_bsdf_sample(leaf.type, color, param, s.ns, wo, u1, u2, &wi, &pdf, &delta);
+      if (bumped && leaf.type == RT_BSDF_DIFFUSE)
+        wgt *= rt_bump_shadowing(nSmooth, s.ns, wi);
     }
     if (!rt_finite3(wgt)) {
       rt_poison(paths, pid, p, rng);

@@ -1,6 +1,7 @@
-/* rt_bsdf.h: the fixed BSDFs (diffuse, GGX glossy, mirror, the Principled subset) in world
- * space around the shading normal n. eval returns f (without the cosine) and the solid-angle
- * pdf of sampling wi; sample returns wi and the weight f * cos / pdf. OpenCL C 1.2. */
+/* rt_bsdf.h: the fixed BSDFs (diffuse, GGX glossy as Blender's Glossy BSDF, mirror, the
+ * Principled subset) in world space around the shading normal n. eval returns f (without the
+ * cosine) and the solid-angle pdf of sampling wi; sample returns wi and the weight
+ * f * cos / pdf. OpenCL C 1.2. */
 #ifndef RT_BSDF_H
 #define RT_BSDF_H
 
@@ -30,6 +31,19 @@ static inline float3 rt_schlick(float3 f0, float cosD) {
   return f0 + (1.0f - f0) * m5;
 }
 
+/* A table of rt_ggx_albedo.h at (roughness, cos wo), bilinear. */
+static inline float rt_ggx_table(__constant const float *t, float roughness, float cosO) {
+  const int n = RT_GGX_ALBEDO_N;
+  float x = clamp(cosO * n - 0.5f, 0.0f, (float)(n - 1));
+  float y = clamp(roughness, 0.0f, 1.0f) * (float)(n - 1);
+  int i0 = (int)x, j0 = (int)y;
+  int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
+  float fx = x - (float)i0, fy = y - (float)j0;
+  float e0 = mix(t[j0 * n + i0], t[j0 * n + i1], fx);
+  float e1 = mix(t[j1 * n + i0], t[j1 * n + i1], fx);
+  return mix(e0, e1, fy);
+}
+
 /* f and pdf of a non-delta leaf (diffuse or glossy). */
 static inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float3 n, float3 wo,
                            float3 wi, float *pdf) {
@@ -51,9 +65,28 @@ static inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float
     float d = rt_ggx_d(cosH, a2);
     *pdf = d * cosH / (4.0f * cosD);
     float g = rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2);
-    return rt_schlick(color, cosD) * (d * g / (4.0f * cosI * cosO));
+    /* Blender's Glossy BSDF: no Fresnel (the colour is the reflectance at every angle), the
+     * energy single-scattering GGX loses given back as its multiscatter GGX does, scaled by
+     * 1 + color (1 - E) / E (E: the lobe's albedo at wo). */
+    float e = fmax(rt_ggx_table(rt_ggx_albedo_table, roughness, cosO), 1e-3f);
+    return color * (1.0f + color * ((1.0f - e) / e)) * (d * g / (4.0f * cosI * cosO));
   }
   return (float3)(0.0f);
+}
+
+/* Cycles' bump shadowing of a diffuse lobe whose normal nb a bump moved off the smooth normal
+ * ns: 0 for light below ns, else the GGX masking G1 at wi's angle to ns, of a roughness that
+ * grows with the angle between nb and ns (alpha^2 = tan^2 / 8, at most 1); 1 without bump. */
+static inline float rt_bump_shadowing(float3 ns, float3 nb, float3 wi) {
+  float cosD = dot(ns, nb), cosI = dot(ns, wi);
+  if (cosD >= 1.0f)
+    return 1.0f;
+  if (cosI * cosD * dot(nb, wi) < 0.0f || cosI < 1e-6f)
+    return 0.0f;
+  if (cosI >= 1.0f)
+    return 1.0f;
+  float a2 = clamp(0.125f * (1.0f / (cosD * cosD) - 1.0f), 0.0f, 1.0f);
+  return rt_ggx_g1(cosI, a2);
 }
 
 /* Samples wi for a leaf; returns the weight f*cos/pdf (0 when the sample is invalid). */
@@ -109,19 +142,6 @@ static inline float rt_schlick1(float f0, float cosD) {
   float m = 1.0f - clamp(cosD, 0.0f, 1.0f);
   float m5 = m * m * m * m * m;
   return f0 + (1.0f - f0) * m5;
-}
-
-/* A table of rt_ggx_albedo.h at (roughness, cos wo), bilinear. */
-static inline float rt_ggx_table(__constant const float *t, float roughness, float cosO) {
-  const int n = RT_GGX_ALBEDO_N;
-  float x = clamp(cosO * n - 0.5f, 0.0f, (float)(n - 1));
-  float y = clamp(roughness, 0.0f, 1.0f) * (float)(n - 1);
-  int i0 = (int)x, j0 = (int)y;
-  int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
-  float fx = x - (float)i0, fy = y - (float)j0;
-  float e0 = mix(t[j0 * n + i0], t[j0 * n + i1], fx);
-  float e1 = mix(t[j1 * n + i0], t[j1 * n + i1], fx);
-  return mix(e0, e1, fy);
 }
 
 /* What principled needs at wo: the multiple-scattering factor (1 - E) / E of its GGX lobes,
