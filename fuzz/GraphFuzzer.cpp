@@ -1,11 +1,13 @@
 // fuzz-graph: graph.json text through the whole graph library: parseGraph, then
 // compileGraph (validation, passes, stack slots, argument layout, args.bin), layoutJson and
 // readLayoutSignatures (the runtime's live-edit path), which must accept what layoutJson wrote.
-// Quickened opcodes are on, and the live editor's invariant is checked: compiling again with
-// the table read back from layout.json gives the same args.bin.
+// Quickened opcodes are on (the interp backend's choice, texcc_codegen), and the live editor's
+// invariant is checked: compiling again with the table read back from layout.json gives the
+// same args.bin.
 // Validation needs function signatures; a fixed set (the graph tests' sigs.json: the rust
 // example's functions plus helpers of every parameter kind) lets inputs that name them get
 // past validation into the passes. Diagnostics are printed to exercise their line:col code.
+#include "texcc/Codegen/Backend.h"
 #include "texcc/Graph/Compile.h"
 #include "texcc/Graph/Graph.h"
 
@@ -45,10 +47,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *Data, size_t Size) {
     gr::CompileOptions Opts;
     // A small cap so that spilling to the global slice is reached too.
     Opts.StackLimit = 4;
-    Opts.MaxQuickened = 8;
     for (const auto &[Name, Sig] : signatures())
       Opts.KnownFunctions.push_back(Name);
     if (std::optional<gr::CompiledGraph> CG = gr::compileGraph(*G, signatures(), Opts, Diags)) {
+      texcc::codegen::BackendOptions Interp; // 8 quickened opcodes, as texcc's default
+      texcc::codegen::backendFor(texcc::codegen::Mode::Interp, texcc::codegen::Target::OpenCL)
+          .finishGraph(*CG, Interp, nullptr);
       // The runtime reads the signatures back from layout.json for live edits.
       const std::string Layout = gr::layoutJson(*CG);
       gr::SignatureMap Back;

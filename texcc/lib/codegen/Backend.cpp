@@ -5,6 +5,8 @@
 #include "texcc/Codegen/Backend.h"
 
 #include "Emit.h"
+#include "texcc/Codegen/Quickening.h"
+#include "texcc/Graph/Passes.h"
 #include "texcc/Kernel/Attributes.h"
 
 namespace texcc::codegen {
@@ -38,8 +40,13 @@ class InterpBackend final : public Backend {
 public:
   const char *name() const override { return "interp"; }
   bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
-  void configureGraph(graph::CompileOptions &C, const BackendOptions &O) const override {
-    C.MaxQuickened = O.MaxQuickened;
+  /// The quickened opcodes: the most frequent instruction patterns get a case of their own.
+  void finishGraph(graph::CompiledGraph &CG, const BackendOptions &O,
+                   std::ostream *Log) const override {
+    if (O.MaxQuickened == 0)
+      return;
+    graph::applyQuickened(CG, chooseQuickened(CG, O.MaxQuickened), Log);
+    graph::encodeArgsBin(CG);
   }
   void configureCodegen(CodegenOptions &C, const BackendOptions &O) const override {
     C.InterpHoists = !O.NoHoist;

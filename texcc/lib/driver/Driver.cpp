@@ -160,7 +160,6 @@ int compile(const Options &Opts) {
   gr::CompileOptions CompileOpts;
   CompileOpts.StackLimit = Opts.StackLimit;
   CompileOpts.LocalStackLimit = Opts.LocalStackLimit;
-  B.configureGraph(CompileOpts, Opts.Backend);
   for (const fe::TranslatedSource &S : FR->Sources)
     for (const auto &Fn : S.Functions)
       CompileOpts.KnownFunctions.push_back(Fn.first);
@@ -176,6 +175,8 @@ int compile(const Options &Opts) {
   CompileDiags.print(std::cerr);
   if (!CG)
     return 1;
+  whileAllocating("finishing the graph for the backend",
+                  [&] { B.finishGraph(*CG, Opts.Backend, Opts.Log); });
 
   cg::CodegenOptions CO;
   CO.EvalMode = Opts.EvalMode;

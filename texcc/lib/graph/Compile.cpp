@@ -43,8 +43,10 @@ std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Si
     computeWavefrontOrder(*CG, Opts.Log);
   });
   whileAllocating("laying out the arguments", [&] { layoutArguments(*CG, Opts.Log); });
-  whileAllocating("selecting quickened opcodes", [&] { selectQuickened(*CG, Opts, Opts.Log); });
-  whileAllocating("encoding args.bin", [&] { encodeArgsBin(*CG); });
+  whileAllocating("encoding args.bin", [&] {
+    applyQuickened(*CG, Opts.Quickened, Opts.Log); // the kernel's table (live edits)
+    encodeArgsBin(*CG);
+  });
   return CG;
 }
 

@@ -57,11 +57,9 @@ bool GraphEditor::init(DiagnosticSink &Diags) {
     for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id)
       if (!CG.FunctionsById[Id].empty())
         Opts.FixedFunctionIds[CG.FunctionsById[Id]] = static_cast<unsigned>(Id);
-  // Likewise its quickened opcodes (the table given, or the one chosen now): later compiles
-  // apply them and never choose others, whose cases the kernel lacks.
-  Opts.Quickened = CG.Quickened;
-  Opts.MaxQuickened = 0;
-  NeedsRebuild = NeedsCode = NeedsAttributeCase = false;
+  // Its quickened opcodes are Opts.Quickened (the graph library never chooses others, whose
+  // cases the kernel would lack): later compiles apply the same table.
+  NeedsRebuild = NeedsCode = NeedsAttributeCase = NeedsFunction = false;
   return true;
 }
 
@@ -71,8 +69,9 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
     return false;
   CG = std::move(*C);
   NeedsCode = CG.MaxOutputs > KernelMaxOutputs;
+  NeedsFunction = false;
   for (const CompiledNode &N : CG.Nodes) {
-    NeedsCode |= !Opts.FixedFunctionIds.count(N.Fn);
+    NeedsFunction |= !Opts.FixedFunctionIds.count(N.Fn);
     if (Opts.InterpHoistedCalls)
       for (unsigned P : CG.Signatures.at(N.Fn).HoistedFrom)
         NeedsCode |= P >= N.Args.size() || N.Args[P].Src != CompiledArg::Source::Constant;
@@ -80,7 +79,7 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
   NeedsAttributeCase = !std::includes(
       KernelArgumentAttributes.begin(), KernelArgumentAttributes.end(),
       CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());
-  NeedsCode |= NeedsAttributeCase;
+  NeedsCode |= NeedsAttributeCase || NeedsFunction;
   NeedsRebuild = NeedsCode || CG.StackSlots > KernelStackSlots;
   return true;
 }
@@ -143,11 +142,11 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
         // An int value is part of a quickened pattern: the instruction now runs the entry of
         // the kernel's table (pinned by init) for its new value, or its plain case (a new
         // opcode word).
-        selectQuickened(CG, Opts, nullptr);
+        applyQuickened(CG, Opts.Quickened, nullptr);
         encodeArgsBin(CG);
       }
       G = std::move(Edited);
-      NeedsRebuild = NeedsCode = NeedsAttributeCase = false;
+      NeedsRebuild = NeedsCode = NeedsAttributeCase = NeedsFunction = false;
       return true;
     }
   }

@@ -1,13 +1,13 @@
-// Quickened opcodes of the interp kernel (docs/modes.md): an instruction whose function and argument sources (constant, int value, value-stack slot, which
-// attribute, broadcast or not) match an entry of the table runs that entry's case, which reads
-// every argument straight from where the pattern says instead of decoding the kind of each
-// source word, and has int constants as literals. Chosen from the patterns
-// the programs contain (texcc) or taken from the kernel's table (live edits); encodeArgsBin
-// writes their opcodes.
+// Encoding with the interp kernel's quickened opcodes (docs/modes.md): an instruction whose
+// function and argument sources (constant, int value, value-stack slot, which attribute,
+// broadcast or not) match an entry of the table runs that entry's case, which reads every
+// argument straight from where the pattern says instead of decoding the kind of each source
+// word, and has int constants as literals. The table is given: the interp backend chooses it
+// (texcc/lib/codegen/Quickening.cpp), a live edit takes the kernel's; encodeArgsBin writes the
+// opcodes. The typed sources and their one spelling in layout.json live here.
 
 #include "texcc/Graph/Passes.h"
 
-#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <map>
@@ -86,22 +86,6 @@ bool parseSource(const std::string &Text, ArgumentSource &S) {
 
 namespace {
 
-std::vector<ArgumentSource> sourcesOf(const CompiledNode &N) {
-  std::vector<ArgumentSource> S;
-  for (const CompiledArg &A : N.Args)
-    S.push_back(argumentSource(A));
-  return S;
-}
-
-/// The pattern instruction J of M runs: its function and sources. Opcode unset.
-QuickenedOp patternAt(const CompiledGraph &CG, const CompiledMaterial &M, size_t J) {
-  QuickenedOp P;
-  const CompiledNode &N = CG.Nodes[M.Program[J].Node];
-  P.Fn = N.Fn;
-  P.Sources = sourcesOf(N);
-  return P;
-}
-
 /// A pattern without its opcode, as a map key: patterns are looked up once per instruction (a
 /// scan of the patterns seen so far was quadratic in the number of distinct functions).
 using PatternKey = std::pair<std::string, std::vector<ArgumentSource>>;
@@ -116,39 +100,16 @@ std::string describe(const QuickenedOp &Q) {
 
 } // namespace
 
-void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log) {
-  std::vector<QuickenedOp> Table = Opts.Quickened;
-  if (Table.empty() && Opts.MaxQuickened > 0) {
-    // Every instruction's pattern, counted over all programs; ties in order of first
-    // occurrence.
-    std::vector<QuickenedOp> Order;
-    std::vector<unsigned> Count;
-    std::map<PatternKey, size_t> IndexOf;
-    for (const CompiledMaterial &M : CG.Materials)
-      for (size_t J = 0; J < M.Program.size(); ++J) {
-        QuickenedOp P = patternAt(CG, M, J);
-        auto [It, New] = IndexOf.emplace(keyOf(P), Order.size());
-        if (New) {
-          Order.push_back(std::move(P));
-          Count.push_back(1);
-        } else {
-          ++Count[It->second];
-        }
-      }
-    std::vector<size_t> Rank(Order.size());
-    for (size_t K = 0; K < Rank.size(); ++K)
-      Rank[K] = K;
-    std::stable_sort(Rank.begin(), Rank.end(),
-                     [&](size_t A, size_t B) { return Count[A] > Count[B]; });
-    if (Rank.size() > Opts.MaxQuickened)
-      Rank.resize(Opts.MaxQuickened);
-    const unsigned First = static_cast<unsigned>(CG.FunctionsById.size());
-    for (size_t K : Rank) {
-      QuickenedOp Q = Order[K];
-      Q.Opcode = First + static_cast<unsigned>(Table.size());
-      Table.push_back(Q);
-    }
-  }
+QuickenedOp instructionPattern(const CompiledGraph &CG, const CompiledMaterial &M, size_t J) {
+  QuickenedOp P;
+  const CompiledNode &N = CG.Nodes[M.Program[J].Node];
+  P.Fn = N.Fn;
+  for (const CompiledArg &A : N.Args)
+    P.Sources.push_back(argumentSource(A));
+  return P;
+}
+
+void applyQuickened(CompiledGraph &CG, std::vector<QuickenedOp> Table, std::ostream *Log) {
   std::vector<unsigned> Uses(Table.size(), 0);
   std::map<PatternKey, size_t> TableIndex; // the first entry of each pattern
   for (size_t K = 0; K < Table.size(); ++K)
@@ -157,18 +118,18 @@ void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream
     for (size_t J = 0; J < M.Program.size(); ++J) {
       Instruction &In = M.Program[J];
       In.Quick = -1;
-      auto It = TableIndex.find(keyOf(patternAt(CG, M, J)));
+      auto It = TableIndex.find(keyOf(instructionPattern(CG, M, J)));
       if (It != TableIndex.end()) {
         In.Quick = static_cast<int>(It->second);
         ++Uses[In.Quick];
       }
     }
-  CG.Quickened = Table;
+  CG.Quickened = std::move(Table);
   if (!Log)
     return;
-  for (size_t K = 0; K < Table.size(); ++K)
-    *Log << "quickened: opcode " << Table[K].Opcode << ": " << describe(Table[K]) << ", "
-         << Uses[K] << " instruction" << (Uses[K] == 1 ? "" : "s") << "\n";
+  for (size_t K = 0; K < CG.Quickened.size(); ++K)
+    *Log << "quickened: opcode " << CG.Quickened[K].Opcode << ": " << describe(CG.Quickened[K])
+         << ", " << Uses[K] << " instruction" << (Uses[K] == 1 ? "" : "s") << "\n";
 }
 
 } // namespace texcc::graph

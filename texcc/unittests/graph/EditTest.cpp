@@ -186,6 +186,7 @@ TEST(GraphEditor, DeadNodesFunctionNeedsNoRebuild) {
   DiagnosticSink D;
   ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D);
   EXPECT_FALSE(E.needsRebuild());
+  EXPECT_FALSE(E.needsFunction());
   EXPECT_EQ(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
   EXPECT_EQ(E.compiled().FunctionsById, Ids);
 }
@@ -202,7 +203,10 @@ TEST(GraphEditor, NewFunctionNeedsARebuild) {
   ASSERT_TRUE(E.init(D)) << text(D);
   ASSERT_TRUE(E.rewire("s", "b", "u", D)) << text(D);
   EXPECT_TRUE(E.needsRebuild());
+  EXPECT_TRUE(E.needsFunction()); // no fallback either (EditPlan: docs/modes.md's third row)
   EXPECT_FALSE(E.needsOnlyStackSlots()); // no headroom has a case for 'neg'
+  ASSERT_TRUE(E.rewire("s", "b", "a2", D)) << text(D); // back onto a function it has
+  EXPECT_FALSE(E.needsFunction());
   EXPECT_GE(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
 }
 
@@ -214,6 +218,7 @@ TEST(GraphEditor, AnAttributeNoArgumentReadNeedsADecoderCase) {
   ASSERT_TRUE(E.setArgument("r", "t", R"({"attr": "AO"})", D)) << text(D);
   EXPECT_TRUE(E.needsAttributeCase());
   EXPECT_TRUE(E.needsRebuild());
+  EXPECT_FALSE(E.needsFunction());
   EXPECT_FALSE(E.needsOnlyStackSlots());
   ASSERT_TRUE(E.setArgument("r", "t", "0.5", D)) << text(D);
   EXPECT_FALSE(E.needsAttributeCase());

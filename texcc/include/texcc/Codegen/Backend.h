@@ -10,6 +10,7 @@
 #include "texcc/Codegen/Codegen.h"
 #include "texcc/Kernel/Manifest.h"
 
+#include <ostream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -34,9 +35,11 @@ public:
   /// Whether the front end should compute the hoistable declarations of the user's functions
   /// (docs/frontend.md, "Hoisting"): the backend calls texcc_hoisted_ functions.
   virtual bool hoists(const BackendOptions &) const { return false; }
-  /// Sets what the graph passes do only for this backend's kernel (the interpreter's opcode
-  /// tables).
-  virtual void configureGraph(graph::CompileOptions &, const BackendOptions &) const {}
+  /// What this backend does to the compiled graph for its kernel only, after compileGraph()
+  /// (interp: chooses its quickened opcodes, texcc/Codegen/Quickening.h, and encodes args.bin
+  /// with them). Logs its decisions to Log (texcc -v) when not null.
+  virtual void finishGraph(graph::CompiledGraph &, const BackendOptions &,
+                           std::ostream * /*Log*/) const {}
   /// Sets this backend's part of the code generator's options.
   virtual void configureCodegen(CodegenOptions &, const BackendOptions &) const {}
   /// Whether the kernel is the interpreter, whose switch holds the functions of dead nodes too

@@ -79,12 +79,9 @@ struct CompileOptions {
   std::map<std::string, std::string> LibraryFunctions;
   /// Where the passes log what they did (texcc -v); null for silence.
   std::ostream *Log = nullptr;
-  /// Quickened opcodes: choose at most this many (function, argument sources) patterns, the
-  /// most frequent among the instructions (0: none). Ignored when
-  /// Quickened is not empty.
-  unsigned MaxQuickened = 0;
-  /// The kernel's quickened opcodes (live edits: layout.json "quickened"): used wherever an
-  /// instruction's pattern matches one, nothing else chosen.
+  /// The kernel's quickened opcodes (live edits: layout.json "quickened"), applied wherever an
+  /// instruction's pattern matches one (applyQuickened). The graph library never chooses a
+  /// table: the interp backend does (texcc/Codegen/Quickening.h), after compileGraph().
   std::vector<QuickenedOp> Quickened;
 };
 

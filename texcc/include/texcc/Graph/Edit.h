@@ -40,6 +40,9 @@ public:
   /// the initial graph read (`set n.p={"attr": "Normal"}`): the interpreter's attribute
   /// decoder has no case for it.
   bool needsAttributeCase() const { return NeedsAttributeCase; }
+  /// True when the last edit made a node of a function the kernel has no case for live (not
+  /// one of the pinned function ids): no kernel of this graph, fallback included, runs it.
+  bool needsFunction() const { return NeedsFunction; }
 
 private:
   bool recompile(DiagnosticSink &Diags);
@@ -54,6 +57,7 @@ private:
   bool NeedsRebuild = false;
   bool NeedsCode = false;    // a reason other than value-stack slots
   bool NeedsAttributeCase = false;
+  bool NeedsFunction = false;
 };
 
 } // namespace texcc::graph

@@ -43,12 +43,15 @@ void computeWavefrontOrder(CompiledGraph &CG, std::ostream *Log);
 /// Parameter blocks (OpenCL alignment), records (16-aligned), record copies, array data,
 /// program word offsets.
 void layoutArguments(CompiledGraph &CG, std::ostream *Log);
-/// Quickened opcodes (interp): Opts.Quickened when given (live edits), else at most
-/// Opts.MaxQuickened patterns (function and argument sources) of the programs' instructions,
-/// most frequent first, numbered after the function ids; marks the instructions
-/// (Instruction::Quick). Sets
-/// CG.Quickened.
-void selectQuickened(CompiledGraph &CG, const CompileOptions &Opts, std::ostream *Log);
+/// The pattern instruction J of material M runs, for a quickened opcode: its function and
+/// every argument's source (argumentSource()). Opcode unset.
+QuickenedOp instructionPattern(const CompiledGraph &CG, const CompiledMaterial &M, size_t J);
+/// Encoding with a given opcode table (interp; docs/modes.md): sets CG.Quickened to Table and
+/// marks every instruction whose pattern equals an entry's (Instruction::Quick, the first such
+/// entry); the others run their function's plain id. encodeArgsBin() then writes the opcodes.
+/// The table is the interp backend's choice (texcc/Codegen/Quickening.h) or, for a live edit,
+/// the kernel's, read back from layout.json. Logs the table and each entry's uses.
+void applyQuickened(CompiledGraph &CG, std::vector<QuickenedOp> Table, std::ostream *Log);
 /// Where argument A of a node comes from, for a quickened pattern: IntValue for an int
 /// constant, Constant for other constants and for every sampler or array parameter (always read
 /// from the block), else Slot or Attribute (with its broadcast).

@@ -1,13 +1,17 @@
-// The quickened opcodes of the interp kernel: the table (most frequent patterns first, capped,
-// opcodes after the function ids), args.bin's opcode words, the kernel's table applied by live
-// edits, layout.json round trip and the reader's checks.
+// The quickened opcodes of the interp kernel: the interp backend's table (most frequent
+// patterns first, capped, opcodes after the function ids; no other backend has one), args.bin's
+// opcode words, the kernel's table applied by the graph library's live edits (which never
+// choose), layout.json round trip and the reader's checks.
 
+#include "texcc/Codegen/Backend.h"
+#include "texcc/Codegen/Quickening.h"
 #include "texcc/Graph/Edit.h"
 
-#include "GraphTestUtil.h"
+#include "../graph/GraphTestUtil.h"
 
 using namespace texcc::graph;
 using namespace texcc::graph::test;
+namespace cg = texcc::codegen;
 
 namespace {
 
@@ -61,10 +65,15 @@ std::vector<uint32_t> opcodes(const CompiledGraph &CG, size_t M = 0) {
   return W;
 }
 
-CompileOptions quickening(unsigned Max = 8) {
-  CompileOptions O;
+/// Compiled as texcc compiles for Mode: the graph library's passes, then the backend's
+/// finishGraph (interp chooses at most Max quickened opcodes).
+CompiledGraph quickened(const std::string &Json, unsigned Max = 8,
+                        cg::Mode Mode = cg::Mode::Interp) {
+  CompiledGraph CG = compiled(Json, CompileOptions(), costSigs());
+  cg::BackendOptions O;
   O.MaxQuickened = Max;
-  return O;
+  cg::backendFor(Mode, cg::Target::OpenCL).finishGraph(CG, O, nullptr);
+  return CG;
 }
 
 TEST(Quickened, MostFrequentPatternsFirstCapped) {
@@ -74,7 +83,7 @@ TEST(Quickened, MostFrequentPatternsFirstCapped) {
        R"({"id": "p", "fn": "pair", "args": {"a": {"node": "a"}, "b": {"node": "b"}}})",
        lite("e", "p", 5)},
       strengthOf("e"));
-  CompiledGraph CG = compiled(Json, quickening(), costSigs());
+  CompiledGraph CG = quickened(Json);
   ASSERT_EQ(CG.Quickened.size(), 3u);
   const unsigned First = static_cast<unsigned>(CG.FunctionsById.size());
   EXPECT_EQ(CG.Quickened[0].Opcode, First);
@@ -85,10 +94,18 @@ TEST(Quickened, MostFrequentPatternsFirstCapped) {
   EXPECT_EQ(CG.Quickened[2].Fn, "lite");
   EXPECT_EQ(spelled(CG.Quickened[2].Sources), (std::vector<std::string>{"slot", "const"}));
   EXPECT_EQ(opcodes(CG), (std::vector<uint32_t>{First, First, First + 1, First + 2}));
-  CompiledGraph One = compiled(Json, quickening(1), costSigs());
+  CompiledGraph One = quickened(Json, 1);
   ASSERT_EQ(One.Quickened.size(), 1u);
   EXPECT_EQ(spelled(One.Quickened[0].Sources), (std::vector<std::string>{"attr:AO", "const"}));
   EXPECT_EQ(opcodes(One), (std::vector<uint32_t>{First, First, 1, 0}));
+  // The table is chooseQuickened's; 0 chooses none, and only the interp backend quickens.
+  EXPECT_EQ(cg::chooseQuickened(compiled(Json, CompileOptions(), costSigs()), 3), CG.Quickened);
+  EXPECT_TRUE(cg::chooseQuickened(CG, 0).empty());
+  for (cg::Mode M : {cg::Mode::Inline, cg::Mode::Wavefront, cg::Mode::Shape}) {
+    CompiledGraph Other = quickened(Json, 8, M);
+    EXPECT_TRUE(Other.Quickened.empty()) << cg::modeName(M);
+    EXPECT_EQ(opcodes(Other), (std::vector<uint32_t>{0, 0, 1, 0})) << cg::modeName(M);
+  }
 }
 
 TEST(Quickened, IntConstantsArePartOfThePattern) {
@@ -99,7 +116,7 @@ TEST(Quickened, IntConstantsArePartOfThePattern) {
        R"({"id": "r", "fn": "octv", "args": {"x": {"node": "q"}, "n": 3}})",
        R"({"id": "s", "fn": "pair", "args": {"a": {"node": "r"}, "b": {"node": "p"}}})"},
       strengthOf("s"));
-  CompiledGraph CG = compiled(Json, quickening(), costSigs());
+  CompiledGraph CG = quickened(Json);
   std::vector<std::vector<std::string>> Octv;
   for (const QuickenedOp &Q : CG.Quickened)
     if (Q.Fn == "octv")
@@ -134,14 +151,14 @@ TEST(Quickened, IntConstantsArePartOfThePattern) {
 
 TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
   EXPECT_TRUE(compiled(graphJson({lite("a", "")}, strengthOf("a")), CompileOptions(), costSigs())
-                  .Quickened.empty()); // off unless asked for
+                  .Quickened.empty()); // the graph library chooses none
   const std::string Json =
       graphJson({lite("a", ""), lite("b", "", 2),
                  R"({"id": "w", "fn": "wide", "args": {"v": {"node": "a"}}})",
                  R"({"id": "p", "fn": "pair", "args": {"a": {"node": "a"}, "b": {"node": "b"}}})"},
                 R"({"m": {"bsdf": "diffuse", "color": {"node": "w"}},
                     "n": {"bsdf": "emission", "color": 1, "strength": {"node": "p"}}})");
-  CompiledGraph CG = compiled(Json, quickening(), costSigs());
+  CompiledGraph CG = quickened(Json);
   bool SawBroadcast = false;
   for (const QuickenedOp &Q : CG.Quickened)
     SawBroadcast |= Q.Fn == "wide" && spelled(Q.Sources) == std::vector<std::string>{"slot.x"};
@@ -168,8 +185,8 @@ TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
 }
 
 TEST(Quickened, AnEditorKeepsTheTablesItStartedWith) {
-  // An editor given no tables, only the limits, pins what its first compile chose: a rewiring
-  // that makes other patterns the most frequent must not choose cases the kernel lacks.
+  // An editor given the kernel's table keeps it: a rewiring that makes other patterns the most
+  // frequent must not choose cases the kernel lacks (the graph library never chooses).
   const std::string Json = graphJson(
       {lite("a", ""), lite("b", "", 2), unaryNode("h", "heavy", "a"),
        R"({"id": "p", "fn": "pair", "args": {"a": {"node": "h"}, "b": {"node": "b"}}})"},
@@ -178,7 +195,7 @@ TEST(Quickened, AnEditorKeepsTheTablesItStartedWith) {
   std::optional<Graph> G = parse(Json, D);
   ASSERT_TRUE(G) << text(D);
   CompileOptions O;
-  O.MaxQuickened = 1;
+  O.Quickened = quickened(Json, 1).Quickened;
   GraphEditor E(*G, costSigs(), O);
   ASSERT_TRUE(E.init(D)) << text(D);
   const std::vector<QuickenedOp> Quick = E.compiled().Quickened;
@@ -190,8 +207,7 @@ TEST(Quickened, AnEditorKeepsTheTablesItStartedWith) {
 }
 
 TEST(Quickened, LayoutRoundTrip) {
-  CompiledGraph CG = compiled(graphJson({lite("a", ""), lite("b", "a", 2)}, strengthOf("b")),
-                              quickening(), costSigs());
+  CompiledGraph CG = quickened(graphJson({lite("a", ""), lite("b", "a", 2)}, strengthOf("b")));
   ASSERT_FALSE(CG.Quickened.empty());
   std::vector<QuickenedOp> T;
   std::string Error;
