@@ -233,16 +233,20 @@ cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_fl
   Bytes = Bytes ? Bytes : 16;
   // A device that keeps its buffers in host memory (PoCL's CPU device) allocates them lazily,
   // at their first use, and aborts the process (an assertion in PoCL) when that allocation
-  // fails. So check first that the host's address space holds this buffer with the others
-  // (their sum, reserved and released at once: nothing is touched).
+  // fails. So check first that the host's address space holds this buffer (reserved and
+  // released at once: nothing is touched), and then make its first use at once (below): the
+  // others were allocated when they were made, and no host allocation between the check and a
+  // later first use (a render's temporaries) can take its room (that was SIGABRT at a first
+  // launch, under `ulimit -v` 1.4 GB at 1000x1000).
   // A buffer above the device's per-buffer limit is refused by the driver below, with the limits.
-  if (Device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>() &&
-      Bytes <= Device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>()) {
+  const bool HostMemory = Device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>() &&
+                          Bytes <= Device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+  if (HostMemory) {
     size_t Total = Bytes;
     for (const auto &[Name, Size] : Memory)
       if (Name != Label)
         Total += Size;
-    void *Probe = std::malloc(Total);
+    void *Probe = std::malloc(Bytes);
     if (!Probe)
       throw Error("out of memory while allocating " + Label + " (" + std::to_string(Bytes) +
                   " bytes; " + std::to_string(Total) + " bytes of buffers in all on '" +
@@ -251,6 +255,10 @@ cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_fl
   }
   try {
     cl::Buffer B(Ctx, Flags, Bytes);
+    if (HostMemory) {
+      Queue.enqueueMigrateMemObjects({B}, CL_MIGRATE_MEM_OBJECT_CONTENT_UNDEFINED);
+      Queue.finish();
+    }
     Memory[Label] = Bytes;
     return B;
   } catch (const cl::Error &E) {

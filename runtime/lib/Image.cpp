@@ -5,8 +5,29 @@
 #include "texcc/Support/File.h"
 #include "texrender/Error.h"
 
+#include <zlib.h>
+
+#include <cstdlib>
+
+/// stb_image_write's own deflate grows its buffers with an unchecked realloc (an assertion, or
+/// a write through the null pointer without one): out of memory while writing a PNG was
+/// SIGABRT. zlib's deflate, whose failure is a null result that stbi_write_png_to_mem passes on.
+static unsigned char *zlibCompress(unsigned char *Data, int Len, int *OutLen, int Quality) {
+  uLongf Size = compressBound(uLong(Len));
+  auto *Out = static_cast<unsigned char *>(std::malloc(Size));
+  if (!Out)
+    return nullptr;
+  if (compress2(Out, &Size, Data, uLong(Len), Quality < 0 || Quality > 9 ? Z_DEFAULT_COMPRESSION : Quality) != Z_OK) {
+    std::free(Out);
+    return nullptr;
+  }
+  *OutLen = int(Size);
+  return Out;
+}
+
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBIW_ZLIB_COMPRESS zlibCompress
 #define STBI_FAILURE_USERMSG
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -17,9 +38,11 @@
 #include <cstdlib>
 #include <cerrno>
 #include <cfloat>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <unistd.h>
 
@@ -144,6 +167,18 @@ void writeTextFile(const std::string &Path, const std::string &Text) {
 
 static void writeExr(const std::string &Path, const std::string &Temp, int Width, int Height,
                      const std::vector<float> &RGB) {
+  // tinyexr's SaveEXR copies the pixels into four float planes, compresses them into blocks and
+  // then mallocs the whole file without checking the result (a write through the null pointer,
+  // SIGSEGV, when it fails). So first reserve its worst case, as ClContext::allocate does for
+  // PoCL's buffers (reserved and released at once, nothing touched): the planes (16 bytes a
+  // pixel), the blocks and the file (each at most the 12 bytes a pixel of the data, and zlib's
+  // bound on top).
+  const size_t Pixels = size_t(Width) * size_t(Height);
+  const size_t Data = 12 * Pixels, Worst = 16 * Pixels + 2 * (compressBound(uLong(Data)) + (1u << 20));
+  void *Probe = std::malloc(Worst);
+  if (!Probe)
+    throw std::bad_alloc(); // named by writeImage's step
+  std::free(Probe);
   const char *Err = nullptr;
   if (SaveEXR(RGB.data(), Width, Height, 3, 0, Temp.c_str(), &Err) != TINYEXR_SUCCESS) {
     std::string Why = Err ? Err : "unknown error";
@@ -155,11 +190,26 @@ static void writeExr(const std::string &Path, const std::string &Temp, int Width
 
 static void writePng(const std::string &Path, const std::string &Temp, int Width, int Height,
                      const std::vector<float> &RGB) {
+  // stb_image_write counts the filtered rows in an int.
+  if ((size_t(Width) * 3 + 1) * size_t(Height) > size_t(INT_MAX))
+    throw Error(Path + ": cannot write PNG: " + std::to_string(Width) + "x" + std::to_string(Height) +
+                " is more than the PNG encoder holds (2 GiB of rows; write an .exr)");
   std::vector<unsigned char> Bytes(RGB.size());
   for (size_t I = 0; I < RGB.size(); ++I)
     Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
-  if (!stbi_write_png(Temp.c_str(), Width, Height, 3, Bytes.data(), Width * 3))
-    throw Error(Path + ": cannot write PNG");
+  // In memory first: stbi_write_png returns 0 both when an allocation fails and when the file
+  // cannot be opened, and does not check its fwrite.
+  int Len = 0;
+  std::unique_ptr<unsigned char, void (*)(void *)> Png(
+      stbi_write_png_to_mem(Bytes.data(), Width * 3, Width, Height, 3, &Len), std::free);
+  if (!Png)
+    throw std::bad_alloc(); // its only failure: an allocation (named by writeImage's step)
+  Bytes = {};
+  std::ofstream Out(Temp, std::ios::binary);
+  Out.write(reinterpret_cast<const char *>(Png.get()), Len);
+  Out.close();
+  if (!Out)
+    throw Error(Path + ": cannot write: " + std::strerror(errno));
 }
 
 /// The last guard of "no Inf or NaN in an image": NaN becomes 0 and +-Inf +-FLT_MAX (the

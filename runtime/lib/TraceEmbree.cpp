@@ -16,6 +16,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -38,8 +39,13 @@ template <typename F> void parallelChunks(size_t N, size_t Chunk, F &&Fn) {
       Fn(C * Chunk, std::min(N, (C + 1) * Chunk));
   };
   std::vector<std::thread> Pool;
-  for (size_t T = 1; T < Threads; ++T)
-    Pool.emplace_back(Work);
+  for (size_t T = 1; T < Threads; ++T) {
+    try {
+      Pool.emplace_back(Work);
+    } catch (const std::system_error &) {
+      break; // no room for another thread (its stack): the threads started do all the chunks
+    }
+  }
   Work();
   for (std::thread &T : Pool)
     T.join();
@@ -85,6 +91,8 @@ public:
   explicit EmbreeTrace(const TraceContext &C) : C(C) {
     double T0 = seconds();
     Device = rtcNewDevice(nullptr);
+    if (!Device && rtcGetDeviceError(nullptr) == RTC_ERROR_OUT_OF_MEMORY)
+      throw std::bad_alloc(); // named by makeEmbreeTrace's step (Embree's threads did not start)
     if (!Device)
       throw Error("cannot start Embree: " + std::to_string(int(rtcGetDeviceError(nullptr))));
     rtcSetDeviceErrorFunction(Device, embreeError, &LastError);

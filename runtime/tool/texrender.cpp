@@ -553,19 +553,35 @@ private:
   double WaitSeconds = 0;
 };
 
+/// The step an out-of-memory error names while E is applied: "applying the edit 'a.b=1'" (a
+/// long edit, such as a large array value, cut after 60 characters).
+std::string editStep(const Edit &E) {
+  return "applying the edit '" + (E.Text.size() > 60 ? E.Text.substr(0, 60) + "..." : E.Text) + "'";
+}
+
+/// Editor.apply(E, R) as the step editStep(E) (LiveEditor's own steps, such as "encoding the
+/// graph for a live edit", are named inside it).
+EditResult applyEdit(const Edit &E, LiveEditor &Editor, Renderer &R) {
+  const std::string Step = editStep(E);
+  return texcc::whileAllocating(Step.c_str(), [&] { return Editor.apply(E, R); });
+}
+
 /// Applies E to the renderer and renders the next frame (Image), counting its builds.
 FrameRecord renderAfterEdit(const Edit &E, LiveEditor &Editor, Renderer &R, BuildCounter &Builds,
                             std::vector<float> &Image) {
-  FrameRecord F;
-  F.EditText = E.Text;
-  EditResult Res = Editor.apply(E, R);
-  F.EditSeconds = Res.Seconds;
-  F.IdleSeconds = Res.IdleSeconds;
-  F.Rebuilt = Res.Rebuilt;
-  F.BackgroundRebuild = Res.Background;
-  Image = R.render(F.Frame);
-  Builds.record(F);
-  return F;
+  const std::string Step = editStep(E);
+  return texcc::whileAllocating(Step.c_str(), [&] {
+    FrameRecord F;
+    F.EditText = E.Text;
+    EditResult Res = Editor.apply(E, R);
+    F.EditSeconds = Res.Seconds;
+    F.IdleSeconds = Res.IdleSeconds;
+    F.Rebuilt = Res.Rebuilt;
+    F.BackgroundRebuild = Res.Background;
+    Image = texcc::whileAllocating("rendering", [&] { return R.render(F.Frame); });
+    Builds.record(F);
+    return F;
+  });
 }
 
 /// One line on standard output per interactive frame: what the edit cost until the frame was
@@ -742,8 +758,9 @@ int run(int Argc, char **Argv) try {
   // bad one is an error that leaves no frame written.
   std::unique_ptr<LiveEditor> Editor;
   if (!Sets.empty() || !Script.empty() || O.Interactive) {
-    Editor = std::make_unique<LiveEditor>(L);
-    checkEdits(*Editor, Sets, ScriptFile);
+    texcc::whileAllocating("reading the graph for live edits",
+                           [&] { Editor = std::make_unique<LiveEditor>(L); });
+    texcc::whileAllocating("checking the edits", [&] { checkEdits(*Editor, Sets, ScriptFile); });
   }
   phase(Dog.get(), "building the kernels");
   Renderer R(S, L, RO);
@@ -756,7 +773,7 @@ int run(int Argc, char **Argv) try {
   std::vector<FrameRecord> Frames;
   FrameRecord First;
   for (auto &E : Sets) {
-    EditResult Res = Editor->apply(E, R);
+    EditResult Res = applyEdit(E, *Editor, R);
     First.EditSeconds += Res.Seconds;
     First.Rebuilt |= Res.Rebuilt;
   }
@@ -764,7 +781,8 @@ int run(int Argc, char **Argv) try {
   BuildCounter Builds(R);
   // Between passes the render stops by itself at the deadline; only a pass is timed.
   phase(Dog.get(), "");
-  std::vector<float> Image = R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance);
+  std::vector<float> Image = texcc::whileAllocating(
+      "rendering", [&] { return R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance); });
   if (ShowProgress) {
     Bar.finish();
     printSummary(First.Frame, OutW, OutH);
