@@ -6,11 +6,12 @@ EditAction planEdit(const EditFacts &F, const KernelCapabilities &Caps, const Ti
   if (!Caps.ReEncodes)
     return EditAction::Regenerate; // the values are literals of the kernel
   // An interp fallback has a case for every node's function, so a compiled edit needs no new
-  // one; what it may need is more value-stack slots than it was built with, more outputs than
+  // one (unless a node of a function outside the graph became live, F.NeedsFunction); what it
+  // may need is more value-stack slots than it was built with, more outputs than
   // any kernel of this layout has, or an attribute case its decoder lacks.
   const bool FallbackRuns = Caps.InterpFallback && S.Tier != TierPolicy::Shape && !F.Spill &&
                             F.StackSlots <= S.FallbackSlots && F.MaxOutputs <= Caps.MaxOutputs &&
-                            !F.NeedsAttributeCase;
+                            !F.NeedsAttributeCase && !F.NeedsFunction;
   // A kernel built with value-stack headroom also holds a deeper stack.
   const bool HeadroomRuns = Caps.StackHeadroom && F.NeedsOnlyStackSlots && !F.Spill &&
                             F.StackSlots <= S.KernelStackSlots;

@@ -82,13 +82,9 @@ int runProcess(const std::vector<std::string> &Argv, const std::string &LogPath)
 
 /// Arguments baked on texcc's command line (--bake NODE.ARG) are marked "bake" in layout.json's
 /// nodes (the kernel manifest) but absent from graph.json: marks them baked in G, so that a
-/// regeneration keeps them baked and an edit of one is known to change the shape.
-void carryCommandLineBakes(texcc::graph::Graph &G, const std::string &LayoutText,
-                           const std::string &LayoutFile) {
-  texcc::kernel::Manifest M;
-  texcc::kernel::ManifestError Why;
-  if (!texcc::kernel::readManifest(LayoutText, LayoutFile, M, Why))
-    throw Error(Why.str());
+/// regeneration keeps them baked and an edit of one is known to change the shape. M is the
+/// layout's manifest as loadLayout read it (layout.json is parsed once).
+void carryCommandLineBakes(texcc::graph::Graph &G, const texcc::kernel::Manifest &M) {
   std::map<std::string, std::vector<std::string>> Baked; // node id -> baked argument names
   for (const texcc::kernel::NodeLayout &N : M.Nodes)
     for (const texcc::kernel::ArgLayout &A : N.Args) {
@@ -241,7 +237,7 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
   if (!G)
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
   Model = std::move(*G);
-  carryCommandLineBakes(Model, Lay.Text, Lay.Dir + "/layout.json");
+  carryCommandLineBakes(Model, Lay.Manifest);
   initEditor(Model);
 }
 
@@ -451,6 +447,7 @@ EditAction LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
   F.NeedsRebuild = Editor->needsRebuild();
   F.NeedsOnlyStackSlots = Editor->needsOnlyStackSlots();
   F.NeedsAttributeCase = Editor->needsAttributeCase();
+  F.NeedsFunction = Editor->needsFunction();
   F.Spill = CG.Spill;
   F.StackSlots = CG.StackSlots;
   F.MaxOutputs = CG.MaxOutputs;

@@ -33,17 +33,21 @@ TierManager::~TierManager() {
     R->wait();
 }
 
+std::string TierManager::tierName(bool Fallback) const {
+  return Fallback ? FallbackTierName : Lay.Mode;
+}
+
 cl::Program TierManager::buildForeground(const std::string &Path, const std::string &Source,
-                                         const std::string &Tier, const std::string &Reason,
+                                         bool Fallback, const std::string &Reason,
                                          const std::string &ExtraOptions) {
   BuildEvent E;
-  E.Kernel = Tier;
+  E.Kernel = tierName(Fallback);
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
   cl::Program P = Cl.buildProgram(Path, Source, ProgramOptions + ExtraOptions);
   // PoCL's compile at the first launch is part of the build the frame waits for.
   std::vector<std::string> Names = textureKernelNames();
-  if (tierUsesUniforms(Tier))
+  if (tierUsesUniforms(Fallback))
     Names.push_back(Lay.Uniforms);
   warmUpKernels(Cl, P, Names, Path);
   E.ReadySeconds = steadySeconds() - Epoch;
@@ -52,10 +56,10 @@ cl::Program TierManager::buildForeground(const std::string &Path, const std::str
   return P;
 }
 
-bool TierManager::tierUsesUniforms(const std::string &Tier) const {
+bool TierManager::tierUsesUniforms(bool Fallback) const {
   // The layout's own kernel (shape mode's shape tier, or an interp-mode kernel that hoists);
   // shape mode's interp fallback never reads hoisted values.
-  return !Lay.Uniforms.empty() && !(Lay.Caps.InterpFallback && Tier == FallbackTierName);
+  return !Lay.Uniforms.empty() && !Fallback;
 }
 
 std::vector<std::string> TierManager::textureKernelNames() const {
@@ -73,11 +77,11 @@ double TierManager::foregroundBuildSeconds() const {
   return S;
 }
 
-void TierManager::activate(const cl::Program &P, const std::string &Tier) {
+void TierManager::activate(const cl::Program &P, bool Fallback) {
   TextureKernels.clear();
-  ActiveTier = Tier;
-  std::string File =
-      Lay.Caps.InterpFallback && Tier == FallbackTierName ? Lay.InterpFallback : Lay.KernelSource;
+  ActiveFallback = Fallback;
+  ActiveTier = tierName(Fallback);
+  std::string File = Fallback ? Lay.InterpFallback : Lay.KernelSource;
   for (const std::string &N : textureKernelNames()) {
     try {
       TextureKernels.push_back(cl::Kernel(P, N.c_str()));
@@ -88,7 +92,7 @@ void TierManager::activate(const cl::Program &P, const std::string &Tier) {
   }
   UniformsKernel = cl::Kernel();
   UniformsDirty = true;
-  if (tierUsesUniforms(Tier)) {
+  if (tierUsesUniforms(Fallback)) {
     try {
       UniformsKernel = cl::Kernel(P, Lay.Uniforms.c_str());
     } catch (const cl::Error &E) {
@@ -104,6 +108,7 @@ void TierManager::build(bool HasWork) {
   TextureKernels.clear();
   ShapeProgram = InterpProgram = cl::Program();
   ActiveTier.clear();
+  ActiveFallback = false;
   if (!HasTextureWork)
     return;
   const char *Reason = FramesRendered ? "edit" : "initial";
@@ -113,7 +118,7 @@ void TierManager::build(bool HasWork) {
     const std::string Headroom = Lay.Caps.StackHeadroom && InterpStackHeadroom
                                      ? stackHeadroomOption(Lay, Source, InterpModeSlots)
                                      : "";
-    activate(buildForeground(Lay.KernelSource, Source, Lay.Mode, Reason, Headroom), Lay.Mode);
+    activate(buildForeground(Lay.KernelSource, Source, false, Reason, Headroom), false);
     return;
   }
   buildShapeTiers(Reason);
@@ -127,12 +132,11 @@ void TierManager::buildShapeTiers(const char *Reason) {
       planTierBuilds(Policy, Cl.isCached(ShapeText, ProgramOptions),
                      Cl.isCached(FallbackText, ProgramOptions + FallbackHeadroom));
   if (Plan.ShapeNow)
-    ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, ShapeTierName, Reason);
+    ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, false, Reason);
   if (Plan.InterpNow)
-    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, FallbackTierName, Reason,
+    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, true, Reason,
                                     FallbackHeadroom);
-  activate(ShapeProgram() ? ShapeProgram : InterpProgram,
-           ShapeProgram() ? ShapeTierName : FallbackTierName);
+  activate(ShapeProgram() ? ShapeProgram : InterpProgram, !ShapeProgram());
   if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
     TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater};
@@ -145,8 +149,8 @@ void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
   if (!canSwitchShapes())
     throw Error("switchShapes: needs a shape-mode layout with its interp fallback built (tier auto)");
   HasTextureWork = HasWork;
-  if (HasTextureWork && ActiveTier != FallbackTierName)
-    activate(InterpProgram, FallbackTierName);
+  if (HasTextureWork && !ActiveFallback)
+    activate(InterpProgram, true);
   startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true}, std::move(Reencode),
                        "shape change");
 }
@@ -166,7 +170,7 @@ void TierManager::launchQueued() {
   if (!Queued || Pending || !Retired.empty())
     return;
   BuildEvent E;
-  E.Kernel = Queued->Job.Shape ? ShapeTierName : FallbackTierName;
+  E.Kernel = tierName(!Queued->Job.Shape);
   E.Reason = Queued->Reason;
   E.Background = true;
   E.StartSeconds = steadySeconds() - Epoch;
@@ -251,8 +255,7 @@ void TierManager::adopt(TierBuildResult &R) {
   if (R.Shape())
     ShapeProgram = R.Shape;
   if (HasTextureWork)
-    activate(ShapeProgram() ? ShapeProgram : InterpProgram,
-             ShapeProgram() ? ShapeTierName : FallbackTierName);
+    activate(ShapeProgram() ? ShapeProgram : InterpProgram, !ShapeProgram());
 }
 
 double TierManager::waitForBackgroundBuild() {

@@ -140,6 +140,21 @@ TEST(EditPlan, ShapeFallbackHeadroom) {
   EXPECT_STREQ(P(needing(true, 6), {TierPolicy::Shape, 8, 0}), "regenerate");
 }
 
+// Row 3: a node of a function no kernel of the layout has a case for (a layout whose functions
+// list lacks it; set and rewire reach only the graph's nodes) regenerates in every mode, under
+// every tier policy: the interp fallback and the headroom have no case for it either.
+TEST(EditPlan, NewFunction) {
+  EditFacts F = needing(false, 2);
+  F.NeedsFunction = true;
+  for (Kernel K : {Interp, Inline, Wavefront, Shape})
+    for (TierPolicy T : {TierPolicy::Auto, TierPolicy::Interp, TierPolicy::Shape})
+      EXPECT_STREQ(plan(K, F, {T, 8, 8}), "regenerate")
+          << static_cast<int>(K) << " " << tierPolicyName(T);
+  // The same edit without the new function: the shape fallback would have run it.
+  F.NeedsFunction = false;
+  EXPECT_STREQ(plan(Shape, F), "switch-shapes");
+}
+
 // Wavefront and inline have neither headroom nor a fallback.
 TEST(EditPlan, NoHeadroomElsewhere) {
   for (Kernel M : {Inline, Wavefront}) {

@@ -26,6 +26,10 @@ struct EditFacts {
   bool NeedsOnlyStackSlots = false;
   /// GraphEditor::needsAttributeCase(): an argument reads an attribute the decoder has no case for.
   bool NeedsAttributeCase = false;
+  /// GraphEditor::needsFunction(): a live node's function has no case in any kernel of the
+  /// layout (docs/modes.md's third row; set and rewire reach only the graph's nodes, whose
+  /// functions the interpreter has).
+  bool NeedsFunction = false;
   /// The edited graph's value stack spills, its depth and its outputs per material.
   bool Spill = false;
   unsigned StackSlots = 0;

@@ -23,9 +23,11 @@ namespace texrender {
 /// a frame waits for its build (the behaviour before tiers).
 enum class TierPolicy { Auto, Interp, Shape };
 
-/// The tiers of a shape-mode layout (Layout::Caps.InterpFallback), as stats.json and --tier
-/// name them: its shape kernel and its interp fallback. A layout of another mode has one tier,
-/// named by its mode.
+/// The tiers of a layout with an interp fallback (Layout::Caps.InterpFallback), as --tier
+/// spells its policies and stats.json names the tiers: the layout's kernel and its interp
+/// fallback. Labels only: the tier manager tracks which program renders as a flag, and names
+/// the layout's own kernel by the manifest's mode ("shape" for such a layout), never comparing
+/// either name.
 constexpr const char *ShapeTierName = "shape";
 constexpr const char *FallbackTierName = "interp";
 

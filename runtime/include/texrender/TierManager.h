@@ -90,11 +90,15 @@ public:
 private:
   void buildShapeTiers(const char *Reason);
   /// ExtraOptions: appended to ProgramOptions (the value-stack headroom's -D).
-  cl::Program buildForeground(const std::string &Path, const std::string &Source,
-                              const std::string &Tier, const std::string &Reason,
-                              const std::string &ExtraOptions = "");
-  void activate(const cl::Program &P, const std::string &Tier);
-  bool tierUsesUniforms(const std::string &Tier) const;
+  /// Fallback: the program is the layout's interp fallback (Caps.InterpFallback), else the
+  /// layout's own kernel.
+  cl::Program buildForeground(const std::string &Path, const std::string &Source, bool Fallback,
+                              const std::string &Reason, const std::string &ExtraOptions = "");
+  void activate(const cl::Program &P, bool Fallback);
+  bool tierUsesUniforms(bool Fallback) const;
+  /// The tier's name in stats.json and the frame log: the fallback's FallbackTierName, else
+  /// the layout's mode as its manifest names it (a label only: nothing compares it).
+  std::string tierName(bool Fallback) const;
   std::vector<std::string> textureKernelNames() const;
   void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
                             std::function<void(Layout &)> Reencode, const std::string &Reason);
@@ -113,7 +117,8 @@ private:
   std::function<bool(Layout &&)> AdoptLayout;
   bool HasTextureWork = false;
 
-  std::string ActiveTier;
+  std::string ActiveTier;      // tierName(ActiveFallback); "" without texture work
+  bool ActiveFallback = false; // the interp fallback renders
   std::vector<cl::Kernel> TextureKernels;
   // The texcc_uniforms of the shape tier or of an interp kernel that hoists (Layout::Uniforms),
   // and whether fakeStack changed (or the kernel did) since it last ran.
