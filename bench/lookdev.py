@@ -7,7 +7,7 @@ first frame arrived), the last of them followed until its first full-resolution 
 THINK seconds later (the renderer is refining at full resolution by then), a rewiring, also
 followed to its first full-resolution frame. Measured per edit at the client: the time from
 sending the message to receiving the first frame that contains the edit ("first frame"; with
-texrender's default --first-pass=reduced that frame has a quarter of the pixels) and, where
+texrender's default --first-pass=reduced that frame has 1/4 to 1/256 of the pixels, by texrender's time budget) and, where
 followed, to the first frame at full resolution. Kernel builds: texrender's count (foreground and background) before the first edit
 and after the last; they must not change. The session runs once per first-pass configuration
 (reduced, full), interleaved.
@@ -231,16 +231,16 @@ def edit_session(transport, tools, textures, first_pass, work):
             full = None
             if eid == len(edits) or edits[eid][0] == "rewire" or kind == "rewire":
                 full = first
-                # Over the WebSocket a frame does not say it is reduced: with the reduced
-                # first pass the first frame of an edit is, the next one is not.
-                if first.get("reduced") or (ch.name == "ws" and first_pass == "reduced"):
+                if first.get("reduced"):
                     full = next_event(ch, lambda e: is_frame(e) and e.get("edit") == eid,
                                       "the full-resolution frame of edit %d" % eid)
             rows.append({"edit": "%s %s.%s=%s" % (kind, node, arg, value),
                          "firstFrameMs": (first["t"] - t0) * 1000,
                          "fullFrameMs": None if full is None else (full["t"] - t0) * 1000,
                          "texrenderLatencyMs": first.get("latency_ms"),
-                         "split": first.get("split"), "tier": first.get("tier")})
+                         "split": first.get("split"), "tier": first.get("tier"),
+                         "factor": first.get("factor", 1) if first.get("reduced") else 1,
+                         "width": first.get("width")})
             time.sleep(THINK)
         builds1 = next_event(ch, lambda e: is_frame(e, SPP), "the last complete frame")["builds"]
     finally:

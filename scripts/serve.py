@@ -242,7 +242,9 @@ class Server:
             meta = {"type": "frame", "spp": event.get("spp"), "tier": event.get("tier"),
                     "builds": event.get("builds"), "latency_ms": event.get("latency_ms"),
                     "edit": origin[2] if origin and origin[1] is page else None,
-                    "size": len(png)}
+                    "size": len(png), "width": event.get("width"),
+                    "height": event.get("height"), "reduced": bool(event.get("reduced")),
+                    "factor": event.get("factor", 1)}
             page.send_frame(meta, png)
 
     def on_answer(self, kind, event):

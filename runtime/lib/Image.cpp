@@ -43,6 +43,7 @@ static unsigned char *zlibCompress(unsigned char *Data, int Len, int *OutLen, in
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <unistd.h>
 
@@ -224,7 +225,11 @@ static std::vector<float> finiteValues(const std::vector<float> &RGB) {
   return Out;
 }
 
-void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
+/// stb_image_write's PNG settings are globals: a write sets them under this lock.
+static std::mutex PngSettingsLock;
+
+static void writeImageWith(const std::string &Path, int Width, int Height,
+                           const std::vector<float> &RGB, bool FastPng) {
   std::string Ext = std::filesystem::path(Path).extension().string();
   std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
   if (Ext != ".exr" && Ext != ".png")
@@ -233,9 +238,24 @@ void writeImage(const std::string &Path, int Width, int Height, const std::vecto
   texcc::whileAllocating(Step.c_str(), [&] {
     std::vector<float> Finite = finiteValues(RGB);
     writeAtomically(Path, [&](const std::string &Temp) {
-      (Ext == ".exr" ? writeExr : writePng)(Path, Temp, Width, Height, Finite);
+      if (Ext == ".exr")
+        return writeExr(Path, Temp, Width, Height, Finite);
+      // stb's defaults (each row's best of five filters, deflate level 8), or for a preview
+      // no filter and level 1: a 256x256 render encodes several times faster.
+      std::lock_guard<std::mutex> Lock(PngSettingsLock);
+      stbi_write_force_png_filter = FastPng ? 0 : -1;
+      stbi_write_png_compression_level = FastPng ? 1 : 8;
+      writePng(Path, Temp, Width, Height, Finite);
     });
   });
+}
+
+void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
+  writeImageWith(Path, Width, Height, RGB, false);
+}
+
+void writePreviewImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
+  writeImageWith(Path, Width, Height, RGB, true);
 }
 
 } // namespace texrender

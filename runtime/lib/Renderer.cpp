@@ -311,6 +311,19 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
   int Depth = 1;
   int Bounces = 0;
   const bool Attrs = AttrMask != 0 || HasTextureWork;
+  // RendererOptions::CutPass, asked at the end of a bounce's stages, the device finished first
+  // (launches are asynchronous). A fault of this bounce's textures is still reported.
+  auto cut = [&](bool TexturesRan) {
+    if (!Opts.CutPass)
+      return false;
+    Cl->finish();
+    if (!Opts.CutPass())
+      return false;
+    if (TexturesRan && HasTextureWork)
+      checkTextureFaults(Cur);
+    Stats.PassCut = true;
+    return true;
+  };
   while (Count > 0 && (Settings.MaxDepth < 0 || Depth <= Settings.MaxDepth) && Depth < 4096) {
     Tracer->closestHit(Cur, Count, Depth == 1 ? "closest_hit_primary" : "closest_hit_bounce");
     (Depth == 1 ? Stats.PrimaryRays : Stats.BounceRays) += Count;
@@ -327,10 +340,14 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
       runAo(Cur, Count, Stats);
     if (StopAfterAttributes)
       return 1;
+    if (cut(false))
+      break;
     if (HasTextureWork)
       runTextures(Count);
     if (HasTextureWork && Opts.CheckNan)
       checkTextureOutputs(Cur, Count);
+    if (HasTextureWork && cut(true))
+      break;
     cl::Kernel &SH = K["shade"];
     SH.setArg(0, B["triangles"]), SH.setArg(1, B["triangleAttributes"]), SH.setArg(2, B["meshes"]);
     SH.setArg(3, B["materials"]), SH.setArg(4, B["bsdfNodes"]), SH.setArg(5, B["lights"]);
@@ -340,6 +357,8 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
     SH.setArg(14, B["shadowRays"]), SH.setArg(15, B["counters"]);
     Cl->launch(SH, Count, "shade");
     Tracer->shadow(Cur, Count);
+    if (cut(true))
+      break;
     cl_int Zero = 0;
     Cl->write(B["activeCount"], &Zero, sizeof Zero);
     cl::Kernel &CP = K["compact"];
@@ -352,6 +371,8 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
     std::swap(Cur, Next);
     ++Depth;
     ++Bounces;
+    if (Count > 0 && cut(false))
+      break;
   }
   return Bounces;
 }
@@ -362,7 +383,7 @@ std::vector<float> Renderer::averageSums(size_t NumPixels, int Done) {
   std::vector<float> RGB(NumPixels * 3);
   for (size_t P = 0; P < NumPixels; ++P)
     for (int C = 0; C < 3; ++C)
-      RGB[3 * P + C] = Sums[P].s[C] / float(Done);
+      RGB[3 * P + C] = Sums[P].s[C] / float(std::max(Done, 1)); // 0 passes (a cut): black
   return RGB;
 }
 
@@ -419,6 +440,10 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       RG.setArg(9, cl_int(RX)), RG.setArg(10, cl_int(RY)), RG.setArg(11, cl_int(RW));
       Cl->launch(RG, N, "raygen");
       Stats.Bounces += traceBounces(N, Stats, false);
+      if (Stats.PassCut) { // abandoned: its paths are never accumulated
+        Stats.Interrupted = true;
+        break;
+      }
       cl::Kernel &AC = K["accumulate"];
       AC.setArg(0, B["paths"]), AC.setArg(1, cl_int(NumPixels)), AC.setArg(2, cl_int(Now));
       AC.setArg(3, B["sums"]), AC.setArg(4, B["sumsSquared"]), AC.setArg(5, B["counters"]);

@@ -85,8 +85,10 @@ const char *Usage =
     "                       longer than 64 KiB ends the session, exit 1), one JSON event a\n"
     "                       line on standard output (ready, applied, error, frame, reload)\n"
     "  --first-pass=reduced|full  with --watch: the first image after a change has one\n"
-    "                       sample per pixel at half the width and height, upscaled\n"
-    "                       (reduced, the default), or at full resolution (full)\n"
+    "                       sample per pixel at 1/2, 1/4, 1/8 or 1/16 of the width and\n"
+    "                       height, the finest whose predicted time fits the budget\n"
+    "                       (reduced, the default), or is at full resolution (full)\n"
+    "  --first-pass-budget MS  the reduced first pass's time budget (default 60 ms)\n"
     "  --serve[=PORT]       the browser preview (default port 8642; 0: any free one): runs\n"
     "                       scripts/serve.sh with the scene and the other options\n"
     "  --listen ADDR        with --serve: the address to listen on (default 127.0.0.1)\n"
@@ -110,6 +112,7 @@ struct Options {
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
   bool Watch = false, Control = false, ReducedFirstPass = true;
+  double FirstPassBudgetMs = 60; // --first-pass-budget
   // --serve[=PORT] / --listen ADDR: Serve is set; Forward: every other argument, as given.
   bool Serve = false;
   int ServePort = 8642;
@@ -259,6 +262,11 @@ Options parseArgs(int Argc, char **Argv) {
       if (M != "reduced" && M != "full")
         throw Error("--first-pass: expected reduced or full, got '" + M + "'");
       O.ReducedFirstPass = M == "reduced";
+    } else if (A == "--first-pass-budget") {
+      std::string S = Next();
+      O.FirstPassBudgetMs = toFloat(A, S);
+      if (!(O.FirstPassBudgetMs > 0) || !std::isfinite(O.FirstPassBudgetMs))
+        throw Error("--first-pass-budget: expected a positive number of milliseconds, got '" + S + "'");
     } else if (A == "--serve") {
       O.Serve = true;
       // --serve=PORT, or --serve PORT when the next argument is a number.
@@ -750,6 +758,7 @@ int run(int Argc, char **Argv) try {
     W.Stop = &StopSignal;
     W.Control = O.Control;
     W.ReducedFirstPass = O.ReducedFirstPass;
+    W.FirstPassBudget = O.FirstPassBudgetMs / 1000;
     WatchResult Res = runWatch(std::move(W), L);
     int Sig = StopSignal.load();
     return Sig ? 128 + Sig : Res.Ok ? 0 : 1;

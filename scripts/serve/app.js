@@ -59,6 +59,10 @@ function showFrame(blob) {
   $("frame").src = frameUrl;
   $("tier").textContent = meta.tier ?? "-";
   $("spp").textContent = meta.spp ?? "-";
+  // A reduced first pass comes at its own size (1/factor of the width and height); the image
+  // element scales every frame to the same box.
+  $("resolution").textContent = meta.width != null ?
+    `${meta.width}x${meta.height}` + (meta.reduced ? ` (1/${meta.factor})` : "") : "-";
   $("builds").textContent = meta.builds ?? "-";
   $("frames").textContent = preview.frames;
   const edit = meta.edit != null ? preview.edits[meta.edit] : null;

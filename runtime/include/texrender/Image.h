@@ -23,6 +23,10 @@ ImageRGBA loadExr(const std::string &Path);
 /// Writes RGB (3 floats per pixel, linear) as .png (sRGB 8-bit) or .exr (float), chosen by
 /// the extension; anything else is an error. Atomic, like every texrender output.
 void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
+/// writeImage for a preview rewritten several times a second (texrender --watch): a .png is
+/// encoded for speed (no per-row filter search, the fastest deflate level: a larger file); an
+/// .exr as writeImage. Batch outputs use writeImage.
+void writePreviewImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
 
 /// Runs Write on a temporary name next to Path (a hidden file in the same folder) and renames
 /// it to Path only when Write has succeeded, so that a crash, a kill or an error never leaves a

@@ -61,6 +61,11 @@ struct RendererOptions {
   /// progress bar, Ctrl-C and --watch's progressive image). Returning false stops the frame at
   /// this pass boundary: it averages the passes done (FrameStats::Interrupted).
   std::function<bool(const PassProgress &)> AfterPass;
+  /// Called between the stages of a pass's bounces (the device idle). Returning true
+  /// abandons the pass in flight: its samples are never accumulated, and render() returns the
+  /// passes done before it (FrameStats::Interrupted, PassCut). texrender --watch cuts a pass
+  /// when an edit comes, whose accumulation restarts anyway.
+  std::function<bool()> CutPass;
 };
 
 
@@ -77,7 +82,8 @@ struct FrameStats {
   unsigned Passes = 0;
   int SamplesDone = 0;          // samples per pixel rendered (fewer than asked when TimeLimited)
   bool TimeLimited = false;     // RendererOptions::Deadline stopped the frame early
-  bool Interrupted = false;     // RendererOptions::AfterPass stopped the frame early
+  bool Interrupted = false;     // RendererOptions::AfterPass or CutPass stopped the frame early
+  bool PassCut = false;         // RendererOptions::CutPass abandoned a pass in flight
   unsigned Bounces = 0;         // bounce iterations summed over passes
   std::string Tier;             // the texture kernel that ran: interp, shape, inline, wavefront
   std::map<std::string, KernelTiming> Kernels;
@@ -161,6 +167,7 @@ private:
   /// Points each mesh at its material's index in Lay, by the material's name in scene.json:
   /// a regenerated layout may number the materials differently. A name Lay lacks is an error.
   void mapMeshMaterials();
+  /// Stops early (Stats.PassCut) when Opts.CutPass asks to, after a bounce.
   int traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttributes);
   /// AO of the Count hits of the active list: ao_trace + ao_reduce, or ao_loop.
   void runAo(const cl::Buffer &Active, int Count, FrameStats &Stats);

@@ -74,10 +74,36 @@ struct WatchOptions {
   /// standard output (docs/live.md, "Control channel"); the session also ends at the end of
   /// standard input.
   bool Control = false;
-  /// The first image after a change is one sample per pixel at half the width and height
-  /// (a quarter of the pixels), each pixel drawn 2x2, as viewports do; then accumulation
-  /// restarts at full resolution (the refined image equals a batch render bit for bit).
+  /// The first image after a change is one sample per pixel at 1/F of the width and height,
+  /// F = 2, 4, 8 or 16: the smallest whose predicted pass time fits FirstPassBudget (PassTimes,
+  /// from the passes rendered so far), as viewports do; then accumulation restarts at full
+  /// resolution (the refined image equals a batch render bit for bit). With Control the
+  /// reduced image is written at its own size (the front end scales it up), else each of its
+  /// pixels is drawn FxF.
   bool ReducedFirstPass = true;
+  double FirstPassBudget = 0.060; // seconds
+};
+
+/// Predicts a pass's time from its pixel count: the passes rendered so far, one smoothed time
+/// per pass size (the 4 sizes seen last; each new time weighs 1/2), fitted with a line (fixed
+/// cost + cost per pixel; through the origin while one size is known).
+class PassTimes {
+public:
+  void record(double Pixels, double Seconds);
+  /// Seconds predicted for a pass of Pixels; negative: nothing recorded yet.
+  double predict(double Pixels) const;
+  /// The reduction factor (2, 4, 8, 16) of a Width x Height image: the smallest whose pass
+  /// (ceil(Width/F) x ceil(Height/F) pixels) is predicted to take at most Budget seconds; the
+  /// largest (down to 1 pixel a side) when none is; 2 when nothing is recorded.
+  int factor(int Width, int Height, double Budget) const;
+
+private:
+  struct Size {
+    double Pixels = 0, Seconds = 0;
+    unsigned Seq = 0;
+  };
+  std::vector<Size> Sizes;
+  unsigned Seq = 0;
 };
 
 struct WatchResult {

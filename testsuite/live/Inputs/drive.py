@@ -10,6 +10,7 @@ Steps, run in order; each --wait reads the command's stderr, each --event its st
   --send LINE         writes LINE and a newline to the command's standard input
   --send-long N       writes a line of N bytes ('x') and a newline to its standard input
   --close             closes its standard input
+  --sleep S           waits S seconds
   --save SRC DST      copies SRC over DST's contents (in place, as an editor saving)
   --snap SRC DST      copies SRC (the image being rendered) to DST
   --signal INT|TERM   sends the signal, then copies the rest of its output
@@ -23,12 +24,13 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 
 
 def parse(args):
     steps, i = [], 0
     arity = {"--wait": 1, "--event": 1, "--save": 2, "--snap": 2, "--signal": 1,
-             "--send": 1, "--send-long": 1, "--close": 0}
+             "--send": 1, "--send-long": 1, "--close": 0, "--sleep": 1}
     while args[i] != "--":
         n = arity[args[i]]
         steps.append((args[i], args[i + 1:i + 1 + n]))
@@ -75,6 +77,8 @@ def main():
             proc.stdin.flush()
         elif kind == "--close":
             proc.stdin.close()
+        elif kind == "--sleep":
+            time.sleep(float(vals[0]))
         elif kind == "--save":
             with open(vals[0], "rb") as src, open(vals[1], "r+b") as dst:
                 data = src.read()
