@@ -150,7 +150,58 @@ def worker():
                          "mean": imgs.mean(axis=(0, 1, 2)).tolist()}
         return out
 
-    ops = {"render": render, "mask": mask, "analyze": analyze, "seeds": seeds}
+    def blocks(req):
+        """Issue 22's texture-only check: a = Cycles, b = texrender, both the material's colour
+        through Emission with no lights. Per block of req["block"] pixels: the relative
+        difference of the block means, |b / a - 1| per channel (the largest channel is the
+        block's figure). Blocks compared: those whose every pixel is on the model (mask);
+        "smooth" ones are those of them not on a discontinuity of the texture: in neither image
+        does the luminance within the block span more than req["edgeRange"] times the block's
+        mean luminance (a scratch line or a mask edge inside the block)."""
+        a, b = read_exr(req["a"]), read_exr(req["b"])
+        m = read_exr(req["mask"])[:, :, 0]
+        n = req["block"]
+        h, w = (m.shape[0] // n) * n, (m.shape[1] // n) * n
+
+        def tiles(x):
+            return x[:h, :w].reshape(h // n, n, w // n, n, -1).swapaxes(1, 2).reshape(
+                h // n, w // n, n * n, -1)
+
+        ta, tb, tm = tiles(a), tiles(b), tiles(m[:, :, None])[..., 0]
+        on_model = (tm >= 0.999).all(axis=2)
+        weights = np.array([0.2126, 0.7152, 0.0722])
+        edge = np.zeros_like(on_model)
+        for t in (ta, tb):
+            lum = t @ weights
+            span = lum.max(axis=2) - lum.min(axis=2)
+            edge |= span > req["edgeRange"] * np.maximum(lum.mean(axis=2), 1e-6)
+        ma, mb = ta.mean(axis=2), tb.mean(axis=2)
+        rel = np.abs(mb / np.maximum(ma, 1e-9) - 1).max(axis=2)
+        signed = mb / np.maximum(ma, 1e-9) - 1
+        out = {"blockPixels": n, "edgeRange": req["edgeRange"],
+               "blocks": int(on_model.size), "onModel": int(on_model.sum())}
+        for name, sel in (("model", on_model), ("smooth", on_model & ~edge)):
+            r = rel[sel]
+            if not r.size:
+                out[name] = {"blocks": 0}
+                continue
+            out[name] = {
+                "blocks": int(r.size), "maxRelPercent": float(100 * r.max()),
+                "p50RelPercent": float(100 * np.percentile(r, 50)),
+                "p90RelPercent": float(100 * np.percentile(r, 90)),
+                "p99RelPercent": float(100 * np.percentile(r, 99)),
+                "fractionWithin1Percent": float((r <= 0.01).mean()),
+                "meanSignedPercent": (100 * signed[sel].mean(axis=0)).tolist(),
+                "meanA": ma[sel].mean(axis=0).tolist(), "meanB": mb[sel].mean(axis=0).tolist()}
+        sel = m >= 0.999
+        ma, mb = a[sel].mean(axis=0), b[sel].mean(axis=0)
+        out["modelPixels"] = {"pixels": int(sel.sum()), "a": ma.tolist(), "b": mb.tolist(),
+                              "relDiffPercent": (100 * (mb / ma - 1)).tolist()}
+        if req.get("dump"):
+            np.savez(req["dump"], rel=rel, onModel=on_model, edge=edge, ma=ma, mb=mb)
+        return out
+
+    ops = {"render": render, "mask": mask, "analyze": analyze, "seeds": seeds, "blocks": blocks}
     reply({"ready": bpy.app.version_string})
     for line in sys.stdin:
         req = json.loads(line)
@@ -206,11 +257,11 @@ def ensure_bpy():
                     os.path.join(common.ROOT, "bench", "requirements.txt")])
 
 
-def make_blends(tools, variants=VARIANTS):
+def make_blends(tools, variants=VARIANTS, extra=(), tag=""):
     out = {}
     for v in variants:
-        out[v] = os.path.join(tools.work, "atrium-%s.blend" % v)
-        common.run([VENV_PYTHON, MAKE_SCENE, out[v], "--variant", v])
+        out[v] = os.path.join(tools.work, "atrium-%s%s.blend" % (v, tag))
+        common.run([VENV_PYTHON, MAKE_SCENE, out[v], "--variant", v] + list(extra))
     return out
 
 
@@ -361,6 +412,41 @@ def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",)):
     return out
 
 
+TEXTURE_ONLY_VARIANTS = ("rust-model", "scratches-model")
+
+
+def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge_range=0.5,
+                 seed=1):
+    """Issue 22: the model's material colour through Emission, no lights (make_scene.py
+    --texture-only), rendered by Cycles and by texrender from the exporter's output of the same
+    .blend; per-block agreement (the worker's blocks())."""
+    w, h = (int(x) for x in size.split("x"))
+    blends = make_blends(tools, variants, ["--texture-only"], "-texture-only")
+    cyc = Cycles()
+    out = {"size": size, "spp": spp, "cyclesVersion": cyc.version, "results": {},
+           "loadAverageBefore": os.getloadavg()}
+    try:
+        for v in variants:
+            mask = os.path.join(tools.work, "to-mask-%s.exr" % v)
+            cyc.call(op="mask", blend=blends[v], size=[w, h], spp=16, exr=mask)
+            cexr = os.path.join(tools.work, "to-cycles-%s.exr" % v)
+            t = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, seed=seed,
+                         exr=cexr)["seconds"]
+            own = {v: exported(tools, blends[v], v + "-texture-only")}
+            r, texr = texrender_once(tools, own, v, "auto", size, spp, "to-" + v, exr=True,
+                                     seed=seed)
+            res = cyc.call(op="blocks", a=cexr, b=texr, mask=mask, block=block,
+                           edgeRange=edge_range, dump=os.path.join(tools.work, "to-%s.npz" % v))
+            res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"],
+                        "images": {"cycles": cexr, "texrender": texr, "mask": mask}})
+            out["results"][v] = res
+            common.log("texture-only %s: smooth blocks %s" % (v, res.get("smooth")))
+    finally:
+        cyc.close()
+    out["loadAverageAfter"] = os.getloadavg()
+    return out
+
+
 def seed_spread(tools, cyc, blends, inputs, size, spp, n):
     """Issue 26: n seeds of the diffuse atrium per renderer at equal spp; RMSE between seeds."""
     w, h = (int(x) for x in size.split("x"))
@@ -452,14 +538,29 @@ def main():
                     help="add these rows to bench/results/cycles.json (replacing rows of the "
                     "same spp), e.g. a second run at another spp with a subset")
     ap.add_argument("--out", help="result file (default bench/results/cycles.json)")
+    ap.add_argument("--texture-only", action="store_true",
+                    help="only issue 22's texture-only check (rust-model and scratches-model: "
+                    "the material colour through Emission, no lights; 8x8-block agreement) at "
+                    "--agree-size (default 256x256) and --agree-spp (default 128); results in "
+                    "bench/results/cycles_texture_only.json")
     args = ap.parse_args()
     variants, renderers = args.variants.split(","), args.renderers.split(",")
     if "diffuse" not in variants or not set(variants) <= set(VARIANTS) or \
             not set(renderers) <= set(RENDERERS):
         ap.error("--variants must include diffuse; names from %s and %s" % (VARIANTS, RENDERERS))
-    base = common.load("cycles") if args.merge else None
     tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-cycles-"))
     t0 = time.perf_counter()
+    if args.texture_only:
+        ensure_bpy()
+        data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128)
+        data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
+                     "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+                     "machine": common.machine(), "build": os.path.relpath(tools.build,
+                                                                           common.ROOT),
+                     "command": "python3 bench/cycles.py " + " ".join(sys.argv[1:])})
+        common.save("cycles_texture_only", data, args.out)
+        return
+    base = common.load("cycles") if args.merge else None
 
     def save(data, complete=False):
         if base:

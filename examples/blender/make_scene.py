@@ -25,6 +25,13 @@ What it reads, what it writes:
   rusty, the rest gray. "rust-all": every mesh rusty. "scratches-model": the model scratched.
   The rust and scratches node trees are Blender versions of examples/rust and examples/scratches
   built from nodes textures/blender/ implements (docs/blender-nodes.md): see rust() and scratches().
+- --texture-only: the texture alone, for issue 22's per-block check (bench/cycles.py
+  --texture-only): the model's material colour (each BSDF's Color, Mix Shaders as a colour Mix by
+  the same Fac) through an Emission shader of strength 1; no sun, a black world; the other meshes
+  keep their diffuse, which is black without light (and still occludes the AO node's rays). The
+  Bump and Normal inputs drop out: this view checks what the texture computes, not the shading.
+  The camera keeps its direction and moves towards the model until its bounding sphere's radius
+  is 0.75 of the half-view, so that many 8x8 blocks lie wholly on the gears.
 """
 
 import argparse
@@ -229,6 +236,50 @@ def scratches(bpy):
     return m
 
 
+def material_colour(t, socket):
+    """(link output or None, constant RGBA): the colour of the shader feeding socket: a BSDF's
+    Color, a Mix Shader as a colour Mix (RGBA, same Fac) of its two shaders' colours."""
+    if not socket.is_linked:
+        return None, (0.0, 0.0, 0.0, 1.0)
+    n = socket.links[0].from_node
+    if n.bl_idname == "ShaderNodeMixShader":
+        mix = node(t, "ShaderNodeMix", n.name + "Colour")
+        mix.data_type = "RGBA"
+        mix.blend_type = "MIX"
+        mix.clamp_factor = True
+        fac = n.inputs["Fac"]
+        if fac.is_linked:
+            t.links.new(fac.links[0].from_socket, mix.inputs["Factor"])
+        else:
+            mix.inputs["Factor"].default_value = fac.default_value
+        for shader, ident in ((n.inputs[1], "A_Color"), (n.inputs[2], "B_Color")):
+            target = next(s for s in mix.inputs if s.identifier == ident)
+            link, value = material_colour(t, shader)
+            if link is not None:
+                t.links.new(link, target)
+            else:
+                target.default_value = value
+        return mix.outputs["Result"], None
+    colour = n.inputs["Color"] if "Color" in n.inputs else n.inputs["Base Color"]
+    if colour.is_linked:
+        return colour.links[0].from_socket, None
+    return None, tuple(colour.default_value)
+
+
+def texture_only(m):
+    """The material's colour through an Emission shader (strength 1), in place of its surface."""
+    t = m.node_tree
+    out = t.nodes["Output"]
+    link, value = material_colour(t, out.inputs["Surface"])
+    em = node(t, "ShaderNodeEmission", "TextureOnly", Strength=1.0)
+    if link is not None:
+        t.links.new(link, em.inputs["Color"])
+    else:
+        em.inputs["Color"].default_value = value
+    t.links.new(em.outputs["Emission"], out.inputs["Surface"])
+    return m
+
+
 # --- Scene -------------------------------------------------------------------------------------
 
 def import_obj(bpy, path, name):
@@ -314,6 +365,8 @@ def build(args):
     bg.inputs["Strength"].default_value = 1.0
     scene.world = world
     for i, light in enumerate(scene_json.get("lights", [])):
+        if args.texture_only:
+            continue  # no light: the world stays black, no sun
         if light["type"] == "sky":
             r = light["radiance"]
             bg.inputs["Color"].default_value = (r[0], r[1], r[2], 1.0)
@@ -343,6 +396,13 @@ def build(args):
     model_material = {"diffuse": "gray", "rust-model": "rusty", "rust-all": "rusty",
                       "scratches-model": "scratched"}[args.variant]
     other_material = "rusty" if args.variant == "rust-all" else "gray"
+    if args.texture_only:
+        if args.variant == "rust-all":
+            sys.exit("make_scene: --texture-only is for the model's material (rust-model, "
+                     "scratches-model, diffuse)")
+        model = mats[model_material].copy()
+        model.name = model_material + "-texture-only"
+        mats[model_material] = texture_only(model)
     conv = mathutils.Matrix(((1, 0, 0, 0), (0, 0, -1, 0), (0, 1, 0, 0), (0, 0, 0, 1)))
     for mesh in scene_json["meshes"]:
         path = os.path.join(base, mesh["obj"])
@@ -355,9 +415,19 @@ def build(args):
         obj.data.materials.append(mat)
         if "emission" in mesh:
             sys.exit("make_scene: %s: emissive meshes are not supported here" % mesh["obj"])
+    if args.texture_only:
+        # Frame the model (the camera keeps its direction): 8x8 blocks wholly on it are what
+        # the per-block check compares, and in the atrium's view the gears hold few of them.
+        model = bpy.data.objects["model"]
+        corners = [model.matrix_world @ mathutils.Vector(c) for c in model.bound_box]
+        centre = sum(corners, mathutils.Vector()) / 8.0
+        radius = max((c - centre).length for c in corners)
+        cam.matrix_world = mathutils.Matrix.Translation(
+            centre - forward * (0.75 * radius / math.tan(fov / 2.0))) @ rot.to_4x4()
     bpy.ops.wm.save_as_mainfile(filepath=os.path.abspath(args.out))
-    print("make_scene: %s (%s, %dx%d, %d spp, max_bounces %d)" %
-          (args.out, args.variant, width, height, c.samples, bounces))
+    print("make_scene: %s (%s%s, %dx%d, %d spp, max_bounces %d)" %
+          (args.out, args.variant, ", texture only" if args.texture_only else "", width, height,
+           c.samples, bounces))
 
 
 def main():
@@ -369,6 +439,8 @@ def main():
                     help="texrender scene to rebuild (default: examples/atrium/scene.json)")
     ap.add_argument("--spp", type=int, help="Cycles samples (default: the scene's spp)")
     ap.add_argument("--size", help="WxH (default: the scene's film)")
+    ap.add_argument("--texture-only", action="store_true",
+                    help="the model's material colour through Emission, no lights (issue 22)")
     args = ap.parse_args(argv)
     ensure_bpy("make_scene")
     build(args)
