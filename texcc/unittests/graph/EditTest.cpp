@@ -205,9 +205,10 @@ TEST(GraphEditor, NewFunctionNeedsARebuild) {
   EXPECT_TRUE(E.needsRebuild());
   EXPECT_TRUE(E.needsFunction()); // no fallback either (EditPlan: docs/modes.md's third row)
   EXPECT_FALSE(E.needsOnlyStackSlots()); // no headroom has a case for 'neg'
+  ASSERT_GE(E.compiled().findNode("u"), 0);
+  EXPECT_GE(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
   ASSERT_TRUE(E.rewire("s", "b", "a2", D)) << text(D); // back onto a function it has
   EXPECT_FALSE(E.needsFunction());
-  EXPECT_GE(E.compiled().Nodes[E.compiled().findNode("u")].FnId, 5u);
 }
 
 TEST(GraphEditor, AnAttributeNoArgumentReadNeedsADecoderCase) {
