@@ -100,9 +100,15 @@ def peer_settings(quick):
 
 def sampler_kernels(work, sampler):
     """kernels/ as it is (sampler "sobol"), or with RT_SAMPLER_PCG (the PCG stream of before
-    issue 26, bit for bit) put in front of rt_sampling.h."""
-    return common.kernel_variant(work, sampler, {"common/rt_sampling.h": "#define RT_SAMPLER_PCG 1\n"}
-                                 if sampler == "pcg" else {})
+    issue 26) put in front of rt_sampling.h; a spec BASE:NAME=VALUE[+NAME=VALUE] also puts
+    those bench-only defines in front of shade.cl (sampling.sampler_defines)."""
+    import sampling
+    base, defines = sampling.sampler_defines(sampler)
+    prepend = {"shade.cl": defines} if defines else {}
+    if base == "pcg":
+        prepend["common/rt_sampling.h"] = "#define RT_SAMPLER_PCG 1\n"
+    return common.kernel_variant(work, sampler.replace(":", "-").replace("=", "").replace(
+        "+", "-"), prepend)
 
 
 def reference(path, make):
@@ -112,7 +118,8 @@ def reference(path, make):
     return read_exr(path)
 
 
-def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=None):
+def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=None,
+                 overrides=None):
     """RMSE and HDR-FLIP against a converged reference as a function of spp and of frame time:
     texrender's default mode (interp, Embree on CPU) with its sampler and with the PCG sampler
     of before issue 26, and Cycles (bpy, .venv) on the same scene. Each renderer is measured
@@ -121,6 +128,7 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
     repetitions rotate the order of the renderers; seeds 1.. per repetition."""
     import cycles
     cfg = peer_settings(quick)
+    cfg.update({k: v for k, v in (overrides or {}).items() if v is not None})
     refs = refs or os.path.join(tools.work, "refs")
     os.makedirs(refs, exist_ok=True)
     w, h = (int(x) for x in cfg["size"].split("x"))
@@ -128,6 +136,8 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
     out = {"size": cfg["size"], "refSpp": cfg["refSpp"], "references": refs,
            "cyclesVersion": cyc.version, "scenes": {}, "loads": []}
     kernels = {s: sampler_kernels(tools.work, s) for s in samplers}
+    if "sobol" not in kernels:  # the references: the kernels as they are
+        kernels["sobol"] = sampler_kernels(tools.work, "sobol")
     try:
         for scene_name in cfg["scenes"]:
             graph, scene = PEER_SCENES[scene_name]
@@ -166,7 +176,7 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
             fixed = common.median([cyc.call(op="render", blend=blend, size=[16, 16], spp=1,
                                             seed=1)["seconds"] for _ in range(3)])
             for s in samplers:  # warm kernel caches
-                tr(s, 1, 1, "peer-warm")
+                tr(s, 1, 1, "peer-warm-" + s.replace(":", "-"))
             configs = ["texrender-" + s for s in samplers] + ["cycles"]
             points = []
             for spp in cfg["spp"]:
@@ -182,7 +192,8 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
                             img, r = read_exr(exr), ref["cycles"]
                             sec_frame = sec - fixed
                         else:
-                            sec, p = tr(c.split("-")[1], spp, seed, "peer-" + c)
+                            sec, p = tr(c.split("-", 1)[1], spp, seed,
+                                        "peer-" + c.replace(":", "-"))
                             img, r = read_exr(p), ref["texrender"]
                             sec_frame = sec
                         points.append({"renderer": c, "spp": spp, "rep": rep,
@@ -233,7 +244,14 @@ def main():
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
     ap.add_argument("--work", default="/tmp/texcc-accuracy-peer")
     ap.add_argument("--refs", default=None, help="folder of the reference EXRs (kept, reused)")
-    ap.add_argument("--samplers", default="sobol,pcg")
+    ap.add_argument("--samplers", default="sobol,pcg",
+                    help="texrender's samplers: sobol, pcg, or BASE:NAME=VALUE[+...] with "
+                    "bench-only shade.cl defines")
+    ap.add_argument("--size", help="film size (default 128x128)")
+    ap.add_argument("--ref-spp", type=int, help="the references' spp (default 4096)")
+    ap.add_argument("--spp", help="comma-separated spp of the sweep (default 1,4,16,64,256)")
+    ap.add_argument("--reps", type=int, help="repetitions (seeds 1..) per point (default 2)")
+    ap.add_argument("--scenes", help="comma-separated, of: " + ",".join(PEER_SCENES))
     ap.add_argument("--json", default=os.path.join(common.ROOT, "bench", "results",
                                                    "accuracy_peer.json"))
     args = ap.parse_args()
@@ -242,7 +260,11 @@ def main():
     def save(obj):
         with open(args.json, "w") as f:
             json.dump(obj, f, indent=1)
-    result = measure_peer(tools, args.quick, args.refs, tuple(args.samplers.split(",")), save)
+    overrides = {"size": args.size, "refSpp": args.ref_spp, "reps": args.reps,
+                 "spp": tuple(int(x) for x in args.spp.split(",")) if args.spp else None,
+                 "scenes": tuple(args.scenes.split(",")) if args.scenes else None}
+    result = measure_peer(tools, args.quick, args.refs, tuple(args.samplers.split(",")), save,
+                          overrides)
     result["machine"] = common.machine()
     save(result)
     for name, s in result["scenes"].items():

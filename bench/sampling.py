@@ -41,15 +41,28 @@ PARTS = {"all": (15, 0, 1000000), "sun": (SUN, 0, 1000000), "sky": (SKY, 0, 1000
 TAG = "SAMPLINGJSON "
 
 
+def sampler_defines(sampler):
+    """A sampler spec, BASE[:NAME=VALUE[+NAME=VALUE...]] (e.g. sobol:RT_SUN_SHARE=0), as its base
+    (pcg or sobol) and the bench-only defines to put in front of shade.cl."""
+    base, _, rest = sampler.partition(":")
+    if base not in ("pcg", "sobol"):
+        raise common.BenchError("unknown sampler %r (pcg or sobol)" % base)
+    defines = "".join("#define %s %s\n" % tuple(d.split("=", 1)) for d in rest.split("+") if d)
+    return base, defines
+
+
 def split_kernels(work, part, sampler="sobol"):
     """A copy of kernels/ whose shade.cl keeps only `part` (and, with sampler "pcg", whose
-    sampler is the PCG stream of before issue 26: RT_SAMPLER_PCG in rt_sampling.h)."""
+    sampler is the PCG stream of before issue 26: RT_SAMPLER_PCG in rt_sampling.h; a sampler
+    spec's defines go in front of shade.cl)."""
     mask, lo, hi = PARTS[part]
+    base, defines = sampler_defines(sampler)
     prepend = {"shade.cl": "#define RT_SPLIT_LIGHTS %d\n#define RT_SPLIT_MIN_LENGTH %d\n"
-                           "#define RT_SPLIT_MAX_LENGTH %d\n" % (mask, lo, hi)}
-    if sampler == "pcg":
+                           "#define RT_SPLIT_MAX_LENGTH %d\n%s" % (mask, lo, hi, defines)}
+    if base == "pcg":
         prepend["common/rt_sampling.h"] = "#define RT_SAMPLER_PCG 1\n"
-    return common.kernel_variant(work, "%s-%s" % (sampler, part), prepend)
+    tag = sampler.replace(":", "-").replace("=", "").replace("+", "-")
+    return common.kernel_variant(work, "%s-%s" % (tag, part), prepend)
 
 
 def read_exr(path):
@@ -76,22 +89,24 @@ def texrender_split(tools, args, textures, scene, sampler):
     out = {}
     for part in args.parts.split(","):
         kdir = split_kernels(tools.work, part, sampler)
-        imgs, seconds, inner = [], [], []
+        imgs, seconds, inner, shadow = [], [], [], []
         for seed in range(1, args.seeds + 1):
             common.log("sampling: texrender %s %s seed %d" % (sampler, part, seed))
-            name = "split-%s-%s-%d" % (sampler, part, seed)
+            name = "split-%s-%d" % (os.path.basename(kdir), seed)
             stats, path, _ = common.texrender(
                 tools, scene, textures, name,
                 ["--size", args.size, "--spp", str(args.spp), "--seed", str(seed),
                  "--kernels", kdir, "--variance", os.path.join(tools.work, name + ".var.exr")],
-                image="exr", cache=os.path.join(tools.work, "cache-%s-%s" % (sampler, part)))
+                image="exr", cache=os.path.join(tools.work, "cache-%s" % os.path.basename(kdir)))
             imgs.append(read_exr(path))
             inner.append(float(read_exr(os.path.join(tools.work, name + ".var.exr")).mean()))
             seconds.append(stats["renderSeconds"])
+            shadow.append(stats["rays"]["shadow"]["count"])
         out[part] = spread(imgs)
         # texrender --variance: the sample variance / spp of each pixel, mean over the seeds
         out[part]["meanPixelVarianceWithinImage"] = sum(inner) / len(inner)
         out[part]["renderSeconds"] = common.median(seconds)
+        out[part]["shadowRays"] = sum(shadow) / len(shadow)  # per image: the work, load-free
     return out
 
 
@@ -181,7 +196,8 @@ def main():
     ap.add_argument("--variant", default="diffuse", choices=sorted(SCENES))
     ap.add_argument("--work", default="/tmp/texcc-sampling")
     ap.add_argument("--samplers", default="pcg,sobol",
-                    help="texrender's samplers to split: pcg (before issue 26), sobol")
+                    help="texrender's samplers to split: pcg (before issue 26), sobol; each "
+                    "may carry bench-only shade.cl defines: sobol:RT_SUN_SHARE=0+NAME=VALUE")
     ap.add_argument("--parts", default="all,sun,sky,length1,direct,indirect",
                     help="comma-separated, of: " + ",".join(PARTS))
     ap.add_argument("--no-cycles", action="store_true")
