@@ -19,8 +19,18 @@ static inline bool ao_wanted(RtHit h, __global const RtTriAttr *triAttrs, __glob
  * (cosine-weighted around the shading normal, offset off the surface). */
 static inline void ao_ray_at(RtSurface s, __global const RtPath *p, int j, float eps, uint seed,
                              float3 *o, float3 *dir) {
+#ifdef RT_SAMPLER_PCG
   uint rng = rt_seed(p->rng, (uint)j, seed ^ 0xA0A0A0A0u);
   float u1 = rt_rand(&rng), u2 = rt_rand(&rng);
+#else
+  /* The hit's aoSamples rays are the first points of one Owen-scrambled Sobol pattern seeded
+   * per hit: stratified among themselves, as the rays of Cycles' AO node are. The estimate's
+   * variance matters beyond noise: a texture maps it through nonlinear nodes (the rust mask's
+   * smoothstep), whose mean then depends on it (issue 22: independent rays moved the rust
+   * colour by up to 3% from Cycles'). */
+  float2 u = rt_sobol2((uint)j, rt_seed(p->rng, 0x5A0u, seed ^ 0xA0A0A0A0u));
+  float u1 = u.x, u2 = u.y;
+#endif
   *dir = rt_to_world(rt_sample_cosine(u1, u2), s.ns);
   *o = rt_offset(s, *dir, eps);
 }
