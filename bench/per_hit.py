@@ -4,8 +4,8 @@ paper's Table 1 (examples/rust and examples/scratches), with shape mode's hoisti
 (docs/frontend.md, "Hoisting") on and off.
 
 Configurations: inline (first: the ratios are to it), interp (its value
-stack in local memory, texcc's default for these graphs' 2 and 3 slots), interp-private (the value
-stack a private array, --local-stack-limit=0), interp-unhoisted (interp --no-hoist),
+stack a private array; the local-memory stack was removed in 2026-12, bench/refactor-20.md),
+interp-unhoisted (interp --no-hoist),
 interp-unquickened (interp --max-quickened=0), wavefront,
 shape, shape --no-hoist (every declaration of the user's functions computed per hit), and
 shape+bake (every constant int argument baked, --bake: the "mode" arguments, as in section 3), and
@@ -39,7 +39,6 @@ import resources  # noqa: E402
 
 CONFIGS = (("inline", "inline", []),
            ("interp", "interp", []),
-           ("interp-private", "interp", ["--local-stack-limit=0"]),
            ("interp-unhoisted", "interp", ["--no-hoist"]),
            ("interp-unquickened", "interp", ["--max-quickened=0"]),
            ("wavefront", "wavefront", []),

@@ -1,9 +1,9 @@
-"""Figure 3b: where interp's value stack lives on a GPU. With --local-stack-limit=0 texcc's
+"""Figure 3b: where interp's value stack lives on a GPU. texcc's
 interp kernel (here with --max-quickened=0: no quickened opcodes, whose cases the register
 rewrites below would have to rewrite too) keeps it in a private array `float4 stack[TEXCC_STACK_SLOTS]` indexed by slot
 numbers read from args.bin ("array"); a GPU cannot index registers by a per-lane value, so the
-array goes to scratch memory. By default (at most 4 slots) it is a __local array of the
-work-group, `__local float4 stack[TEXCC_STACK_SLOTS * 64]` ("local", docs/modes.md). This
+array goes to scratch memory. (Until 2026-12 texcc could make it a __local array of the
+work-group, "local" in bench/results/value_stack.json; removed, bench/refactor-20.md.) This
 figure also rewrites the private kernel of rust and scratches two ways that keep the slots in
 registers, and compiles all four for gfx90a (bench/resources.py's command): "registers",
 one float4 variable per slot, read through a chain of selects and written through an if chain;
@@ -13,7 +13,6 @@ its text changes); they are measurements, not a texcc mode. Occupancy: the compi
 and the bound that local memory puts on it, computed (not measured on a GPU): gfx90a has 64 KiB
 of LDS per compute unit and 4 SIMDs, and a work-group of 64 is one wave, so at most
 floor(floor(65536 / LDS) / 4) waves per SIMD."""
-import json
 import os
 
 import common
@@ -78,23 +77,13 @@ def measure(tools, quick):
         # Without quickened opcodes (section 3 has the default kernel): the register rewrites
         # replace the one TEXCC_SLOT macro those cases would use as well.
         common.texcc(tools, os.path.join(common.ROOT, graph), folder, "interp",
-                     ["--local-stack-limit=0", "--max-quickened=0"])
-        local = os.path.join(tools.work, "vs-%s-local" % tex)
-        common.texcc(tools, os.path.join(common.ROOT, graph), local, "interp",
                      ["--max-quickened=0"])
         src = os.path.join(folder, "proctex.cl")
         with open(src) as f:
             text = f.read()
         slots = int(text.split("#define TEXCC_STACK_SLOTS ")[1].split()[0])
-        with open(os.path.join(local, "layout.json")) as f:
-            if json.load(f)["valueStack"] != "local":
-                raise common.BenchError("value_stack: %s has %d slots, over texcc's default "
-                                        "--local-stack-limit" % (tex, slots))
-        for variant, edits in (("array", None), ("local", None), ("registers", registers),
-                               ("soa", soa)):
+        for variant, edits in (("array", None), ("registers", registers), ("soa", soa)):
             path = src if edits is None else os.path.join(folder, "proctex-%s.cl" % variant)
-            if variant == "local":
-                path = os.path.join(local, "proctex.cl")
             if edits is not None:
                 with open(path, "w") as f:
                     f.write(rewrite(text, edits(slots), "%s/%s" % (tex, variant)))

@@ -38,12 +38,12 @@ static cl::opt<unsigned> StackLimit(
     cl::desc("Private value-stack cap in float4 slots; beyond it the interpreter spills to "
              "global memory (default 32)"),
     cl::value_desc("N"), cl::init(32), cl::cat(TexccCategory));
-static cl::opt<unsigned> LocalStackLimit(
-    "local-stack-limit",
-    cl::desc("interp: a value stack of at most N float4 slots is a __local array of the "
-             "work-group (out of scratch on a GPU; N*1 KiB of local memory per 64 work-items), "
-             "a larger one a private array (default 4; 0: always private)"),
-    cl::value_desc("N"), cl::init(4), cl::cat(TexccCategory));
+// Accepted and ignored: interp's value stack in local memory was removed in 2026-12 (it did not
+// pay: bench/refactor-20.md); layout.json "compileOptions" written before replay this option when
+// a live edit regenerates the kernel.
+static cl::opt<unsigned> LocalStackLimitIgnored("local-stack-limit", cl::Hidden,
+                                                cl::desc("Ignored (removed in 2026-12)"),
+                                                cl::cat(TexccCategory));
 static cl::opt<bool> NoHoist(
     "no-hoist",
     cl::desc("shape, interp: compute every declaration of the user's functions per hit, none "
@@ -125,7 +125,6 @@ static int run() {
   Opts.Backend.NoHoist = NoHoist;
   Opts.Backend.MaxQuickened = MaxQuickened;
   Opts.StackLimit = StackLimit;
-  Opts.LocalStackLimit = LocalStackLimit;
   Opts.LoopBudget = static_cast<uint32_t>(LoopBudget);
   Opts.Checks = !NoChecks;
   Opts.IncludeDirs.assign(IncludeDirs.begin(), IncludeDirs.end());

@@ -3,9 +3,7 @@
 (the oracle) and for interp, inline, wavefront and shape, evaluates each with texcc-eval over the
 same grid of hits, and compares every mode with the host (compare.py, max abs diff <= --tol).
 Shape mode must also agree bit for bit (--tol 0) with its interp fallback, proctex.interp.cl,
-which the tiered runtime swaps in while a new shape's kernel builds. An interp kernel whose
-value stack is a __local array (layout.json valueStack) must equal the same graph with a private
-one (--local-stack-limit=0) bit for bit, and a private one a local one; an interp kernel that
+which the tiered runtime swaps in while a new shape's kernel builds. An interp kernel that
 hoists values (layout.json kernel.uniforms) interp --no-hoist, and one with quickened opcodes
 interp --max-quickened=0. Every mode after interp
 must equal interp bit for bit too: every kernel has FP_CONTRACT OFF, so the modes differ only in
@@ -95,28 +93,6 @@ def check_fallback(out, dump, graph, args, lines):
                         lines))
 
 
-def check_stack(out, dump, graph, args, extra, lines):
-    """interp (out) against the same graph with its value stack in the other kind of memory,
-    bit for bit: a __local array (layout.json valueStack "local") against a private one
-    (--local-stack-limit=0), and a private one against a local one (--local-stack-limit at its
-    slot count). True without a check when the stack spills to global memory."""
-    with open(os.path.join(out, "layout.json")) as f:
-        layout = json.load(f)
-    kind = layout.get("valueStack")
-    if kind not in ("local", "private"):
-        return True
-    other = "private" if kind == "local" else "local"
-    limit = 0 if kind == "local" else layout["stackSlots"]
-    alt = out + "-" + other
-    alt_dump = alt + ".txt"
-    if not (run([args.texcc, "--mode=interp", "--graph", graph, "-o", alt] + extra +
-                ["--local-stack-limit=%d" % limit], lines)
-            and run([args.eval, alt, "--grid", str(args.grid)], lines, alt_dump)):
-        return False
-    return compare(dump, alt_dump, 0.0, "%s interp (value stack %s) = interp "
-                   "--local-stack-limit=%d (%s)" % (graph, kind, limit, other), lines)
-
-
 def check_unhoisted(out, dump, graph, args, extra, lines):
     """interp whose kernel hoists (layout.json kernel.uniforms) against interp --no-hoist, bit
     for bit; true without a check when nothing is hoisted."""
@@ -171,8 +147,7 @@ def check_graph(g, graph, args, modes, extra):
         if ok and mode == "shape":
             ok = check_fallback(out, dump, graph, args, lines)
         if ok and mode == "interp":
-            ok = check_stack(out, dump, graph, args, extra, lines)
-            ok = ok and check_unhoisted(out, dump, graph, args, extra, lines)
+            ok = check_unhoisted(out, dump, graph, args, extra, lines)
             ok = ok and check_unquickened(out, dump, graph, args, extra, lines)
             interp_dump = dump
         elif ok and interp_dump:

@@ -54,7 +54,7 @@ static void emitHeaderComment(std::ostringstream &OS, const CompiledGraph &CG,
      << " *   live:   " << CG.Nodes.size() << " nodes, " << Live.size()
      << " texture functions, " << CG.Materials.size() << " materials, value stack "
      << CG.StackSlots << " float4 slots"
-     << (CG.Spill ? " (spilled to scratch)" : Interprets && CG.LocalStack ? " (local memory)" : "") << "\n";
+     << (CG.Spill ? " (spilled to scratch)" : "") << "\n";
   const size_t Dead = std::count_if(CG.Signatures.begin(), CG.Signatures.end(),
                                     [&](const auto &KV) { return !Live.count(KV.first); });
   if (Interprets && Dead)

@@ -47,8 +47,7 @@ std::string generateGraphDot(const CompiledGraph &CG) {
   std::ostringstream OS;
   OS << "digraph texcc {\n"
      << "  // graph: " << CG.GraphPath << "; value stack: " << CG.StackSlots
-     << " slots; spill: " << (CG.Spill ? "yes" : "no")
-     << (CG.LocalStack ? "; in local memory" : "") << "\n"
+     << " slots; spill: " << (CG.Spill ? "yes" : "no") << "\n"
      << "  rankdir=LR;\n"
      << "  node [shape=record, fontname=\"monospace\", fontsize=10];\n";
   for (unsigned I = 0; I < CG.Nodes.size(); ++I) {

@@ -61,21 +61,17 @@ static void emitAttributeDecoder(std::ostringstream &OS, const CompiledGraph &CG
 
 static void emitDecoder(std::ostringstream &OS, const CompiledGraph &CG) {
   const bool Spill = CG.Spill;
-  OS << "/* Where value-stack slot s of this work-item lives: the private array, the work-group's\n"
-        " * local array (slot s of work-item l at s*64 + l), or (TEXCC_SPILL) the global scratch\n"
-        " * slice, slot s of hit gid at s*numHits + gid. */\n";
+  OS << "/* Where value-stack slot s of this work-item lives: the private array, or (TEXCC_SPILL)\n"
+        " * the global scratch slice, slot s of hit gid at s*numHits + gid. */\n";
   if (Spill)
     OS << "#define TEXCC_SLOT(s) scratch[(s) * (uint)numHits + (uint)gid]\n";
-  else if (CG.LocalStack)
-    OS << "#define TEXCC_SLOT(s) stack[(s) * 64u + (uint)get_local_id(0)]\n";
   else
     OS << "#define TEXCC_SLOT(s) stack[s]\n";
   OS << "\n";
   emitProgramLocator(OS);
   emitAttributeDecoder(OS, CG);
-  const char *StackParam = Spill           ? "__global const float4 *scratch, int numHits, int gid"
-                           : CG.LocalStack ? "__local const float4 *stack"
-                                           : "const float4 *stack";
+  const char *StackParam =
+      Spill ? "__global const float4 *scratch, int numHits, int gid" : "const float4 *stack";
   OS << "/* Decodes one argument of a float..float4 parameter from its source word src: a constant\n"
         " * of n floats at word at of the record's parameter block, a value-stack slot or an\n"
         " * attribute, widened to float4; the broadcast bit replicates .x (a float feeding a\n"
@@ -173,17 +169,9 @@ static std::string interpCall(const FunctionSignature &Sig, bool Hoists,
 }
 
 static void emitKernel(std::ostringstream &OS, const CompiledGraph &CG, bool Hoists) {
-  if (CG.LocalStack) {
-    // Out of scratch on a GPU (docs/modes.md): a __local array at kernel scope, which needs
-    // the work-group size at compile time; the runtime launches every kernel in groups of 64.
-    OS << "__kernel __attribute__((reqd_work_group_size(64, 1, 1))) void texcc_proctex(\n"
-       << kernelParameterList() << ") {\n"
-       << "  __local float4 stack[TEXCC_STACK_SLOTS * 64]; /* slot s of work-item l at s*64 + l */\n";
-  } else {
-    OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
-  }
+  OS << "__kernel void texcc_proctex(\n" << kernelParameterList() << ") {\n";
   emitKernelPrologue(OS, "");
-  if (!CG.Spill && !CG.LocalStack)
+  if (!CG.Spill)
     OS << "  float4 stack[TEXCC_STACK_SLOTS];\n";
   OS << "  const uint prog = texcc_program(fakeStack, mat);\n"
         "  const uint numInstructions = fakeStack[prog];\n"

@@ -124,7 +124,6 @@ static std::vector<std::string> replayArguments(const Options &Opts) {
   for (const std::string &D : Opts.Defines)
     A.push_back("-D" + D);
   A.push_back("--stack-limit=" + std::to_string(Opts.StackLimit));
-  A.push_back("--local-stack-limit=" + std::to_string(Opts.LocalStackLimit));
   A.push_back("--max-quickened=" + std::to_string(Opts.Backend.MaxQuickened));
   if (Opts.Backend.NoHoist)
     A.push_back("--no-hoist");
@@ -159,7 +158,6 @@ int compile(const Options &Opts) {
 
   gr::CompileOptions CompileOpts;
   CompileOpts.StackLimit = Opts.StackLimit;
-  CompileOpts.LocalStackLimit = Opts.LocalStackLimit;
   for (const fe::TranslatedSource &S : FR->Sources)
     for (const auto &Fn : S.Functions)
       CompileOpts.KnownFunctions.push_back(Fn.first);

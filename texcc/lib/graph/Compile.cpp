@@ -39,7 +39,7 @@ std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Si
   });
   whileAllocating("encoding the material programs", [&] {
     orderPrograms(*CG, Opts.Log);
-    allocateStackSlots(*CG, Opts.StackLimit, Opts.Log, Opts.LocalStackLimit);
+    allocateStackSlots(*CG, Opts.StackLimit, Opts.Log);
     computeWavefrontOrder(*CG, Opts.Log);
   });
   whileAllocating("laying out the arguments", [&] { layoutArguments(*CG, Opts.Log); });

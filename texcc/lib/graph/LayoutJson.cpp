@@ -125,7 +125,7 @@ kernel::Manifest layoutManifest(const CompiledGraph &CG) {
   M.StackSlots = CG.StackSlots;
   M.StackLimit = CG.StackLimit;
   M.Spill = CG.Spill;
-  M.ValueStack = CG.Spill ? "global" : CG.LocalStack ? "local" : "private";
+  M.ValueStack = CG.Spill ? "global" : "private";
   M.MaxOutputs = CG.MaxOutputs;
   M.ScratchFloat4PerHit = CG.Spill ? CG.StackSlots : 0;
   M.ArgsBinSize = CG.ArgsBin.size();

@@ -321,8 +321,7 @@ void orderPrograms(CompiledGraph &CG, std::ostream *Log) {
   }
 }
 
-void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Log,
-                        unsigned LocalStackLimit) {
+void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Log) {
   constexpr size_t Forever = std::numeric_limits<size_t>::max();
   // The slot a node got in an earlier material: reused when free, so that records (whose
   // source words name the slots of a node's children) can be shared between materials.
@@ -376,15 +375,11 @@ void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Lo
   }
   CG.StackLimit = StackLimit;
   CG.Spill = CG.StackSlots > StackLimit;
-  CG.LocalStack = !CG.Spill && CG.StackSlots <= LocalStackLimit;
   if (Log)
     *Log << "stack-slots: peak " << CG.StackSlots << " slot" << (CG.StackSlots == 1 ? "" : "s")
          << " over " << CG.Materials.size() << " material"
          << (CG.Materials.size() == 1 ? "" : "s") << "; limit " << StackLimit
-         << (CG.Spill         ? ": values spill to global memory"
-             : CG.LocalStack ? ": in local memory (local limit " +
-                                   std::to_string(LocalStackLimit) + ")"
-                             : ": private")
+         << (CG.Spill ? ": values spill to global memory" : ": private")
          << "\n";
 }
 

@@ -75,13 +75,13 @@ std::string treeGraph(unsigned Depth) {
 }
 
 CompiledGraph upToSlots(const std::string &Json, unsigned Limit = 32,
-                        std::ostream *Log = nullptr, unsigned LocalLimit = 0) {
+                        std::ostream *Log = nullptr) {
   CompiledGraph CG = resolved(Json);
   removeUnreachableNodes(CG, nullptr);
   mergeIdenticalNodes(CG, nullptr);
   assignFunctionIds(CG, stdSigs(), CompileOptions(), nullptr);
   orderPrograms(CG, nullptr);
-  allocateStackSlots(CG, Limit, Log, LocalLimit);
+  allocateStackSlots(CG, Limit, Log);
   return CG;
 }
 
@@ -260,23 +260,6 @@ TEST(StackSlots, PeakIsOverAllMaterialsAndLogged) {
                        "stack-slots: material 'two': 's' -> slot 0\n"
                        "stack-slots: peak 2 slots over 2 materials; limit 32: private\n");
   EXPECT_FALSE(CG.Spill);
-  EXPECT_FALSE(CG.LocalStack);
-}
-
-TEST(StackSlots, LocalUpToTheLocalLimitNotWhenSpilled) {
-  const std::string Json =
-      graphJson({leaf("a", 1), leaf("b", 2), add("s", "a", "b")},
-                R"({"two": {"bsdf": "emission", "color": 1, "strength": {"node": "s"}}})");
-  std::ostringstream Log;
-  CompiledGraph AtLimit = upToSlots(Json, 32, &Log, 2);
-  EXPECT_EQ(AtLimit.StackSlots, 2u);
-  EXPECT_TRUE(AtLimit.LocalStack);
-  EXPECT_NE(Log.str().find("limit 32: in local memory (local limit 2)\n"), std::string::npos)
-      << Log.str();
-  EXPECT_FALSE(upToSlots(Json, 32, nullptr, 1).LocalStack); // over the local limit: private
-  CompiledGraph Spilled = upToSlots(Json, 1, nullptr, 4);   // spilled: global, never local
-  EXPECT_TRUE(Spilled.Spill);
-  EXPECT_FALSE(Spilled.LocalStack);
 }
 
 TEST(StackSlots, RandomDagsAllocateValidly) {

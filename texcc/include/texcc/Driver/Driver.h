@@ -23,7 +23,6 @@ struct Options {
   codegen::Target Tgt = codegen::Target::OpenCL;
   codegen::BackendOptions Backend;
   unsigned StackLimit = 32;
-  unsigned LocalStackLimit = 4;
   /// 0: the kernel's default loop budget.
   uint32_t LoopBudget = 0;
   bool Checks = true;

@@ -60,10 +60,6 @@ struct QuickenedOp {
 struct CompileOptions {
   /// Private value-stack cap in float4 slots; beyond it values live in a global spill slice.
   unsigned StackLimit = 32;
-  /// Up to this many slots (and not spilled), the interpreter's value stack is a __local array
-  /// of the work-group (slot s of work-item l at s*64 + l), out of scratch on a GPU; above
-  /// it, a private array (docs/modes.md). 0: always private.
-  unsigned LocalStackLimit = 4;
   /// Live edits of an interp kernel that hoists (layout.json kernel.uniforms): it calls
   /// texcc_hoisted_<fn> for every node of a function with hoisted values, so an edit that
   /// makes one of their Sig.HoistedFrom parameters a non-constant needs a new kernel.
@@ -188,7 +184,6 @@ struct CompiledGraph {
   unsigned StackSlots = 0;     // exact peak over all materials (TEXCC_STACK_SLOTS)
   unsigned StackLimit = 0;
   bool Spill = false;          // StackSlots > StackLimit: values in a global slice
-  bool LocalStack = false;     // !Spill && StackSlots <= LocalStackLimit: a __local array
   unsigned MaxOutputs = 0;     // TEXCC_MAX_OUTPUTS (at least 1)
   std::vector<std::string> Attributes;  // read by live functions or live node args, sorted
   std::vector<std::string> Settings;    // read by live functions, sorted

@@ -34,10 +34,8 @@ std::vector<unsigned> slotNeeds(const CompiledGraph &CG);
 /// needing more slots is evaluated first.
 void orderPrograms(CompiledGraph &CG, std::ostream *Log);
 /// Liveness-based value-stack slots: a slot is free after its last reader; outputs stay live to
-/// the end. Sets ResultSlot, output slots, StackSlots (exact peak), StackLimit, Spill and
-/// LocalStack (at most LocalStackLimit slots, not spilled).
-void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Log,
-                        unsigned LocalStackLimit = 0);
+/// the end. Sets ResultSlot, output slots, StackSlots (exact peak), StackLimit and Spill.
+void allocateStackSlots(CompiledGraph &CG, unsigned StackLimit, std::ostream *Log);
 /// A topological order of all live nodes (the wavefront launch order).
 void computeWavefrontOrder(CompiledGraph &CG, std::ostream *Log);
 /// Parameter blocks (OpenCL alignment), records (16-aligned), record copies, array data,
