@@ -541,8 +541,9 @@ def main():
     ap.add_argument("--texture-only", action="store_true",
                     help="only issue 22's texture-only check (rust-model and scratches-model: "
                     "the material colour through Emission, no lights; 8x8-block agreement) at "
-                    "--agree-size (default 256x256) and --agree-spp (default 128); results in "
-                    "bench/results/cycles_texture_only.json")
+                    "--agree-size (default 256x256) and --agree-spp (default 128); "
+                    "--agree-variants picks one of them, --merge replaces only its results; "
+                    "results in bench/results/cycles_texture_only.json")
     args = ap.parse_args()
     variants, renderers = args.variants.split(","), args.renderers.split(",")
     if "diffuse" not in variants or not set(variants) <= set(VARIANTS) or \
@@ -552,12 +553,22 @@ def main():
     t0 = time.perf_counter()
     if args.texture_only:
         ensure_bpy()
-        data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128)
+        which = [v for v in args.agree_variants.split(",") if v != "diffuse"] or \
+            list(TEXTURE_ONLY_VARIANTS)
+        data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which)
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "build": os.path.relpath(tools.build,
                                                                            common.ROOT),
                      "command": "python3 bench/cycles.py " + " ".join(sys.argv[1:])})
+        old = common.load("cycles_texture_only") if args.merge else None
+        if old:  # --merge: these variants replace theirs, each with its own run's details
+            for v in data["results"]:
+                data["results"][v]["run"] = {k: data[k] for k in (
+                    "size", "spp", "git", "date", "command", "loadAverageBefore",
+                    "loadAverageAfter")}
+            old["results"].update(data["results"])
+            data = old
         common.save("cycles_texture_only", data, args.out)
         return
     base = common.load("cycles") if args.merge else None
