@@ -112,6 +112,7 @@ def stability(data):
 
 
 PEER_STYLE = {"texrender-sobol": ("tab:blue", "o-", "texrender (Sobol-Owen)"),
+              "texrender-sobol-fixed-share": ("tab:cyan", "d:", "texrender (fixed sun share, before)"),
               "texrender-pcg": ("tab:gray", "s--", "texrender (PCG, before)"),
               "cycles": ("tab:red", "^-", "Cycles")}
 

@@ -659,6 +659,35 @@ def ao_section(d):
     return lines
 
 
+def peer_section(d):
+    """4b: bench/accuracy.py --peer, error against converged references beside Cycles."""
+    if not d or not d.get("scenes"):
+        return []
+    names = {"cycles": "Cycles", "texrender-sobol": "texrender",
+             "texrender-sobol-fixed-share": "texrender, fixed sun share (before)",
+             "texrender-pcg": "texrender, PCG (before)"}
+    lines = ["## 4b. Error against converged references, beside Cycles", "",
+             "`bench/accuracy.py --peer` (details and the runs' notes: bench/sampling.md): %s, "
+             "each renderer against its own %d-spp reference; RMSE (RMS over the repetitions, "
+             "seeds 1..) and the median frame time (Cycles' without its fixed sync + BVH part)."
+             % (d["size"], d["refSpp"]), ""]
+    for scene, s in d["scenes"].items():
+        rows = {}
+        for r in s["summary"]:
+            rows.setdefault(r["spp"], {})[r["renderer"]] = r
+        order = [r for r in names if any(r in v for v in rows.values())]
+        lines += ["%s:" % scene, "",
+                  "| spp | " + " | ".join("%s RMSE, s" % names[r] for r in order) + " |",
+                  "|---|" + "---|" * len(order)]
+        for spp in sorted(rows):
+            lines.append("| %d | " % spp + " | ".join(
+                "%.5f, %.2f" % (rows[spp][r]["rmse"], rows[spp][r]["seconds"])
+                if r in rows[spp] else "" for r in order) + " |")
+        lines.append("")
+    chart = charts.accuracy_peer(d)
+    return lines + ["![error against converged references](%s)" % chart, ""]
+
+
 def tail_sections():
     lines = ["## 7. GPU", "",
              "No GPU was available to this session: every time above is a CPU (PoCL) time. "
@@ -705,6 +734,7 @@ def write(args=None):
     lines += per_hit_nodes_section(common.load("per_hit-blender"))  # a standalone run
     lines += resources_section(results["resources"]) + value_stack_section(results["value_stack"])
     lines += accuracy_section(results["accuracy"])
+    lines += peer_section(common.load("accuracy_peer"))
     lines += stability_section(results["stability"]) + ao_section(results["ao"])
     lines += cycles_section(results["cycles"])
     lines += tail_sections()
