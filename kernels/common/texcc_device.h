@@ -18,19 +18,23 @@ typedef int sam2D; /* an image index into TexccCtx::images */
 
 /* The safety state of one work-item (docs/reliability.md "User code"): what is left of its loop
  * budget, which node runs (TEXCC_FAULT_AT), and where a tripped check records the launch's
- * first fault (texcc_abi.h). */
+ * first fault (texcc_abi.h). The kernel's prologue sets the fields up to badLine; the details
+ * after it are written only when line or badLine is first set and read only then, and are
+ * volatile so that they stay in memory: otherwise the device compiler carries a copy of each
+ * through every loop and every case of the interp dispatch (rust interp: 3745.8 instructions
+ * per hit against 3702.8 with them volatile, 3662.7 unchecked; bench/loop-budget.md). */
 typedef struct TexccGuard {
   uint loopsLeft;
   uint at;
   int hit;
   int material;
   __global int *fault;
-  int line;     /* of the loop that spent the budget; 0: none did */
-  uint lineAt;  /* at, when it did */
-  int badLine;  /* of the first __global array read out of bounds; 0: none was */
-  uint badAt;   /* at, when it was */
-  int badIndex; /* its index (clamped to the int range) */
-  uint badLength; /* and its array's length */
+  int line;    /* of the loop that spent the budget; 0: none did */
+  int badLine; /* of the first __global array read out of bounds; 0: none was */
+  volatile uint lineAt;    /* at, when the budget was spent */
+  volatile uint badAt;     /* at, when the read was out of bounds */
+  volatile int badIndex;   /* its index (clamped to the int range) */
+  volatile uint badLength; /* and its array's length */
 } TexccGuard;
 
 typedef struct TexccCtx {
@@ -55,7 +59,6 @@ typedef struct TexccCtx {
  * shape mode 51 VGPRs and 8 B of scratch with voronoiSearch called, 36 and 0 B inlined). */
 #define TEXCC_FN __attribute__((always_inline))
 
-/* Records a fault unless one was recorded before in this launch (one compare-exchange). */
 /* Records a fault unless one was recorded before in this launch (one compare-exchange). */
 static inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, int detail,
                                int extra) {
@@ -111,6 +114,15 @@ static inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
 static inline bool texcc_loop_charge_span(const TexccCtx *c, long span, int line) {
   return texcc_loop_charge(c, span <= 0 ? 0u : span >= (long)UINT_MAX ? UINT_MAX : (uint)span,
                            line);
+}
+
+/* The same for such a loop with constant loops nested in it, which it charges for (they carry
+ * no charge of their own): `texcc_loop_charge_nest(texcc_ctx, SPAN, PER, __LINE__)`, PER being
+ * the iterations each of its iterations accounts for (1 plus the nested loops' counts);
+ * charged max(0, span) * PER, at most UINT_MAX. */
+static inline bool texcc_loop_charge_nest(const TexccCtx *c, long span, uint per, int line) {
+  const ulong n = span <= 0 ? 0ul : (ulong)min(span, (long)UINT_MAX) * (ulong)per;
+  return texcc_loop_charge(c, n >= (ulong)UINT_MAX ? UINT_MAX : (uint)n, line);
 }
 
 /* texcc turns every read `p[i]` of a __global array parameter into

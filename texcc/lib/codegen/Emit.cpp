@@ -111,7 +111,15 @@ void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard, const 
      << "  ctx.settings = settings;\n"
      << "  ctx.texels = texels;\n"
      << "  ctx.images = images;\n"
-     << "  TexccGuard guard = {TEXCC_LOOP_BUDGET, " << At << ", gid, mat, faults, 0, 0u};\n"
+     // Field by field: the fault details after badLine stay unset (texcc_device.h).
+     << "  TexccGuard guard;\n"
+     << "  guard.loopsLeft = TEXCC_LOOP_BUDGET;\n"
+     << "  guard.at = " << At << ";\n"
+     << "  guard.hit = gid;\n"
+     << "  guard.material = mat;\n"
+     << "  guard.fault = faults;\n"
+     << "  guard.line = 0;\n"
+     << "  guard.badLine = 0;\n"
      << "  ctx.guard = &guard;\n"
      << "  const TexccCtx *texcc_ctx = &ctx;\n";
 }

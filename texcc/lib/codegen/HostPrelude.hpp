@@ -399,6 +399,14 @@ inline bool texcc_loop_charge_span(const TexccCtx *c, long long span, int line) 
       c, span <= 0 ? 0u : span >= static_cast<long long>(UINT_MAX) ? UINT_MAX : uint(span), line);
 }
 
+inline bool texcc_loop_charge_nest(const TexccCtx *c, long long span, uint per, int line) {
+  const unsigned long long n =
+      span <= 0 ? 0ull
+                : static_cast<unsigned long long>(
+                      span < static_cast<long long>(UINT_MAX) ? span : UINT_MAX) * per;
+  return texcc_loop_charge(c, n >= UINT_MAX ? UINT_MAX : uint(n), line);
+}
+
 inline bool texcc_index_ok(const TexccCtx *c, long long i, uint n, int line) {
   if (!TEXCC_CHECKS || (i >= 0 && static_cast<unsigned long long>(i) < n))
     return true;

@@ -106,6 +106,11 @@ public:
 
 private:
   void reportUnbounded(clang::SourceLocation Loc);
+  /// Iterations a charged `for` accounts for per iteration of its own: 1 plus the whole count of
+  /// every constant loop nested in it that it charges for (Safety.cpp, perIteration); 1 when
+  /// it charges for none. Memoized per loop.
+  uint64_t perIteration(const clang::ForStmt *F, const clang::FunctionDecl *Fn);
+  std::map<const clang::Stmt *, uint64_t> PerIterationMemo;
   FileContext &FC;
 };
 

@@ -99,6 +99,9 @@ static std::optional<uint64_t> constantTripCount(const ForStmt *F, const ASTCont
 
 /// Charged once before a loop whose trip count is a loop-invariant span (invariantTripSpan).
 static const char *const LoopChargeSpan = "texcc_loop_charge_span(texcc_ctx, ";
+/// The same for such a loop that charges for the constant loops nested in it (perIteration):
+/// its span times their iterations per iteration of its own.
+static const char *const LoopChargeNest = "texcc_loop_charge_nest(texcc_ctx, ";
 
 /// Whether V's address is taken anywhere under S (then a write through a pointer could change it
 /// where no assignment names it).
@@ -259,6 +262,94 @@ static std::optional<LoopHead> lexHead(const FileContext &FC, SourceLocation LPa
   return Head;
 }
 
+/// How the budget can charge a `for` once before it runs: its constant trip count
+/// (constantTripCount), or else the text of its loop-invariant span (invariantTripSpan);
+/// std::nullopt for a loop that ticks per iteration (or whose head cannot be rewritten).
+struct ForCharge {
+  std::optional<uint64_t> Trips;
+  std::string Span;
+};
+
+static std::optional<ForCharge> forCharge(const ForStmt *F, const FunctionDecl *Fn,
+                                          FileContext &FC) {
+  std::optional<LoopHead> Head =
+      lexHead(FC, FC.spelled(F->getLParenLoc()), FC.spelled(F->getRParenLoc()));
+  const SourceLocation ForLoc = F->getForLoc();
+  if (!Head || !ForLoc.isFileID() || FC.SM.getFileID(ForLoc) != Head->File)
+    return std::nullopt;
+  if (std::optional<uint64_t> Trips = constantTripCount(F, FC.Ctx))
+    return ForCharge{Trips, ""};
+  if (std::optional<std::string> Span = invariantTripSpan(F, Fn, FC, Head->File))
+    return ForCharge{std::nullopt, *Span};
+  return std::nullopt;
+}
+
+/// The `for` whose body holds S, with no other loop between them, or null: S is at the
+/// function's top level, inside a `while` or `do` first, or reached through a declaration or a
+/// loop's head (a statement expression).
+static const ForStmt *enclosingFor(const Stmt *S, ASTContext &Ctx) {
+  const Stmt *Child = S;
+  while (true) {
+    const DynTypedNodeList Parents = Ctx.getParents(*Child);
+    if (Parents.size() != 1)
+      return nullptr;
+    const Stmt *Up = Parents[0].get<Stmt>();
+    if (!Up || isa<WhileStmt, DoStmt>(Up))
+      return nullptr;
+    if (const auto *F = dyn_cast<ForStmt>(Up))
+      return F->getBody() == Child ? F : nullptr;
+    Child = Up;
+  }
+}
+
+/// The most a charge may be: the budget's counter is 32 bits.
+static constexpr uint64_t MaxCharge = UINT32_MAX;
+
+/// A charged `for` F also charges for the constant loops nested in it (no other loop between):
+/// each runs at most once per iteration of F, so F is charged, per iteration of its own, 1 plus
+/// each such loop's whole count (its trips times its own per-iteration count), and they carry
+/// no charge of their own. Summed this way a perfect constant nest (voronoi's 3x3x3 search:
+/// 3 * (1 + 3 * (1 + 3)) = 39) is charged what its loops' separate charges added up to, in one
+/// test. A nested loop that does not run (an `if` around it, an early `break`) is charged all
+/// the same: the budget is an upper bound. 1 when F charges for none (none there, or the total
+/// would pass MaxCharge: then they charge themselves).
+uint64_t LoopBudget::perIteration(const ForStmt *F, const FunctionDecl *Fn) {
+  if (auto It = PerIterationMemo.find(F); It != PerIterationMemo.end())
+    return It->second;
+  std::optional<ForCharge> Own = forCharge(F, Fn, FC);
+  uint64_t Sum = 1;
+  bool Fits = Own.has_value();
+  std::vector<const Stmt *> Work{F->getBody()};
+  while (Fits && !Work.empty()) {
+    const Stmt *S = Work.back();
+    Work.pop_back();
+    if (!S || isa<WhileStmt, DoStmt>(S))
+      continue; // the loops inside a while or do are charged there
+    if (const auto *C = dyn_cast<ForStmt>(S)) {
+      if (enclosingFor(C, FC.Ctx) != F)
+        continue;
+      std::optional<ForCharge> Inner = forCharge(C, Fn, FC);
+      if (!Inner || !Inner->Trips)
+        continue; // charged (its span) or ticking on its own, with what it holds
+      const uint64_t Per = perIteration(C, Fn);
+      if (*Inner->Trips != 0 && Per > MaxCharge / *Inner->Trips) {
+        Fits = false;
+        break;
+      }
+      Sum += *Inner->Trips * Per;
+      Fits = Sum <= MaxCharge;
+      continue;
+    }
+    for (const Stmt *Child : S->children())
+      Work.push_back(Child);
+  }
+  if (Fits && Own->Trips && *Own->Trips != 0 && Sum > MaxCharge / *Own->Trips)
+    Fits = false;
+  const uint64_t Result = Fits ? Sum : 1;
+  PerIterationMemo[F] = Result;
+  return Result;
+}
+
 void LoopBudget::run(const MatchFinder::MatchResult &Result) {
   const auto *Fn = Result.Nodes.getNodeAs<FunctionDecl>("fn");
   const auto *Loop = Result.Nodes.getNodeAs<Stmt>("loop");
@@ -291,23 +382,30 @@ void LoopBudget::run(const MatchFinder::MatchResult &Result) {
   }
   // A loop of a known trip count N is charged once before it runs, so that its iterations carry
   // no test (and the device compiler can unroll it): for (...) -> if (!charge(N)) {} else
-  // for (...), the empty branch first so that an `else` after the loop keeps its `if`.
+  // for (...), the empty branch first so that an `else` after the loop keeps its `if`. A loop
+  // whose bound does not change while it runs (fbm's octaves, a ramp's stop count) is charged
+  // its span once in the same way. A constant loop nested in a charged one is charged there
+  // (perIteration) and is left as written.
   const auto *For = cast<ForStmt>(Loop);
-  SourceLocation ForLoc = For->getForLoc();
-  if (std::optional<uint64_t> Trips = constantTripCount(For, FC.Ctx);
-      Trips && ForLoc.isFileID() && FC.SM.getFileID(ForLoc) == Head->File) {
-    FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopCharge) + std::to_string(*Trips) +
-                                      "u, __LINE__)) {} else for");
+  const SourceLocation ForLoc = For->getForLoc();
+  if (std::optional<ForCharge> Charge = forCharge(For, Fn, FC)) {
+    if (const ForStmt *Outer = enclosingFor(For, FC.Ctx);
+        Charge->Trips && Outer && perIteration(Outer, Fn) > 1)
+      return;
+    const uint64_t Per = perIteration(For, Fn);
+    if (Charge->Trips)
+      FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopCharge) +
+                                        std::to_string(*Charge->Trips * Per) +
+                                        "u, __LINE__)) {} else for");
+    else if (Per > 1)
+      FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopChargeNest) + Charge->Span +
+                                        ", " + std::to_string(Per) +
+                                        "u, __LINE__)) {} else for");
+    else
+      FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopChargeSpan) + Charge->Span +
+                                        ", __LINE__)) {} else for");
     return;
   }
-  // A loop whose bound does not change while it runs (fbm's octaves, a ramp's stop count) is
-  // charged its span once in the same way.
-  if (ForLoc.isFileID() && FC.SM.getFileID(ForLoc) == Head->File)
-    if (std::optional<std::string> Span = invariantTripSpan(For, Fn, FC, Head->File)) {
-      FC.Edits.replaceToken(ForLoc, "if (!" + std::string(LoopChargeSpan) + *Span +
-                                        ", __LINE__)) {} else for");
-      return;
-    }
   // for (init; c; inc) -> for (init; (c) && tick; inc); for (init;; inc) -> for (init; tick; inc).
   std::vector<size_t> Semis;
   int Depth = 0;
