@@ -705,7 +705,20 @@ def tail_sections():
         if os.path.exists(os.path.join(common.ROOT, name)):
             lines.append("- [%s](%s): %s" % (name, name, text))
     lines += bvh_build_lines()
+    lines += check_cost_lines()
     return lines + [""]
+
+
+def check_cost_lines():
+    """The user-code checks' cost (issue 19), quoted from bench/results/instructions-checks.json."""
+    d = common.load("instructions-checks")
+    if not d or not d.get("rows"):
+        return []
+    cells = ", ".join("%s %s %+.2f%%" % (r["texture"], r["mode"], 100 * r["cost"]) for r in d["rows"])
+    worst = max(r["cost"] for r in d["rows"])
+    return ["", "Cost of the user-code checks (loop budget and bounds checks), instructions per textured "
+            "hit counted by callgrind, checked against `texcc --no-checks` (`bench/instructions.py "
+            "--checks`, bench/loop-budget.md): %s; at most %+.2f%% (target: 2%%)." % (cells, 100 * worst)]
 
 
 def bvh_build_lines():
