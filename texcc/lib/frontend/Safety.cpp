@@ -607,6 +607,10 @@ void ResourceLimits::registerMatchers(MatchFinder &Finder) {
                          hasParent(stmt().bind("attributed")),
                          forFunction(functionDecl().bind("fn"))),
                     this);
+  Finder.addMatcher(stmt(anyOf(gotoStmt(), addrLabelExpr()),
+                         forFunction(functionDecl().bind("fn")))
+                        .bind("goto"),
+                    this);
 }
 
 void ResourceLimits::run(const MatchFinder::MatchResult &Result) {
@@ -616,6 +620,14 @@ void ResourceLimits::run(const MatchFinder::MatchResult &Result) {
   if (!FC.isUserFunction(Fn))
     return;
   DiagnosticsEngine &DE = FC.Ctx.getDiagnostics();
+  if (const auto *Goto = Result.Nodes.getNodeAs<Stmt>("goto")) {
+    unsigned Id = DE.getCustomDiagID(DiagnosticsEngine::Error,
+                                     "goto is not supported in texture code: a backward goto is a "
+                                     "loop that the loop budget cannot bound; write it as a for, "
+                                     "while or do loop");
+    DE.Report(Goto->getBeginLoc(), Id);
+    return;
+  }
   if (Array) {
     if (Array->getType().getAddressSpace() != LangAS::opencl_private &&
         Array->getType().getAddressSpace() != LangAS::Default)
