@@ -9,7 +9,11 @@ build="$root/build-asan"
 "$root/scripts/setup.sh"
 cd "$root"
 [ -f "$build/build.ninja" ] || cmake --preset asan
-cmake --build --preset asan
+# TEXCC_ASAN_TARGETS: build only these targets (e.g. the tools, for `--filter reliability/`:
+# "texcc texrender texcc-eval texcc-cl-probe texcc-fe texcc-graph texrender-compare"), not the
+# unit tests too; CMAKE_BUILD_PARALLEL_LEVEL sets the build's jobs.
+read -r -a targets <<<"${TEXCC_ASAN_TARGETS:-}"
+cmake --build --preset asan ${targets[@]:+--target "${targets[@]}"}
 
 # Every report is fatal: UBSan in GCC's default (recovering) mode would only print and go on.
 # LeakSanitizer stays on for our code; scripts/lsan.supp lists the leaks that belong to the

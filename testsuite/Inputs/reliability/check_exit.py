@@ -5,6 +5,8 @@
 lit's `not` accepts any non-zero status; the reliability corpus wants exactly 1 (an error
 reported), never a signal (a crash) or a hang. The command's stdout and stderr pass through.
 --empty DIR: DIR must be missing or empty afterwards (no partial output, no temporaries).
+--timeout S (default 25) is multiplied by $TEXCC_TIMEOUT_SCALE when set: the sanitizer build
+runs the tools several times slower (reliability/lit.local.cfg sets it there).
 """
 import os
 import subprocess
@@ -27,6 +29,7 @@ def main():
             timeout = float(value)
         else:
             sys.exit(f"check_exit.py: unknown option {flag}")
+    timeout *= float(os.environ.get("TEXCC_TIMEOUT_SCALE", "1"))
     try:
         status = subprocess.run(command, timeout=timeout).returncode
     except subprocess.TimeoutExpired:
