@@ -7,10 +7,27 @@ reported), never a signal (a crash) or a hang. The command's stdout and stderr p
 --empty DIR: DIR must be missing or empty afterwards (no partial output, no temporaries).
 --timeout S (default 25) is multiplied by $TEXCC_TIMEOUT_SCALE when set: the sanitizer build
 runs the tools several times slower (reliability/lit.local.cfg sets it there).
+
+A failure is also written to the test script's own stderr (the parent shell's): in
+`%check-exit ... 2>&1 | FileCheck` this script's stderr is the pipe, and a FileCheck that
+passes would swallow the only word of what went wrong (lit would show "Exit Code: 1" alone).
 """
 import os
 import subprocess
 import sys
+
+
+def fail(message):
+    sys.stderr.write(message + "\n")
+    sys.stderr.flush()
+    try:
+        with open(f"/proc/{os.getppid()}/fd/2", "w") as shell_err:
+            mine, theirs = os.fstat(2), os.fstat(shell_err.fileno())
+            if (mine.st_dev, mine.st_ino) != (theirs.st_dev, theirs.st_ino):
+                shell_err.write(message + "\n")
+    except OSError:
+        pass
+    sys.exit(1)
 
 
 def main():
@@ -33,15 +50,15 @@ def main():
     try:
         status = subprocess.run(command, timeout=timeout).returncode
     except subprocess.TimeoutExpired:
-        sys.exit(f"check_exit.py: '{command[0]}' did not finish within {timeout:g} s (a hang)")
+        fail(f"check_exit.py: '{command[0]}' did not finish within {timeout:g} s (a hang)")
     if status < 0:
-        sys.exit(f"check_exit.py: '{command[0]}' was killed by signal {-status} (a crash)")
+        fail(f"check_exit.py: '{command[0]}' was killed by signal {-status} (a crash)")
     if status != expected:
-        sys.exit(f"check_exit.py: '{command[0]}' exited with {status}, expected {expected}")
+        fail(f"check_exit.py: '{command[0]}' exited with {status}, expected {expected}")
     for d in empty_dirs:
         left = sorted(os.listdir(d)) if os.path.isdir(d) else []
         if left:
-            sys.exit(f"check_exit.py: {d} is not empty: {', '.join(left)}")
+            fail(f"check_exit.py: {d} is not empty: {', '.join(left)}")
 
 
 if __name__ == "__main__":
