@@ -5,6 +5,7 @@
 #include "texcc_abi.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -47,7 +48,46 @@ std::string readKernelSource(const std::string &Path) {
 
 namespace {
 
+bool isIdentChar(char C) { return std::isalnum(static_cast<unsigned char>(C)) || C == '_'; }
+
+/// The word that ends just before Pos (after skipping blanks), and where it starts.
+std::string wordBefore(const std::string &S, size_t &Pos) {
+  while (Pos > 0 && std::isspace(static_cast<unsigned char>(S[Pos - 1])))
+    --Pos;
+  size_t End = Pos;
+  while (Pos > 0 && isIdentChar(S[Pos - 1]))
+    --Pos;
+  return S.substr(Pos, End - Pos);
+}
+
+bool declaresKernel(const std::string &Source, const std::string &Name) {
+  for (size_t At = Source.find(Name); At != std::string::npos; At = Source.find(Name, At + 1)) {
+    size_t After = At + Name.size();
+    if ((At > 0 && isIdentChar(Source[At - 1])) || (After < Source.size() && isIdentChar(Source[After])))
+      continue;
+    while (After < Source.size() && std::isspace(static_cast<unsigned char>(Source[After])))
+      ++After;
+    if (After == Source.size() || Source[After] != '(')
+      continue;
+    size_t Pos = At;
+    if (wordBefore(Source, Pos) != "void")
+      continue;
+    const std::string Qualifier = wordBefore(Source, Pos);
+    if (Qualifier == "kernel" || Qualifier == "__kernel")
+      return true;
+  }
+  return false;
+}
+
 } // namespace
+
+void requireKernelsDeclared(const std::string &File, const std::string &Source,
+                            const std::vector<std::string> &Kernels) {
+  for (const std::string &Name : Kernels)
+    if (!declaresKernel(Source, Name))
+      throw Error(File + ": no kernel '" + Name +
+                  "' in the texture program (layout.json names it; the source declares none)");
+}
 
 void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
                    const std::string &File) {

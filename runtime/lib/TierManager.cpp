@@ -26,9 +26,23 @@ TierManager::TierManager(ClContext &Cl, const Layout &Lay, TierPolicy Policy,
       ProgramOptions(std::move(ProgramOptions)), Epoch(Epoch),
       AdoptLayout(std::move(AdoptLayout)) {}
 
+namespace {
+
+void warnShapeBuildFailed(const std::string &Error) {
+  std::fprintf(stderr, "texrender: warning: the shape kernel failed to build; frames keep "
+                       "the interp tier: %s\n", Error.substr(0, Error.find('\n')).c_str());
+}
+
+} // namespace
+
 TierManager::~TierManager() {
-  if (Pending)
+  if (Pending) {
+    // A build that failed after the last frame began was never adopted: say so now.
     Pending->wait();
+    const TierBuildResult R = Pending->take();
+    if (!R.Error.empty())
+      warnShapeBuildFailed(R.Error);
+  }
   for (auto &R : Retired)
     R->wait();
 }
@@ -115,6 +129,10 @@ void TierManager::build(bool HasWork) {
   if (!Lay.Caps.InterpFallback) {
     InterpModeSlots = Lay.StackSlots;
     const std::string Source = readKernelSource(Lay.KernelSource);
+    std::vector<std::string> Names = textureKernelNames();
+    if (tierUsesUniforms(false))
+      Names.push_back(Lay.Uniforms);
+    requireKernelsDeclared(Lay.KernelSource, Source, Names);
     const std::string Headroom = Lay.Caps.StackHeadroom && InterpStackHeadroom
                                      ? stackHeadroomOption(Lay, Source, InterpModeSlots)
                                      : "";
@@ -127,6 +145,11 @@ void TierManager::build(bool HasWork) {
 void TierManager::buildShapeTiers(const char *Reason) {
   const std::string ShapeText = readKernelSource(Lay.KernelSource);
   const std::string FallbackText = readKernelSource(Lay.InterpFallback);
+  std::vector<std::string> ShapeNames = textureKernelNames();
+  requireKernelsDeclared(Lay.InterpFallback, FallbackText, ShapeNames);
+  if (tierUsesUniforms(false))
+    ShapeNames.push_back(Lay.Uniforms);
+  requireKernelsDeclared(Lay.KernelSource, ShapeText, ShapeNames);
   const std::string FallbackHeadroom = stackHeadroomOption(Lay, FallbackText, FallbackSlots);
   const TierBuildPlan Plan =
       planTierBuilds(Policy, Cl.isCached(ShapeText, ProgramOptions),
@@ -227,8 +250,7 @@ void TierManager::adoptReadyBuild() {
   if (!R.Error.empty()) {
     // The interp tier renders correctly; the faster kernel is lost, and the reason reported.
     E.Error = R.Error;
-    std::fprintf(stderr, "texrender: warning: the shape kernel failed to build; frames keep "
-                         "the interp tier: %s\n", R.Error.substr(0, R.Error.find('\n')).c_str());
+    warnShapeBuildFailed(R.Error);
     PendingReencode = nullptr;
     return;
   }

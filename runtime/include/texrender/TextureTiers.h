@@ -88,6 +88,13 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
 void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
                    const std::string &File);
 
+/// Checks, before any build, that Source (the text of File) declares each of Kernels as
+/// `kernel void NAME(` (with or without the `__`): a layout.json naming a kernel the program
+/// lacks is an Error "File: no kernel 'NAME' in the texture program" at once, whichever tier
+/// would build first (a tier built in the background would otherwise only fail there).
+void requireKernelsDeclared(const std::string &File, const std::string &Source,
+                            const std::vector<std::string> &Kernels);
+
 /// A job on its own std::thread. The thread owns every OpenCL object it creates; only the
 /// programs cross over (kernels are created from them on the main thread, so no cl_kernel is
 /// ever shared for clSetKernelArg).
