@@ -136,7 +136,8 @@ def accuracy_peer(data):
                             label=label, markersize=3)
             ax.set_xscale("log")
             ax.set_yscale("log")
-            ax.set_xlabel("samples per pixel" if x == "spp" else "frame time (s)")
+            ax.set_xlabel("samples per pixel" if x == "spp"
+                          else data.get("timeAxis", "frame time (s)"))
             ax.set_ylabel(metric.upper() if metric == "rmse" else "HDR-FLIP")
             ax.set_title("%s: %s by %s" % (name, metric.upper(), "spp" if x == "spp" else "time"),
                          fontsize=8)
