@@ -1,0 +1,197 @@
+// texrender --watch: the progressive image (WatchSession.h): the pass-time model that sizes the
+// reduced first pass, the passes rendered and cut, and the images written (docs/live.md).
+#include "WatchSession.h"
+
+#include "texrender/Image.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace texrender {
+
+void PassTimes::record(double Pixels, double Seconds) {
+  auto It = std::find_if(Sizes.begin(), Sizes.end(), [&](const Size &S) { return S.Pixels == Pixels; });
+  if (It != Sizes.end()) {
+    It->Seconds = 0.5 * It->Seconds + 0.5 * Seconds;
+    It->Seq = ++Seq;
+    return;
+  }
+  Sizes.push_back({Pixels, Seconds, ++Seq});
+  if (Sizes.size() > 4)
+    Sizes.erase(std::min_element(Sizes.begin(), Sizes.end(),
+                                 [](const Size &A, const Size &B) { return A.Seq < B.Seq; }));
+}
+
+double PassTimes::predict(double Pixels) const {
+  if (Sizes.empty())
+    return -1;
+  const double N = double(Sizes.size());
+  double SP = 0, ST = 0, SPP = 0, SPT = 0, MaxT = 0;
+  for (const Size &S : Sizes) {
+    SP += S.Pixels, ST += S.Seconds, SPP += S.Pixels * S.Pixels, SPT += S.Pixels * S.Seconds;
+    MaxT = std::max(MaxT, S.Seconds);
+  }
+  // Least squares: Seconds = Fixed + PerPixel * Pixels.
+  double Var = SPP - SP * SP / N;
+  double PerPixel = Var > 0 ? (SPT - SP * ST / N) / Var : 0, Fixed = (ST - PerPixel * SP) / N;
+  if (Var <= 0 || Fixed < 0) // one size, or noise: through the origin
+    Fixed = 0, PerPixel = SPT / SPP;
+  if (PerPixel <= 0) // smaller passes took longer (noise): no size is predicted to be faster
+    return MaxT;
+  return Fixed + PerPixel * Pixels;
+}
+
+int PassTimes::factor(int Width, int Height, double Budget) const {
+  if (Sizes.empty())
+    return 2;
+  int F = 2;
+  for (; F < 16 && ((Width + F - 1) / F > 1 || (Height + F - 1) / F > 1); F *= 2) {
+    double Pixels = double((Width + F - 1) / F) * double((Height + F - 1) / F);
+    if (predict(Pixels) <= Budget)
+      return F;
+  }
+  return F;
+}
+
+namespace watch {
+
+void Session::reducedPass() {
+  RenderSettings &S = R->settings();
+  if (S.RegionWidth != 0 || O.Width < 2 || O.Height < 2)
+    return;
+  const RenderSettings Saved = S;
+  const int F = Times.factor(O.Width, O.Height, O.FirstPassBudget);
+  const int W = (O.Width + F - 1) / F, H = (O.Height + F - 1) / F;
+  S.Width = W, S.Height = H, S.Spp = 1;
+  FrameStats Stats;
+  PassStart = nowSeconds();
+  std::vector<float> Small;
+  try {
+    Small = R->render(Stats);
+  } catch (...) {
+    S = Saved;
+    throw;
+  }
+  S = Saved;
+  PassEnd = nowSeconds();
+  Times.record(double(W) * H, PassEnd - PassStart);
+  if (stopping())
+    return;
+  if (O.Control) // the front end scales it up
+    return writeProgress(Small, 1, F, W, H);
+  // Each pixel of the reduced image covers FxF pixels of the image written.
+  std::vector<float> Image(size_t(O.Width) * O.Height * 3);
+  for (int Y = 0; Y < O.Height; ++Y)
+    for (int X = 0; X < O.Width; ++X)
+      for (int C = 0; C < 3; ++C)
+        Image[(size_t(Y) * O.Width + X) * 3 + C] = Small[(size_t(Y / F) * W + X / F) * 3 + C];
+  writeProgress(Image, 1, F);
+}
+
+/// Writes the image (atomically: writeImage renames a finished file into place) and, for the
+/// first image after a change, reports the change-to-refined-frame latency.
+void Session::writeProgress(const std::vector<float> &Image, int Spp, int Factor, int Width,
+                            int Height) {
+  const bool Reduced = Factor > 1;
+  if (!Reduced && Accumulation == WrittenAccumulation && Spp == WrittenSpp)
+    return;
+  if (Width == 0)
+    Width = O.Width, Height = O.Height;
+  double WriteStart = nowSeconds();
+  writePreviewImage(O.Output, Width, Height, Image);
+  LastWrite = nowSeconds();
+  WrittenAccumulation = Accumulation;
+  WrittenSpp = Spp;
+  std::string Tier = R->activeTier().empty() ? std::string("-") : R->activeTier();
+  if (ChangeAt > 0) {
+    say("first refined frame " + ms(LastWrite - ChangeAt) + " after the change (tier " + Tier + ")");
+    ChangeAt = 0;
+  }
+  ordered_json E{{"event", "frame"},     {"path", fs::absolute(O.Output).string()},
+                 {"width", Width},       {"height", Height},
+                 {"spp", Spp},           {"tier", Tier},
+                 {"builds", buildsSoFar()}, {"edit", nullptr},
+                 {"latency_ms", nullptr}};
+  if (LastEdit)
+    E["edit"] = *LastEdit;
+  if (Reduced) {
+    E["reduced"] = true;
+    E["factor"] = Factor;
+  }
+  if (EditAt > 0) {
+    E["latency_ms"] = eventMs(LastWrite - EditAt);
+    E["split"] = ordered_json{{"wait_ms", eventMs(HandledAt - EditAt)},
+                              {"apply_ms", eventMs(AppliedAt - HandledAt)},
+                              {"to_pass_ms", eventMs(PassStart - AppliedAt)},
+                              {"pass_ms", eventMs(PassEnd - PassStart)},
+                              {"write_ms", eventMs(LastWrite - WriteStart)}};
+    say("edit " + std::to_string(LastEdit ? *LastEdit : -1) + ": first frame " +
+        ms(LastWrite - EditAt) + " after its line was read: waited " + ms(HandledAt - EditAt) +
+        " for the pass in flight, applied in " + ms(AppliedAt - HandledAt) + ", " +
+        (Reduced ? "reduced pass (1/" + std::to_string(Factor) + ") " : std::string("pass ")) +
+        ms(PassEnd - PassStart) + ", image written in " +
+        ms(LastWrite - WriteStart));
+    EditAt = 0;
+  }
+  event(E);
+}
+
+bool Session::cutPass() {
+  if (!Cuttable)
+    return false;
+  if (nowSeconds() - LastPoll >= 0.1)
+    poll();
+  return !stopping() && work();
+}
+
+bool Session::afterPass(const PassProgress &P) {
+  double Now = nowSeconds();
+  PassEnd = Now;
+  Times.record(double(O.Width) * O.Height, Now - PassResume);
+  // The first image after a change is written at once; the others at most 4 times a second.
+  if (Now - LastWrite >= 0.25 || ChangeAt > 0 || EditAt > 0)
+    writeProgress(P.Image(), P.SamplesDone);
+  if (Now - LastPoll >= 0.1)
+    poll();
+  PassResume = nowSeconds();
+  return !stopping() && !work();
+}
+
+void Session::renderFrame() {
+  FrameStats F;
+  ++Accumulation;
+  if (TierSwitch) {
+    TierSwitch = false;
+    say("the background build is done: accumulation restarts with its kernel");
+  }
+  PassStart = PassResume = nowSeconds();
+  Cuttable = true;
+  std::vector<float> Image;
+  try {
+    Image = R->render(F);
+  } catch (...) {
+    Cuttable = false;
+    throw;
+  }
+  Cuttable = false;
+  if ((!F.Interrupted || stopping()) && F.SamplesDone > 0)
+    writeProgress(Image, F.SamplesDone);
+  if (F.PassCut)
+    say("pass " + std::to_string(F.SamplesDone + 1) + " cut short after " +
+        ms(nowSeconds() - PassResume) + " for a change (" + std::to_string(++PassesCut) +
+        " so far)");
+  if (F.Interrupted)
+    return;
+  Dirty = false;
+  ++Frames;
+  say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
+      ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
+      "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
+  while (!stopping() && !work())
+    idle();
+}
+
+} // namespace watch
+} // namespace texrender

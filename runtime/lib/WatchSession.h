@@ -1,0 +1,250 @@
+// texrender --watch's session (runtime/lib only): the Session class, shared by Watch.cpp (the
+// session: files, commands, texcc in the background) and WatchFrames.cpp (rendering and writing
+// the progressive image); WatchInputs.cpp reads what the session watches. Watch.h is the API.
+#ifndef TEXRENDER_LIB_WATCHSESSION_H
+#define TEXRENDER_LIB_WATCHSESSION_H
+
+#include "texrender/Image.h"
+#include "texrender/Watch.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <signal.h>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace texrender {
+namespace watch {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+inline double nowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+inline void say(const std::string &Line) {
+  std::fprintf(stderr, "texrender: watch: %s\n", Line.c_str());
+  std::fflush(stderr);
+}
+
+inline std::string ms(double Seconds) { return std::to_string(int(Seconds * 1000 + 0.5)) + " ms"; }
+
+/// Milliseconds rounded to 0.01, for the control channel's events.
+inline double eventMs(double Seconds) { return std::round(Seconds * 1e5) / 100; }
+
+/// After a reduced first pass, full-resolution rendering starts once no change has come for
+/// this long (docs/live.md).
+constexpr double ReducedPause = 0.25;
+
+/// A line of standard input, as the control channel's thread read it.
+struct Command {
+  std::string Text;
+  double ReadAt = 0; // when its newline arrived (the edit's latency counts from there)
+  unsigned LineNo = 0;
+};
+
+/// --control's standard input. A thread reads the lines (bounded, as --interactive does) into a
+/// queue, so that a command is timed when it arrives rather than when the render loop gets to
+/// it, and the idle loop wakes at once. The thread is detached: it may stay blocked in a read
+/// when the session ends; it owns the queue with the session.
+class ControlInput {
+public:
+  ControlInput() : Q(std::make_shared<Queue>()) {
+    std::thread([Q = Q] { read(*Q); }).detach();
+  }
+  /// A command or the end of the input is waiting.
+  bool pending() {
+    std::lock_guard<std::mutex> Lock(Q->M);
+    return !Q->Lines.empty() || Q->State != LineRead::Line;
+  }
+  /// Waits at most Ms milliseconds for pending().
+  void waitFor(int Ms) {
+    std::unique_lock<std::mutex> Lock(Q->M);
+    Q->Wake.wait_for(Lock, std::chrono::milliseconds(Ms),
+                     [this] { return !Q->Lines.empty() || Q->State != LineRead::Line; });
+  }
+  /// The commands read so far; End: how the input ended after them (Line: it did not), and
+  /// the number of the line that ended it.
+  std::deque<Command> take(LineRead &End, unsigned &EndLine) {
+    std::lock_guard<std::mutex> Lock(Q->M);
+    std::deque<Command> Out;
+    Out.swap(Q->Lines);
+    End = Q->State;
+    EndLine = Q->EndLine;
+    return Out;
+  }
+
+private:
+  struct Queue {
+    std::mutex M;
+    std::condition_variable Wake;
+    std::deque<Command> Lines;
+    LineRead State = LineRead::Line;
+    unsigned EndLine = 0;
+  };
+  static void read(Queue &Q) {
+    // SIGINT and SIGTERM go to the render loop's thread, never interrupt this read.
+    sigset_t Signals;
+    sigemptyset(&Signals);
+    sigaddset(&Signals, SIGINT);
+    sigaddset(&Signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &Signals, nullptr);
+    std::string Line;
+    for (unsigned N = 1;; ++N) {
+      LineRead Got = readBoundedLine(std::cin, Line, MaxEditLine);
+      std::lock_guard<std::mutex> Lock(Q.M);
+      if (Got == LineRead::Line) {
+        Q.Lines.push_back({Line, nowSeconds(), N});
+      } else {
+        Q.State = Got;
+        Q.EndLine = N;
+      }
+      Q.Wake.notify_all();
+      if (Got != LineRead::Line)
+        return;
+    }
+  }
+  std::shared_ptr<Queue> Q;
+};
+
+/// Applies E to the graph G (graph.json's model) as the live editor applies it to its own copy,
+/// so that a scene reload or a recompiled source file can apply the control channel's edits
+/// again (argumentEdits). E has been applied by the live editor, so its value parses.
+void applyToGraphJson(json &G, const Edit &E);
+
+/// texcc on the changed graph, on a thread of its own, while the current kernel renders.
+struct Regeneration {
+  std::thread Thread;
+  std::atomic<bool> Done{false};
+  std::optional<Layout> Result;
+  std::string Log;   // texcc's diagnostics when it failed
+  json Graph;
+  double Started = 0;
+  // Only source files changed (graph.json as before): the control channel's edits are applied
+  // again to the new kernel.
+  bool KeepEdits = false;
+};
+
+class Session {
+public:
+  Session(WatchOptions Opts, const Layout &Initial) : O(std::move(Opts)), Lay(Initial) {
+    O.Renderer.AfterPass = [this](const PassProgress &P) { return afterPass(P); };
+    O.Renderer.CutPass = [this] { return cutPass(); };
+    GraphPath = fs::absolute(Lay.GraphPath).string();
+    Graph = LayGraph = FileGraph = json::parse(readWholeFile(GraphPath, " graph"));
+    TempRoot = (fs::temp_directory_path() / ("texrender-watch-" + std::to_string(::getpid()))).string();
+    fs::create_directories(TempRoot);
+  }
+  ~Session() {
+    if (Job && Job->Thread.joinable())
+      Job->Thread.join();
+    std::error_code EC;
+    fs::remove_all(TempRoot, EC);
+  }
+  WatchResult run();
+
+private:
+  bool stopping() const { return O.Stop && O.Stop->load(); }
+  bool jobDone() const { return Job && Job->Done.load(); }
+  bool commandsPending() const { return Input && Input->pending(); }
+  /// Something to do besides rendering: a file change, texcc done, a command, a shape kernel
+  /// built in the background.
+  bool work() { return !Changed.empty() || jobDone() || commandsPending() || tierBuilt(); }
+  /// True once when the background build of a tier (shape mode, tier auto) has finished since
+  /// the last look: accumulation restarts so that the faster kernel takes over.
+  bool tierBuilt();
+  /// A change to apply: a saved file, texcc done, a command.
+  bool changePending() const { return !Changed.empty() || jobDone() || commandsPending(); }
+  /// Renders with all the samples (stopped early by work()), writing progress images.
+  void renderFrame();
+  /// The first image after a change: one sample per pixel at 1/F of the width and height
+  /// (PassTimes::factor; WatchOptions::ReducedFirstPass).
+  void reducedPass();
+  bool afterPass(const PassProgress &P);
+  /// RendererOptions::CutPass: a full-resolution pass in flight is abandoned when there is work
+  /// (an edit, a saved file): its accumulation restarts anyway.
+  bool cutPass();
+  /// Waits for work at most until the next poll of the files (and Until, if given).
+  void idle(double Until = 0);
+  void poll();
+  void watchFiles();
+  /// Image: Width x Height (0: the output's size); Factor: the reduction of a reduced pass's
+  /// image (1: full resolution).
+  void writeProgress(const std::vector<float> &Image, int Spp, int Factor = 1, int Width = 0,
+                     int Height = 0);
+  void applyChanges();
+  /// Changed: the graph's source files that changed (empty: only the graph did).
+  void applyGraph(const std::set<std::string> &Changed);
+  void applyEdits(const std::vector<std::string> &Lines, const json &New);
+  void startJob(const json &New, const std::string &What, bool KeepEdits);
+  void adoptJob();
+  /// Applies the edits that take LayGraph to Edited (the control channel's, kept over a new
+  /// kernel or scene) to the live editor and the renderer; one that no longer applies is
+  /// reported and dropped.
+  void applyKeptEdits(const json &Edited);
+  void reloadScene();
+  void handleCommands();
+  void handleCommand(const Command &C);
+  /// One JSON event a line on standard output (--control only).
+  void event(const ordered_json &E);
+  /// An error event (--control only); Id: the command's, if it was one.
+  void errorEvent(const std::string &Message, std::optional<long long> Id = std::nullopt);
+  unsigned buildsSoFar() const { return R->cl().foregroundBuilds() + R->cl().backgroundBuilds(); }
+
+  WatchOptions O;
+  Layout Lay;
+  std::unique_ptr<Renderer> R;
+  std::unique_ptr<LiveEditor> Editor;
+  std::unique_ptr<ControlInput> Input;
+  std::string GraphPath, TempRoot;
+  json Graph;     // the graph rendered now: LayGraph plus the live edits applied since
+  json LayGraph;  // the graph Lay was compiled from
+  json FileGraph; // graph.json as last read
+  FileWatcher Files;
+  std::set<std::string> Changed;
+  std::unique_ptr<Regeneration> Job;
+  bool JobAgain = false, Ended = false, Ok = true;
+  unsigned Generation = 0, Frames = 0;
+  // Noticed: when the change being applied was seen; ChangeAt: when the change whose first
+  // refined frame is awaited was seen (0: none; set once a change is applied, not on an error).
+  double Noticed = 0, ChangeAt = 0, LastWrite = 0, LastPoll = 0;
+  // The control channel: the last edit applied, and when the line of the one whose first
+  // refined frame is awaited was read (0: none).
+  std::optional<long long> LastEdit;
+  double EditAt = 0;
+  // Where an edit's latency goes (the frame event's "split"): its line read (EditAt), the
+  // render loop free to handle it, the edit applied, the pass that shows it started and done.
+  double HandledAt = 0, AppliedAt = 0, PassStart = 0, PassEnd = 0;
+  bool TierPending = false, TierSwitch = false;
+  // What is rendered changed since the last complete frame (an edit, a reload, a new kernel).
+  bool Dirty = true;
+  // Accumulations started (one per render()) and the last one written, with its samples: a
+  // frame is written once.
+  unsigned Accumulation = 0, WrittenAccumulation = 0;
+  int WrittenSpp = 0;
+  // Pass times by pixel count, for the reduced pass's factor; when the pass being timed began
+  // or the renderer was handed back by afterPass; a full-resolution pass may be cut.
+  PassTimes Times;
+  double PassResume = 0;
+  bool Cuttable = false;
+  unsigned PassesCut = 0;
+};
+
+} // namespace watch
+} // namespace texrender
+
+#endif
