@@ -57,6 +57,18 @@ int PassTimes::factor(int Width, int Height, double Budget) const {
 
 namespace watch {
 
+std::vector<float> Session::renderThen(FrameStats &Stats, const std::function<void()> &Restore) {
+  std::vector<float> Image;
+  try {
+    Image = R->render(Stats);
+  } catch (...) {
+    Restore();
+    throw;
+  }
+  Restore();
+  return Image;
+}
+
 void Session::reducedPass() {
   RenderSettings &S = R->settings();
   if (S.RegionWidth != 0 || O.Width < 2 || O.Height < 2)
@@ -67,14 +79,7 @@ void Session::reducedPass() {
   S.Width = W, S.Height = H, S.Spp = 1;
   FrameStats Stats;
   PassStart = nowSeconds();
-  std::vector<float> Small;
-  try {
-    Small = R->render(Stats);
-  } catch (...) {
-    S = Saved;
-    throw;
-  }
-  S = Saved;
+  std::vector<float> Small = renderThen(Stats, [&] { S = Saved; });
   PassEnd = nowSeconds();
   Times.record(double(W) * H, PassEnd - PassStart);
   if (stopping())
@@ -168,14 +173,7 @@ void Session::renderFrame() {
   }
   PassStart = PassResume = nowSeconds();
   Cuttable = true;
-  std::vector<float> Image;
-  try {
-    Image = R->render(F);
-  } catch (...) {
-    Cuttable = false;
-    throw;
-  }
-  Cuttable = false;
+  std::vector<float> Image = renderThen(F, [this] { Cuttable = false; });
   if ((!F.Interrupted || stopping()) && F.SamplesDone > 0)
     writeProgress(Image, F.SamplesDone);
   if (F.PassCut)

@@ -13,6 +13,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <deque>
+#include <functional>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -171,6 +172,9 @@ private:
   bool changePending() const { return !Changed.empty() || jobDone() || commandsPending(); }
   /// Renders with all the samples (stopped early by work()), writing progress images.
   void renderFrame();
+  /// R->render(Stats), then Restore() (the settings or state the pass changed), whether the
+  /// render returned or threw.
+  std::vector<float> renderThen(FrameStats &Stats, const std::function<void()> &Restore);
   /// The first image after a change: one sample per pixel at 1/F of the width and height
   /// (PassTimes::factor; WatchOptions::ReducedFirstPass).
   void reducedPass();
