@@ -24,6 +24,84 @@ const Value *Value::get(const std::string &Key) const {
   return M ? M->Val.get() : nullptr;
 }
 
+namespace {
+
+/// Calls Visit(index, line, col, spelling) for each number of a packed array's text, which
+/// starts at Line:Col (just after its '['). A packed array's text holds only numbers, commas
+/// and blanks: the reader checked it.
+template <typename F>
+void scanPacked(const std::string &Text, unsigned Line, unsigned Col, F Visit) {
+  size_t Index = 0;
+  for (size_t I = 0; I < Text.size();) {
+    const char C = Text[I];
+    if (C == '\n') {
+      ++Line;
+      Col = 1;
+      ++I;
+      continue;
+    }
+    if (C == ' ' || C == '\t' || C == '\r' || C == ',') {
+      ++Col;
+      ++I;
+      continue;
+    }
+    size_t End = I;
+    while (End < Text.size() && Text[End] != '\0' && std::strchr("+-.0123456789eE", Text[End]))
+      ++End;
+    if (!Visit(Index++, Line, Col, Text.substr(I, End - I)))
+      return;
+    Col += static_cast<unsigned>(End - I);
+    I = End;
+  }
+}
+
+} // namespace
+
+const std::vector<Value> &Value::elements() const {
+  if (!IsPacked)
+    return Elements;
+  if (Unpacked.size() != Numbers.size()) {
+    Unpacked.clear();
+    Unpacked.reserve(Numbers.size());
+    scanPacked(Packed, Loc.Line, Loc.Col + 1,
+               [&](size_t I, unsigned Line, unsigned Col, std::string Spelling) {
+                 Value E;
+                 E.K = Kind::Number;
+                 E.Number = Numbers[I];
+                 E.IsInteger = Integers[I];
+                 E.Text = std::move(Spelling);
+                 E.Loc = {Loc.File, Line, Col};
+                 Unpacked.push_back(std::move(E));
+                 return true;
+               });
+  }
+  return Unpacked;
+}
+
+SourceLoc Value::elementLoc(size_t Index) const {
+  SourceLoc Found = Loc;
+  scanPacked(Packed, Loc.Line, Loc.Col + 1,
+             [&](size_t I, unsigned Line, unsigned Col, const std::string &) {
+               if (I != Index)
+                 return true;
+               Found = {Loc.File, Line, Col};
+               return false;
+             });
+  return Found;
+}
+
+std::string Value::elementText(size_t Index) const {
+  std::string Found;
+  scanPacked(Packed, Loc.Line, Loc.Col + 1,
+             [&](size_t I, unsigned, unsigned, std::string Spelling) {
+               if (I != Index)
+                 return true;
+               Found = std::move(Spelling);
+               return false;
+             });
+  return Found;
+}
+
 std::string describeKind(const Value &V) {
   switch (V.K) {
   case Value::Kind::Null:
@@ -355,14 +433,18 @@ private:
     return true;
   }
 
+  /// Numbers are kept packed (Value::IsPacked) for as long as the array holds nothing else; the
+  /// first element that is not a number turns the numbers before it into Elements.
   bool parseArray(Value &V, unsigned Depth) {
     V.K = Value::Kind::Array;
+    const size_t Open = Pos;
     advance();
     skipSpace();
     if (peek() == ']') {
       advance();
       return true;
     }
+    bool Packing = true;
     while (true) {
       skipSpace();
       if (Failed)
@@ -371,9 +453,21 @@ private:
         return fail(here(), "expected a value or ']', got end of file");
       if (peek() == ']')
         return fail(here(), "trailing comma before ']'");
-      V.Elements.emplace_back();
-      if (!parseValue(V.Elements.back(), Depth + 1))
-        return false;
+      const char C = peek();
+      if (Packing && (C == '-' || (C >= '0' && C <= '9'))) {
+        Number.Text.clear();
+        if (!parseNumber(Number))
+          return false;
+        V.Numbers.push_back(Number.Number);
+        V.Integers.push_back(Number.IsInteger);
+      } else {
+        if (Packing && !V.Numbers.empty())
+          unpack(V, Open);
+        Packing = false;
+        V.Elements.emplace_back();
+        if (!parseValue(V.Elements.back(), Depth + 1))
+          return false;
+      }
       skipSpace();
       if (Failed)
         return false;
@@ -382,11 +476,33 @@ private:
         continue;
       }
       if (peek() == ']') {
+        if (Packing) {
+          V.Packed = Text.substr(Open + 1, Pos - Open - 1);
+          V.IsPacked = true;
+        }
         advance();
         return true;
       }
       return fail(here(), "expected ',' or ']' in array, got " + describeHere());
     }
+  }
+
+  /// The numbers read so far into V, an array that started at Text[Open], become Elements.
+  void unpack(Value &V, size_t Open) {
+    V.Elements.reserve(V.Numbers.size());
+    scanPacked(Text.substr(Open + 1, Pos - Open - 1), V.Loc.Line, V.Loc.Col + 1,
+               [&](size_t I, unsigned Line, unsigned Col, std::string Spelling) {
+                 Value E;
+                 E.K = Value::Kind::Number;
+                 E.Number = V.Numbers[I];
+                 E.IsInteger = V.Integers[I];
+                 E.Text = std::move(Spelling);
+                 E.Loc = {File, Line, Col};
+                 V.Elements.push_back(std::move(E));
+                 return true;
+               });
+    V.Numbers = {};
+    V.Integers = {};
   }
 
   bool parseObject(Value &V, unsigned Depth) {
@@ -445,6 +561,7 @@ private:
   const std::string &File;
   const std::string &Text;
   DiagnosticSink &Diags;
+  Value Number; // each number of a packed array is read into it
   size_t Pos = 0;
   unsigned Line = 1;
   unsigned Col = 1;

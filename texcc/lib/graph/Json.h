@@ -31,9 +31,27 @@ struct Value {
   double Number = 0;
   bool IsInteger = false;   // written without fraction or exponent
   std::string Text;         // String: the decoded text; Number: as written
-  std::vector<Value> Elements;
+  std::vector<Value> Elements; // an array's elements, unless IsPacked
   std::vector<Member> Members;
   SourceLoc Loc;
+
+  /// An array of numbers only is read packed, with Elements left empty: each number's value
+  /// (Numbers), whether it was written as an integer (Integers), and the array's text between
+  /// its brackets (Packed), from which elementLoc and elementText recover one element's
+  /// line:col and spelling for a diagnostic. About 15 bytes per number, where an element Value
+  /// takes over 150 (a 5-million-number array: docs/reliability.md "Limits").
+  bool IsPacked = false;
+  std::vector<double> Numbers;
+  std::vector<bool> Integers;
+  std::string Packed;
+
+  /// An array's length, packed or not.
+  size_t size() const { return IsPacked ? Numbers.size() : Elements.size(); }
+  /// An array's elements in either form (a packed array's are made on first use and kept).
+  const std::vector<Value> &elements() const;
+  /// Element I of a packed array: where it is written, and as written.
+  SourceLoc elementLoc(size_t I) const;
+  std::string elementText(size_t I) const;
 
   /// The member with this key, or null.
   const Value *get(const std::string &Key) const;
@@ -42,6 +60,9 @@ struct Value {
   bool isString() const { return K == Kind::String; }
   bool isArray() const { return K == Kind::Array; }
   bool isObject() const { return K == Kind::Object; }
+
+private:
+  mutable std::vector<Value> Unpacked;
 };
 
 /// "a number", "a string", "an array", "an object", "true", "null".

@@ -151,6 +151,18 @@ public:
   }
 
   bool numbersOf(const Value &Arr, std::vector<double> &Out, const std::string &JsonPath) {
+    Out.reserve(Out.size() + Arr.size());
+    if (Arr.IsPacked) {
+      for (size_t I = 0; I < Arr.Numbers.size(); ++I) {
+        if (!texcc::fitsInFloat(Arr.Numbers[I])) {
+          error(Arr.elementLoc(I), JsonPath + "/" + std::to_string(I),
+                "number '" + Arr.elementText(I) + "' does not fit in a 32-bit float");
+          return false;
+        }
+        Out.push_back(Arr.Numbers[I]);
+      }
+      return true;
+    }
     for (size_t I = 0; I < Arr.Elements.size(); ++I) {
       const Value &E = Arr.Elements[I];
       if (!checkFloat(E, JsonPath + "/" + std::to_string(I)))
@@ -161,17 +173,18 @@ public:
   }
 
   bool parseArgArray(const Value &V, ArgValue &A, const std::string &JsonPath) {
-    bool AllNumbers = true, AllArrays = true, AllInts = true;
+    bool AllNumbers = true, AllArrays = !V.IsPacked, AllInts = true;
     for (const Value &E : V.Elements) {
       AllNumbers &= E.isNumber();
       AllArrays &= E.isArray();
       if (E.isNumber())
         AllInts &= E.IsInteger;
     }
+    for (bool Integer : V.Integers)
+      AllInts &= Integer;
     if (AllNumbers) {
-      A.K = V.Elements.size() >= 2 && V.Elements.size() <= 4 ? ArgValue::Kind::Vector
-                                                              : ArgValue::Kind::Array;
-      A.IsInteger = AllInts && !V.Elements.empty();
+      A.K = V.size() >= 2 && V.size() <= 4 ? ArgValue::Kind::Vector : ArgValue::Kind::Array;
+      A.IsInteger = AllInts && V.size() != 0;
       return numbersOf(V, A.Numbers, JsonPath);
     }
     if (!AllArrays) {
@@ -187,6 +200,8 @@ public:
       const Value &Row = V.Elements[I];
       std::string RowPath = JsonPath + "/" + std::to_string(I);
       std::vector<double> Numbers;
+      for (bool Integer : Row.Integers)
+        A.IsInteger &= Integer;
       for (size_t J = 0; J < Row.Elements.size(); ++J) {
         const Value &E = Row.Elements[J];
         if (!E.isNumber()) {
@@ -409,8 +424,8 @@ private:
   bool parseStrings(const Value &V, const std::string &JsonPath, std::vector<std::string> &Out) {
     if (!expectKind(V, Value::Kind::Array, JsonPath, "'sources'", "an array of strings"))
       return false;
-    for (size_t I = 0; I < V.Elements.size(); ++I) {
-      const Value &E = V.Elements[I];
+    for (size_t I = 0; I < V.elements().size(); ++I) {
+      const Value &E = V.elements()[I];
       if (!expectKind(E, Value::Kind::String, JsonPath + "/" + std::to_string(I),
                       "a source", "a string"))
         return false;
@@ -440,10 +455,10 @@ private:
       return false;
     bool Ok = true;
     std::unordered_map<std::string, size_t> IndexOf;
-    for (size_t I = 0; I < V.Elements.size(); ++I) {
+    for (size_t I = 0; I < V.elements().size(); ++I) {
       Node N;
       std::string P = "/nodes/" + std::to_string(I);
-      if (!parseNode(V.Elements[I], P, N)) {
+      if (!parseNode(V.elements()[I], P, N)) {
         Ok = false;
         continue;
       }

@@ -16,7 +16,7 @@ bool readStringList(const json::Value *V, std::vector<std::string> &Out,
     Diags.error(V->Loc, "expected an array of strings, got " + json::describeKind(*V));
     return false;
   }
-  for (const json::Value &E : V->Elements) {
+  for (const json::Value &E : V->elements()) {
     if (!E.isString()) {
       Diags.error(E.Loc, "expected a string, got " + json::describeKind(E));
       return false;
@@ -78,7 +78,7 @@ bool readSignature(const json::Value &F, FunctionSignature &S, DiagnosticSink &D
       Diags.error(Params->Loc, "'params' must be an array");
       return false;
     }
-    for (const json::Value &P : Params->Elements) {
+    for (const json::Value &P : Params->elements()) {
       if (!P.isObject()) {
         Diags.error(P.Loc, "a parameter must be an object {name, type}");
         return false;
@@ -119,7 +119,7 @@ bool readSignaturesJson(const std::string &Path, const std::string &Text, Signat
     return false;
   }
   bool Ok = true;
-  for (const json::Value &F : Root->Elements) {
+  for (const json::Value &F : Root->elements()) {
     FunctionSignature S;
     if (!readSignature(F, S, Diags)) {
       Ok = false;
