@@ -76,6 +76,20 @@ CompiledGraph quickened(const std::string &Json, unsigned Max = 8,
   return CG;
 }
 
+/// E: a live editor of Json's graph started with the kernel's table Table, as texrender's live
+/// editor is (the graph library applies the table and never chooses). Fails the test when the
+/// graph does not parse or compile (call it in ASSERT_NO_FATAL_FAILURE).
+void startEditor(const std::string &Json, std::vector<QuickenedOp> Table,
+                 std::optional<GraphEditor> &E) {
+  DiagnosticSink D;
+  std::optional<Graph> G = parse(Json, D);
+  ASSERT_TRUE(G) << text(D);
+  CompileOptions Kernel;
+  Kernel.Quickened = std::move(Table);
+  E.emplace(*G, costSigs(), Kernel);
+  ASSERT_TRUE(E->init(D)) << text(D);
+}
+
 TEST(Quickened, MostFrequentPatternsFirstCapped) {
   // a and b are lite(attr AO, const), p pair(slot, slot), e lite(slot, const).
   const std::string Json = graphJson(
@@ -126,27 +140,23 @@ TEST(Quickened, IntConstantsArePartOfThePattern) {
                                                           {"slot", "int:3"}}));
   // A live edit of n (the fast path, a value patched in place) to a value no entry has runs
   // the plain case, with no new kernel; to a value an entry has, that entry's opcode.
+  std::optional<GraphEditor> E;
+  ASSERT_NO_FATAL_FAILURE(startEditor(Json, CG.Quickened, E));
   DiagnosticSink D;
-  std::optional<Graph> G = parse(Json, D);
-  ASSERT_TRUE(G) << text(D);
-  CompileOptions Kernel;
-  Kernel.Quickened = CG.Quickened;
-  GraphEditor E(*G, costSigs(), Kernel);
-  ASSERT_TRUE(E.init(D)) << text(D);
   auto QuickOf = [&](const std::string &Id) {
-    const CompiledGraph &C = E.compiled();
+    const CompiledGraph &C = E->compiled();
     for (const Instruction &In : C.Materials[0].Program)
       if (C.Nodes[In.Node].Id == Id)
         return In.Quick >= 0 ? spellSource(C.Quickened[In.Quick].Sources.back()) : std::string("plain");
     return std::string("absent");
   };
   EXPECT_EQ(QuickOf("q"), "int:5");
-  ASSERT_TRUE(E.setArgument("q", "n", "4", D)) << text(D);
+  ASSERT_TRUE(E->setArgument("q", "n", "4", D)) << text(D);
   EXPECT_EQ(QuickOf("q"), "plain");
-  EXPECT_FALSE(E.needsRebuild());
-  ASSERT_TRUE(E.setArgument("q", "n", "3", D)) << text(D);
+  EXPECT_FALSE(E->needsRebuild());
+  ASSERT_TRUE(E->setArgument("q", "n", "3", D)) << text(D);
   EXPECT_EQ(QuickOf("q"), "int:3");
-  EXPECT_FALSE(E.needsRebuild());
+  EXPECT_FALSE(E->needsRebuild());
 }
 
 TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
@@ -165,23 +175,19 @@ TEST(Quickened, BroadcastAndTheKernelsTableOnALiveEdit) {
   EXPECT_TRUE(SawBroadcast);
   // A live edit compiles with the kernel's table: an instruction whose pattern changed (p.b
   // rewired from b to a constant) runs its function's plain opcode; the others keep theirs.
+  std::optional<GraphEditor> E;
+  ASSERT_NO_FATAL_FAILURE(startEditor(Json, CG.Quickened, E));
   DiagnosticSink D;
-  std::optional<Graph> G = parse(Json, D);
-  ASSERT_TRUE(G) << text(D);
-  CompileOptions Kernel;
-  Kernel.Quickened = CG.Quickened;
-  GraphEditor E(*G, costSigs(), Kernel);
-  ASSERT_TRUE(E.init(D)) << text(D);
-  EXPECT_EQ(E.compiled().Quickened, CG.Quickened);
-  ASSERT_TRUE(E.setArgument("p", "b", "0.5", D)) << text(D);
-  const CompiledGraph &After = E.compiled();
+  EXPECT_EQ(E->compiled().Quickened, CG.Quickened);
+  ASSERT_TRUE(E->setArgument("p", "b", "0.5", D)) << text(D);
+  const CompiledGraph &After = E->compiled();
   for (const CompiledMaterial &M : After.Materials)
     for (const Instruction &In : M.Program)
       if (After.Nodes[In.Node].Id == "p")
         EXPECT_EQ(In.Quick, -1);
       else
         EXPECT_GE(In.Quick, 0) << After.Nodes[In.Node].Id;
-  EXPECT_FALSE(E.needsRebuild());
+  EXPECT_FALSE(E->needsRebuild());
 }
 
 TEST(Quickened, AnEditorKeepsTheTablesItStartedWith) {
@@ -191,19 +197,15 @@ TEST(Quickened, AnEditorKeepsTheTablesItStartedWith) {
       {lite("a", ""), lite("b", "", 2), unaryNode("h", "heavy", "a"),
        R"({"id": "p", "fn": "pair", "args": {"a": {"node": "h"}, "b": {"node": "b"}}})"},
       strengthOf("p"));
+  std::optional<GraphEditor> E;
+  ASSERT_NO_FATAL_FAILURE(startEditor(Json, quickened(Json, 1).Quickened, E));
   DiagnosticSink D;
-  std::optional<Graph> G = parse(Json, D);
-  ASSERT_TRUE(G) << text(D);
-  CompileOptions O;
-  O.Quickened = quickened(Json, 1).Quickened;
-  GraphEditor E(*G, costSigs(), O);
-  ASSERT_TRUE(E.init(D)) << text(D);
-  const std::vector<QuickenedOp> Quick = E.compiled().Quickened;
+  const std::vector<QuickenedOp> Quick = E->compiled().Quickened;
   ASSERT_EQ(Quick.size(), 1u);
-  ASSERT_TRUE(E.rewire("p", "a", "b", D)) << text(D);
-  ASSERT_TRUE(E.rewire("h", "x", "b", D)) << text(D);
-  EXPECT_EQ(E.compiled().Quickened, Quick);
-  EXPECT_FALSE(E.needsRebuild());
+  ASSERT_TRUE(E->rewire("p", "a", "b", D)) << text(D);
+  ASSERT_TRUE(E->rewire("h", "x", "b", D)) << text(D);
+  EXPECT_EQ(E->compiled().Quickened, Quick);
+  EXPECT_FALSE(E->needsRebuild());
 }
 
 TEST(Quickened, LayoutRoundTrip) {
