@@ -10,6 +10,14 @@ using OJson = nlohmann::ordered_json;
 
 namespace {
 
+/// A JSON array of Items, each written by ToJson.
+template <typename T, typename F> OJson arrayOf(const std::vector<T> &Items, F ToJson) {
+  OJson A = OJson::array();
+  for (const T &Item : Items)
+    A.push_back(ToJson(Item));
+  return A;
+}
+
 OJson bsdfJson(const Bsdf &B) {
   OJson J = {{"type", B.Type}};
   for (const auto &[Name, In] : B.Inputs) {
@@ -29,22 +37,18 @@ OJson kernelJson(const KernelEntries &K) {
   J["entry"] = K.Entry;
   if (!K.InterpFallback.empty())
     J["interpFallback"] = K.InterpFallback;
-  if (!K.Shapes.empty()) {
-    OJson Shapes = OJson::array();
-    for (const ShapeLayout &S : K.Shapes)
-      Shapes.push_back({{"id", S.Id}, {"materials", S.Materials}});
-    J["shapes"] = Shapes;
-  }
+  if (!K.Shapes.empty())
+    J["shapes"] = arrayOf(K.Shapes, [](const ShapeLayout &S) -> OJson {
+      return {{"id", S.Id}, {"materials", S.Materials}};
+    });
   if (!K.ShapeHash.empty())
     J["shapeHash"] = K.ShapeHash;
   if (!K.Uniforms.empty())
     J["uniforms"] = K.Uniforms;
-  if (!K.Launches.empty()) {
-    OJson Ls = OJson::array();
-    for (const LaunchLayout &L : K.Launches)
-      Ls.push_back({{"kernel", L.Kernel}, {"node", L.Node}});
-    J["launches"] = Ls;
-  }
+  if (!K.Launches.empty())
+    J["launches"] = arrayOf(K.Launches, [](const LaunchLayout &L) -> OJson {
+      return {{"kernel", L.Kernel}, {"node", L.Node}};
+    });
   return J;
 }
 
@@ -61,13 +65,10 @@ OJson capabilitiesJson(const Capabilities &C) {
 }
 
 OJson functionJson(const FunctionLayout &F) {
-  OJson Params = OJson::array();
-  for (const ParamLayout &P : F.Params)
-    Params.push_back({{"name", P.Name},
-                      {"type", P.Type},
-                      {"size", P.Size},
-                      {"align", P.Align},
-                      {"offset", P.Offset}});
+  OJson Params = arrayOf(F.Params, [](const ParamLayout &P) -> OJson {
+    return {{"name", P.Name}, {"type", P.Type}, {"size", P.Size}, {"align", P.Align},
+            {"offset", P.Offset}};
+  });
   OJson J = {{"id", F.Id},
              {"name", F.Name},
              {"renamed", F.Renamed},
@@ -79,9 +80,9 @@ OJson functionJson(const FunctionLayout &F) {
              {"settings", F.Settings},
              {"cost", F.Cost}};
   if (F.HasHoisted) {
-    OJson Values = OJson::array();
-    for (const HoistedLayout &H : F.Hoisted)
-      Values.push_back({{"name", H.Name}, {"type", H.Type}, {"size", H.Size}, {"offset", H.Offset}});
+    OJson Values = arrayOf(F.Hoisted, [](const HoistedLayout &H) -> OJson {
+      return {{"name", H.Name}, {"type", H.Type}, {"size", H.Size}, {"offset", H.Offset}};
+    });
     J["hoisted"] = {{"values", Values}, {"from", F.HoistedFrom}};
   }
   return J;
@@ -148,59 +149,42 @@ std::string writeManifest(const Manifest &M) {
                   {"recordsOffset", M.RecordsOffset}};
   J["attributes"] = M.Attributes;
   J["settings"] = M.Settings;
-  OJson Images = OJson::array();
-  for (const ImageLayout &I : M.Images)
-    Images.push_back({{"name", I.Name}, {"path", I.Path}, {"index", I.Index}});
-  J["images"] = Images;
-  OJson Functions = OJson::array();
-  for (const FunctionLayout &F : M.Functions)
-    Functions.push_back(functionJson(F));
-  J["functions"] = Functions;
-  OJson Quick = OJson::array();
-  for (const QuickenedLayout &Q : M.Quickened) {
+  J["images"] = arrayOf(M.Images, [](const ImageLayout &I) -> OJson {
+    return {{"name", I.Name}, {"path", I.Path}, {"index", I.Index}};
+  });
+  J["functions"] = arrayOf(M.Functions, functionJson);
+  J["quickened"] = arrayOf(M.Quickened, [](const QuickenedLayout &Q) -> OJson {
     if (Q.Legacy)
-      Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Function}, {"second", Q.Second}});
-    else
-      Quick.push_back({{"opcode", Q.Opcode}, {"function", Q.Function}, {"sources", Q.Sources}});
-  }
-  J["quickened"] = Quick;
-  if (!M.LegacySuperinstructions.empty()) {
-    OJson Supers = OJson::array();
-    for (unsigned Op : M.LegacySuperinstructions)
-      Supers.push_back({{"opcode", Op}});
-    J["superinstructions"] = Supers;
-  }
-  OJson Nodes = OJson::array();
-  for (const NodeLayout &N : M.Nodes) {
-    OJson Args = OJson::array();
-    for (const ArgLayout &A : N.Args)
-      Args.push_back(argJson(A));
-    Nodes.push_back({{"index", N.Index},
-                     {"id", N.Id},
-                     {"merged", N.Merged},
-                     {"fn", N.Fn},
-                     {"fnId", N.FnId},
-                     {"record", {{"offset", N.RecordOffset}, {"size", N.RecordSize}}},
-                     {"copies", N.Copies},
-                     {"args", Args}});
-  }
-  J["nodes"] = Nodes;
+      return {{"opcode", Q.Opcode}, {"function", Q.Function}, {"second", Q.Second}};
+    return {{"opcode", Q.Opcode}, {"function", Q.Function}, {"sources", Q.Sources}};
+  });
+  if (!M.LegacySuperinstructions.empty())
+    J["superinstructions"] = arrayOf(M.LegacySuperinstructions,
+                                     [](unsigned Op) -> OJson { return {{"opcode", Op}}; });
+  J["nodes"] = arrayOf(M.Nodes, [](const NodeLayout &N) -> OJson {
+    return {{"index", N.Index},
+            {"id", N.Id},
+            {"merged", N.Merged},
+            {"fn", N.Fn},
+            {"fnId", N.FnId},
+            {"record", {{"offset", N.RecordOffset}, {"size", N.RecordSize}}},
+            {"copies", N.Copies},
+            {"args", arrayOf(N.Args, argJson)}};
+  });
   J["wavefrontOrder"] = M.WavefrontOrder;
-  OJson Materials = OJson::array();
-  for (const MaterialLayout &Mat : M.Materials) {
-    OJson Outputs = OJson::array();
-    for (const OutputLayout &O : Mat.Outputs)
-      Outputs.push_back({{"node", O.Node}, {"slot", O.Slot}, {"type", O.Type}});
-    Materials.push_back({{"name", Mat.Name},
-                         {"index", Mat.Index},
-                         {"program",
-                          {{"wordOffset", Mat.ProgramWordOffset},
-                           {"instructions", Mat.ProgramInstructions},
-                           {"stackSlots", Mat.ProgramStackSlots}}},
-                         {"outputs", Outputs},
-                         {"bsdf", bsdfJson(Mat.Surface)}});
-  }
-  J["materials"] = Materials;
+  J["materials"] = arrayOf(M.Materials, [](const MaterialLayout &Mat) -> OJson {
+    OJson Outputs = arrayOf(Mat.Outputs, [](const OutputLayout &O) -> OJson {
+      return {{"node", O.Node}, {"slot", O.Slot}, {"type", O.Type}};
+    });
+    return {{"name", Mat.Name},
+            {"index", Mat.Index},
+            {"program",
+             {{"wordOffset", Mat.ProgramWordOffset},
+              {"instructions", Mat.ProgramInstructions},
+              {"stackSlots", Mat.ProgramStackSlots}}},
+            {"outputs", Outputs},
+            {"bsdf", bsdfJson(Mat.Surface)}};
+  });
   return J.dump(2) + "\n";
 }
 

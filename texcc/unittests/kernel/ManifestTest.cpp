@@ -160,6 +160,26 @@ TEST(Manifest, RoundTripEveryField) {
   EXPECT_TRUE(Back.HasCapabilities && Back.HasCompileOptions);
 }
 
+TEST(Manifest, LegacyQuickenedEntriesRoundTrip) {
+  // A layout of a texcc before 2026-12, read and written again (texcc-eval, the graph editor):
+  // its superinstructions and its quickened entries with "second" are kept.
+  Manifest M = everyField();
+  QuickenedLayout Q;
+  Q.Opcode = 9;
+  Q.Function = "lite";
+  Q.Legacy = true;
+  Q.Second = "pair";
+  M.Quickened.push_back(Q);
+  M.LegacySuperinstructions = {9, 12};
+  const std::string Text = writeManifest(M);
+  EXPECT_NE(Text.find(R"("second": "pair")"), std::string::npos) << Text;
+  EXPECT_NE(Text.find(R"("superinstructions": [)"), std::string::npos) << Text;
+  const Manifest Back = read(Text);
+  EXPECT_TRUE(Back.Quickened == M.Quickened) << Text;
+  EXPECT_EQ(Back.LegacySuperinstructions, M.LegacySuperinstructions);
+  EXPECT_EQ(writeManifest(Back), Text);
+}
+
 TEST(Manifest, SyntaxErrorHasLineAndColumn) {
   EXPECT_EQ(readError("{\n  \"texcc\": 1,\n  \"mode\": ]\n}").substr(0, 21), "dir/layout.json:3:11:");
 }
