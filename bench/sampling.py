@@ -85,28 +85,52 @@ def spread(imgs):
             "mean": float(imgs.mean()), "meanPairRmse": float(np.mean(pairs))}
 
 
-def texrender_split(tools, args, textures, scene, sampler):
+def children_cpu():
+    """User + system CPU seconds of this process's finished children (all their threads)."""
+    import resource
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def texrender_split(tools, args, textures, scene, samplers):
+    """Every sampler's parts, rendered seed by seed with the samplers in an order that rotates
+    with the seed (the shared machine's load drifts; CPU times are compared between samplers)."""
+    raw = {(s, part): {"imgs": [], "seconds": [], "cpu": [], "inner": [], "shadow": []}
+           for s in samplers for part in args.parts.split(",")}
+    kdirs = {key: split_kernels(tools.work, key[1], key[0]) for key in raw}
+    for seed in range(1, args.seeds + 1):
+        k = (seed - 1) % len(samplers)
+        for sampler in samplers[k:] + samplers[:k]:
+            for part in args.parts.split(","):
+                kdir = kdirs[sampler, part]
+                common.log("sampling: texrender %s %s seed %d" % (sampler, part, seed))
+                name = "split-%s-%d" % (os.path.basename(kdir), seed)
+                cache = os.path.join(tools.work, "cache-%s" % os.path.basename(kdir))
+                opts = ["--size", args.size, "--spp", str(args.spp), "--seed", str(seed),
+                        "--kernels", kdir, "--variance",
+                        os.path.join(tools.work, name + ".var.exr")]
+                if seed == 1:  # builds the kernels into the cache: not timed
+                    common.texrender(tools, scene, textures, name, opts, image="exr",
+                                     cache=cache)
+                c0 = children_cpu()
+                stats, path, _ = common.texrender(tools, scene, textures, name, opts,
+                                                  image="exr", cache=cache)
+                r = raw[sampler, part]
+                r["cpu"].append(children_cpu() - c0)
+                r["imgs"].append(read_exr(path))
+                r["inner"].append(float(read_exr(
+                    os.path.join(tools.work, name + ".var.exr")).mean()))
+                r["seconds"].append(stats["renderSeconds"])
+                r["shadow"].append(stats["rays"]["shadow"]["count"])
     out = {}
-    for part in args.parts.split(","):
-        kdir = split_kernels(tools.work, part, sampler)
-        imgs, seconds, inner, shadow = [], [], [], []
-        for seed in range(1, args.seeds + 1):
-            common.log("sampling: texrender %s %s seed %d" % (sampler, part, seed))
-            name = "split-%s-%d" % (os.path.basename(kdir), seed)
-            stats, path, _ = common.texrender(
-                tools, scene, textures, name,
-                ["--size", args.size, "--spp", str(args.spp), "--seed", str(seed),
-                 "--kernels", kdir, "--variance", os.path.join(tools.work, name + ".var.exr")],
-                image="exr", cache=os.path.join(tools.work, "cache-%s" % os.path.basename(kdir)))
-            imgs.append(read_exr(path))
-            inner.append(float(read_exr(os.path.join(tools.work, name + ".var.exr")).mean()))
-            seconds.append(stats["renderSeconds"])
-            shadow.append(stats["rays"]["shadow"]["count"])
-        out[part] = spread(imgs)
+    for (sampler, part), r in raw.items():
+        o = out.setdefault(sampler, {})[part] = spread(r["imgs"])
         # texrender --variance: the sample variance / spp of each pixel, mean over the seeds
-        out[part]["meanPixelVarianceWithinImage"] = sum(inner) / len(inner)
-        out[part]["renderSeconds"] = common.median(seconds)
-        out[part]["shadowRays"] = sum(shadow) / len(shadow)  # per image: the work, load-free
+        o["meanPixelVarianceWithinImage"] = sum(r["inner"]) / len(r["inner"])
+        o["renderSeconds"] = common.median(r["seconds"])
+        # CPU seconds of the whole texrender process (warm caches), median over the seeds
+        o["cpuSeconds"] = common.median(r["cpu"])
+        o["shadowRays"] = sum(r["shadow"]) / len(r["shadow"])  # per image: the work, load-free
     return out
 
 
@@ -208,13 +232,16 @@ def main():
     tools = common.Tools(args.build, args.work)
     graph, scene = SCENES[args.variant]
     result = {"size": args.size, "spp": args.spp, "seeds": args.seeds, "variant": args.variant,
-              "loadBefore": os.getloadavg()[0], "machine": common.machine()}
+              "loadBefore": os.getloadavg()[0], "machine": common.machine(),
+              "command": " ".join(sys.argv),
+              "date": time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime())}
     if not args.no_texrender:
         textures = os.path.join(tools.work, "tex-" + args.variant)
         common.texcc(tools, os.path.join(common.ROOT, graph), textures, "interp")
-        for sampler in args.samplers.split(","):
-            result["texrender-" + sampler] = texrender_split(
-                tools, args, textures, os.path.join(common.ROOT, scene), sampler)
+        split = texrender_split(tools, args, textures, os.path.join(common.ROOT, scene),
+                                args.samplers.split(","))
+        for sampler, parts in split.items():
+            result["texrender-" + sampler] = parts
     if not args.no_cycles:
         result["cycles"] = cycles_split(tools, args)
     result["loadAfter"] = os.getloadavg()[0]
@@ -225,8 +252,10 @@ def main():
         parts = result.get(r, {}).get("parts", result.get(r, {}))
         for k, v in parts.items():
             if isinstance(v, dict) and "meanPixelVariance" in v:
-                print("%-16s %-13s var %.3e  mean %.4f" % (r, k, v["meanPixelVariance"],
-                                                          v["mean"]))
+                print("%-16s %-13s var %.3e  mean %.4f%s" % (
+                    r, k, v["meanPixelVariance"], v["mean"],
+                    "  cpu %.2f s  shadow rays %d" % (v["cpuSeconds"], v["shadowRays"])
+                    if "cpuSeconds" in v else ""))
 
 
 if __name__ == "__main__":

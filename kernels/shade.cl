@@ -72,7 +72,8 @@ static inline int rt_pick_light(__global const float *cdf, int n, float u) {
  * shadow ray does (MIS combines both), while only next-event estimation finds the small sun:
  * on the diffuse atrium (64x64, 64 spp, 8 seeds) the image's variance is 4.07e-5 with the
  * fixed share of the power weights, 4.45e-5 with weight 1, 3.14e-5 with 0.25, 2.87e-5 with
- * 0.05. A sun wholly below the horizon gets no share (the sky every time). Bench-only
+ * 0.05; 0.02 and 0.01 take 2.5% off that at the same CPU time (12 seeds, bench/sampling.md).
+ * A sun wholly below the horizon gets no share (the sky every time). Bench-only
  * switches: RT_SUN_SHARE 0 the fixed share of before (the default with RT_SAMPLER_PCG),
  * 1 this rule, 2 Cycles' light-tree rule (the mean of the proportional share with the disc's
  * nearest and farthest points; 3.32e-5). The share is quantized to q / 65535 (q in 1..65534
@@ -87,7 +88,7 @@ static inline int rt_pick_light(__global const float *cdf, int n, float u) {
 #endif
 #endif
 #ifndef RT_SKY_WEIGHT
-#define RT_SKY_WEIGHT 0.05f
+#define RT_SKY_WEIGHT 0.02f
 #endif
 #define RT_SHARE_ONE 65535u
 
