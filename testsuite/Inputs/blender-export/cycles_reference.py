@@ -21,24 +21,9 @@ CASES = {"scene": ("cycles-means.json", []), "texture-only": ("cycles-texture-on
 
 def render(blend, exr, spp, transparent):
     import bpy
-    import numpy as np
+    from cycles_render import render_npy
     bpy.ops.wm.open_mainfile(filepath=blend)
-    scene = bpy.context.scene
-    scene.cycles.device = "CPU"
-    scene.cycles.samples = spp
-    scene.cycles.use_denoising = False
-    scene.cycles.use_adaptive_sampling = False
-    scene.cycles.pixel_filter_type = "BOX"
-    scene.cycles.filter_width = 1.0
-    scene.render.film_transparent = transparent
-    scene.render.image_settings.file_format = "OPEN_EXR"
-    scene.render.image_settings.color_depth = "32"
-    scene.render.filepath = exr
-    bpy.ops.render.render(write_still=True)
-    image = bpy.data.images.load(exr)
-    pixels = np.empty(len(image.pixels), np.float32)
-    image.pixels.foreach_get(pixels)
-    np.save(exr + ".npy", pixels.reshape(image.size[1], image.size[0], 4)[::-1])
+    render_npy(bpy.context.scene, spp, exr, exr + ".npy", transparent)
 
 
 def main():

@@ -14,14 +14,13 @@ single scattering loses, so at low roughness every ring is the colour (RINGS' to
 Fresnel with F0 = colour (texrender's glossy before) rises towards grazing angles: +20% and
 more in the outer ring.
 """
-import json
 import math
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "scripts"))
-sys.path.insert(0, os.path.join(HERE, "..", "runtime", "principled"))
+sys.path.insert(0, os.path.join(HERE, "..", "runtime"))
+from sphere_scene import furnace_scene, main, make_folder, read_image, write_json  # noqa: E402
 
 MATERIALS = {"grey_r0.1": ([0.5, 0.5, 0.5], 0.1), "orange_r0.15": ([0.9, 0.5, 0.2], 0.15)}
 # (cos wo from, to, tolerance): Cycles (256 spp) is within 0.1% of the colour in the two inner
@@ -32,22 +31,11 @@ SIZE, DIST, FOV = 64, 4.0, 30.0
 
 
 def make(out):
-    from furnace import sphere_obj
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "sphere.obj"), "w") as f:
-        f.write(sphere_obj(48, 96))
-    graph = {"texcc": 1, "sources": [], "nodes": [],
-             "materials": {n: {"bsdf": "glossy", "color": c, "roughness": r}
-                           for n, (c, r) in MATERIALS.items()}}
-    with open(os.path.join(out, "graph.json"), "w") as f:
-        json.dump(graph, f, indent=1)
+    make_folder(out, 48, 96, {"texcc": 1, "sources": [], "nodes": [],
+                              "materials": {n: {"bsdf": "glossy", "color": c, "roughness": r}
+                                            for n, (c, r) in MATERIALS.items()}})
     for n in MATERIALS:
-        scene = {"texrender": 1,
-                 "camera": {"position": [0, 0, DIST], "target": [0, 0, 0], "fov": FOV},
-                 "lights": [{"type": "sky", "radiance": [1, 1, 1]}],
-                 "meshes": [{"obj": "sphere.obj", "material": n}]}
-        with open(os.path.join(out, n + ".json"), "w") as f:
-            json.dump(scene, f)
+        write_json(os.path.join(out, n + ".json"), furnace_scene(n, [0, 0, DIST], FOV))
 
 
 def cos_wo(size):
@@ -70,7 +58,6 @@ def cos_wo(size):
 
 def check(out):
     import numpy as np
-    from texexr import read_exr
     cos = cos_wo(SIZE)
     ok = True
     for n, (colour, _) in MATERIALS.items():
@@ -78,8 +65,7 @@ def check(out):
         if os.path.exists(path):
             img = np.load(path)[..., :3]
         else:
-            with open(os.path.join(out, n + ".exr"), "rb") as f:
-                img = read_exr(f.read())
+            img = read_image(os.path.join(out, n + ".exr"))
             img = (img[0] if isinstance(img, tuple) else img)[..., :3]
         for lo, hi, tol in RINGS:
             sel = (cos >= lo) & (cos < hi)
@@ -96,16 +82,13 @@ def check(out):
 
 def cycles(out):
     import bpy
-    import numpy as np
+    from cycles_render import render_npy
     for n, (colour, rough) in MATERIALS.items():
         bpy.ops.wm.read_factory_settings(use_empty=True)
         scene = bpy.context.scene
         scene.render.engine = "CYCLES"
         scene.render.resolution_x = scene.render.resolution_y = SIZE
         scene.view_settings.view_transform = "Standard"
-        c = scene.cycles
-        c.device, c.samples, c.use_denoising, c.use_adaptive_sampling = "CPU", 256, False, False
-        c.pixel_filter_type, c.filter_width = "BOX", 1.0
         world = bpy.data.worlds.new("W")
         world.use_nodes = True
         world.node_tree.nodes["Background"].inputs["Color"].default_value = (1, 1, 1, 1)
@@ -127,16 +110,9 @@ def cycles(out):
         cam.data.lens = 18.0 / math.tan(math.radians(FOV) / 2)
         scene.collection.objects.link(cam)
         scene.camera = cam
-        exr = os.path.join(out, n + ".cycles.exr")
-        scene.render.image_settings.file_format = "OPEN_EXR"
-        scene.render.image_settings.color_depth = "32"
-        scene.render.filepath = exr
-        bpy.ops.render.render(write_still=True)
-        img = bpy.data.images.load(exr)
-        px = np.empty(len(img.pixels), np.float32)
-        img.pixels.foreach_get(px)
-        np.save(os.path.join(out, n + ".npy"), px.reshape(SIZE, SIZE, 4)[::-1])
+        render_npy(scene, 256, os.path.join(out, n + ".cycles.exr"),
+                   os.path.join(out, n + ".npy"))
 
 
 if __name__ == "__main__":
-    sys.exit({"make": make, "check": check, "cycles": cycles}[sys.argv[1]](sys.argv[2]))
+    main({"make": make, "check": check, "cycles": cycles})

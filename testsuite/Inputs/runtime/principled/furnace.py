@@ -14,12 +14,11 @@ compensation gives back what single-scattering GGX loses; a white dielectric's b
 its specular layer does not reflect: within 1.5%, 1% for a smooth metal), and a
 principled dielectric with specular 0 is a Lambertian base: exactly its base color.
 """
-import json
-import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "..", "scripts"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from sphere_scene import furnace_scene, main, make_folder, read_image, write_json  # noqa: E402
 
 # name: (inputs, expectation) with expectation ("le", 1) | ("near", value, tolerance)
 MATERIALS = {}
@@ -42,49 +41,18 @@ MATERIALS["lambert"] = ({"baseColor": [0.5, 0.25, 0.75], "specular": 0.0, "rough
                         ("near", None, 0.01))
 
 
-def sphere_obj(rows=24, cols=48):
-    lines = []
-    for i in range(rows + 1):
-        t = math.pi * i / rows
-        for j in range(cols + 1):
-            p = 2 * math.pi * j / cols
-            x, y, z = math.sin(t) * math.cos(p), math.cos(t), math.sin(t) * math.sin(p)
-            lines.append("v %.6f %.6f %.6f" % (x, y, z))
-            lines.append("vn %.6f %.6f %.6f" % (x, y, z))
-    w = cols + 1
-    for i in range(rows):
-        for j in range(cols):
-            a, b, c, d = i * w + j + 1, i * w + j + 2, (i + 1) * w + j + 2, (i + 1) * w + j + 1
-            # counter-clockwise seen from outside
-            lines.append("f %d//%d %d//%d %d//%d" % (a, a, c, c, b, b))
-            lines.append("f %d//%d %d//%d %d//%d" % (a, a, d, d, c, c))
-    return "\n".join(lines) + "\n"
-
-
 def make(out):
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "sphere.obj"), "w") as f:
-        f.write(sphere_obj())
-    graph = {"texcc": 1, "sources": [], "nodes": [],
-             "materials": {n: dict({"bsdf": "principled"}, **i)
-                           for n, (i, _) in MATERIALS.items()}}
-    with open(os.path.join(out, "graph.json"), "w") as f:
-        json.dump(graph, f, indent=1)
+    make_folder(out, 24, 48, {"texcc": 1, "sources": [], "nodes": [],
+                              "materials": {n: dict({"bsdf": "principled"}, **i)
+                                            for n, (i, _) in MATERIALS.items()}})
     for n in MATERIALS:
-        scene = {"texrender": 1,
-                 "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "fov": 30},
-                 "lights": [{"type": "sky", "radiance": [1, 1, 1]}],
-                 "meshes": [{"obj": "sphere.obj", "material": n}]}
-        with open(os.path.join(out, n + ".json"), "w") as f:
-            json.dump(scene, f)
+        write_json(os.path.join(out, n + ".json"), furnace_scene(n, [0, 0, 4], 30))
 
 
 def check(out):
-    from texexr import read_exr
     ok = True
     for n, (inputs, exp) in MATERIALS.items():
-        with open(os.path.join(out, n + ".exr"), "rb") as f:
-            img = read_exr(f.read())
+        img = read_image(os.path.join(out, n + ".exr"))
         h, w = img.shape[:2]
         c = img[h // 2 - 3:h // 2 + 3, w // 2 - 3:w // 2 + 3, :3].reshape(-1, 3).mean(axis=0)
         good = bool((c <= 1.005).all())  # every material: energy <= 1 (+ noise)
@@ -102,7 +70,4 @@ def check(out):
 
 
 if __name__ == "__main__":
-    if sys.argv[1] == "make":
-        make(sys.argv[2])
-    else:
-        sys.exit(check(sys.argv[2]))
+    main({"make": make, "check": check})

@@ -18,46 +18,24 @@ mean must be within 0.6% and 4 standard errors (from the per-pixel variance) of 
 expectation, which the light choice and the MIS weights of next-event estimation and BSDF
 sampling for the sun and the sky must get exactly right to meet.
 """
-import json
 import math
 import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "..", "scripts"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from sphere_scene import main, make_folder, read_image, write_json  # noqa: E402
 
 RHO, SKY, SUN, ALPHA = 0.5, 1.0, 8.0, 20.0
 SUN_DIR = np.array([0.0, 1.0, 0.0])  # towards the sun: the top half lit, the bottom dark
 CAMERA, FOV, SIZE = np.array([0.0, 0.0, 4.0]), 36.0, 48
 
 
-def sphere_obj(rows=64, cols=128):
-    lines = []
-    for i in range(rows + 1):
-        t = math.pi * i / rows
-        for j in range(cols + 1):
-            p = 2 * math.pi * j / cols
-            x, y, z = math.sin(t) * math.cos(p), math.cos(t), math.sin(t) * math.sin(p)
-            lines.append("v %.6f %.6f %.6f" % (x, y, z))
-            lines.append("vn %.6f %.6f %.6f" % (x, y, z))
-    w = cols + 1
-    for i in range(rows):
-        for j in range(cols):
-            a, b, c, d = i * w + j + 1, i * w + j + 2, (i + 1) * w + j + 2, (i + 1) * w + j + 1
-            lines.append("f %d//%d %d//%d %d//%d" % (a, a, c, c, b, b))
-            lines.append("f %d//%d %d//%d %d//%d" % (a, a, d, d, c, c))
-    return "\n".join(lines) + "\n"
-
-
 def make(out):
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "sphere.obj"), "w") as f:
-        f.write(sphere_obj())
-    graph = {"texcc": 1, "sources": [], "nodes": [],
-             "materials": {"white": {"bsdf": "diffuse", "color": [RHO, RHO, RHO]}}}
-    with open(os.path.join(out, "graph.json"), "w") as f:
-        json.dump(graph, f, indent=1)
+    make_folder(out, 64, 128, {"texcc": 1, "sources": [], "nodes": [],
+                               "materials": {"white": {"bsdf": "diffuse",
+                                                       "color": [RHO, RHO, RHO]}}})
     scene = {"texrender": 1,
              "camera": {"position": CAMERA.tolist(), "target": [0, 0, 0], "up": [0, 1, 0],
                         "fov": FOV},
@@ -66,8 +44,7 @@ def make(out):
                         {"type": "sun", "direction": SUN_DIR.tolist(),
                          "radiance": [SUN] * 3, "angularRadius": ALPHA}],
              "meshes": [{"obj": "sphere.obj", "material": "white"}]}
-    with open(os.path.join(out, "scene.json"), "w") as f:
-        json.dump(scene, f)
+    write_json(os.path.join(out, "scene.json"), scene)
 
 
 def disc_integral():
@@ -116,11 +93,8 @@ def expected(size):
 
 
 def check(out):
-    from texexr import read_exr
-    with open(os.path.join(out, "img.exr"), "rb") as f:
-        img = read_exr(f.read())[:, :, :3].mean(axis=-1)
-    with open(os.path.join(out, "var.exr"), "rb") as f:
-        var = read_exr(f.read())[:, :, :3].mean(axis=-1)
+    img = read_image(os.path.join(out, "img.exr"))[:, :, :3].mean(axis=-1)
+    var = read_image(os.path.join(out, "var.exr"))[:, :, :3].mean(axis=-1)
     exp, full, tmin, tmax = expected(img.shape[0])
     regions = {"sun above": full & (tmax < 90 - ALPHA),
                "sun partly": full & (tmin > 90 - ALPHA) & (tmax < 90 + ALPHA),
@@ -144,7 +118,4 @@ def check(out):
 
 
 if __name__ == "__main__":
-    if sys.argv[1] == "make":
-        make(sys.argv[2])
-    else:
-        sys.exit(check(sys.argv[2]))
+    main({"make": make, "check": check})
