@@ -112,7 +112,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except common.BenchError as e:
-        sys.exit("bench/ao.py: error: %s" % e)
+    common.run_main(main, "bench/ao.py")

@@ -7,6 +7,7 @@ import os
 import platform
 import statistics
 import subprocess
+import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -22,6 +23,16 @@ FIXED_KERNELS = {"raygen", "closest_hit_primary", "closest_hit_bounce", "hit_att
 
 class BenchError(Exception):
     pass
+
+
+def run_main(main, name):
+    """A benchmark script's entry point: runs main(); a failed measurement (BenchError) ends the
+    script with "NAME: error: WHY" on stderr and exit status 1."""
+    try:
+        main()
+    except BenchError as e:
+        print("%s: error: %s" % (name, e), file=sys.stderr)
+        sys.exit(1)
 
 
 class Tools:

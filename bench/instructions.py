@@ -164,8 +164,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except common.BenchError as e:
-        print("bench/instructions.py: error: %s" % e, file=common.sys.stderr)
-        common.sys.exit(1)
+    common.run_main(main, "bench/instructions.py")

@@ -178,8 +178,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except common.BenchError as e:
-        print("bench/per_hit.py: error: %s" % e, file=sys.stderr)
-        sys.exit(1)
+    common.run_main(main, "bench/per_hit.py")

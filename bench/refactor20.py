@@ -13,7 +13,6 @@ runs made at different times), keyed by build label, example and configuration."
 import argparse
 import json
 import os
-import sys
 
 import common
 import instructions
@@ -85,8 +84,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except common.BenchError as e:
-        print("bench/refactor20.py: error: %s" % e, file=sys.stderr)
-        sys.exit(1)
+    common.run_main(main, "bench/refactor20.py")
