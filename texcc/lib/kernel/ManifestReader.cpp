@@ -135,6 +135,16 @@ private:
         ++Pos;
     }
   }
+  /// At a member's or element's value: past it and the ',' after it; false at the container's
+  /// end.
+  bool nextItem() {
+    skip();
+    space();
+    if (Pos >= Text.size() || Text[Pos] != ',')
+      return false;
+    ++Pos;
+    return true;
+  }
   size_t member(const std::string &Key) {
     ++Pos; // '{'
     for (;;) {
@@ -147,11 +157,8 @@ private:
       space();
       if (K == Key)
         return Pos;
-      skip();
-      space();
-      if (Pos >= Text.size() || Text[Pos] != ',')
+      if (!nextItem())
         return std::string::npos;
-      ++Pos;
     }
   }
   size_t element(const std::string &Index) {
@@ -168,11 +175,8 @@ private:
         return std::string::npos;
       if (I == N)
         return Pos;
-      skip();
-      space();
-      if (Pos >= Text.size() || Text[Pos] != ',')
+      if (!nextItem())
         return std::string::npos;
-      ++Pos;
     }
   }
 };

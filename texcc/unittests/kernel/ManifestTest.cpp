@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace texcc::kernel;
 
 namespace {
@@ -209,6 +211,13 @@ TEST(Manifest, FieldErrorNamesPointerAndPosition) {
   EXPECT_NE(E.find("/nodes/1/args/0/source: expected \"attr\", \"node\" or \"const\""),
             std::string::npos)
       << E;
+  // ... at the value's line and column: the scanner passed node 0 and the members before.
+  const size_t At2 = Src.find("\"wire\"");
+  const size_t LineStart = Src.rfind('\n', At2) + 1;
+  const std::string Where = "dir/layout.json:" +
+                            std::to_string(1 + std::count(Src.begin(), Src.begin() + At2, '\n')) +
+                            ":" + std::to_string(At2 - LineStart + 1) + ": ";
+  EXPECT_EQ(E.rfind(Where, 0), 0u) << E << " (expected " << Where << ")";
 }
 
 TEST(Manifest, OldLayoutWithoutCapabilitiesGetsItsModes) {
