@@ -125,6 +125,28 @@ void Session::writeProgress(const std::vector<float> &Image, int Spp, int Factor
     E["reduced"] = true;
     E["factor"] = Factor;
   }
+  if (Source.Adopted > 0) {
+    E["source"] = ordered_json{{"latency_ms", eventMs(LastWrite - Source.Noticed)},
+                               {"texcc_ms", eventMs(Source.TexccDone - Source.Noticed)},
+                               {"to_adopt_ms", eventMs(Source.AdoptStart - Source.TexccDone)},
+                               {"adopt_ms", eventMs(Source.Adopted - Source.AdoptStart)},
+                               {"build_ms", std::round(Source.BuildMs * 100) / 100},
+                               {"builds", Source.Builds},
+                               {"prime", Source.Primed},
+                               {"to_pass_ms", eventMs(PassStart - Source.Adopted)},
+                               {"pass_ms", eventMs(PassEnd - PassStart)},
+                               {"write_ms", eventMs(LastWrite - WriteStart)}};
+    say("source change: first frame " + ms(LastWrite - Source.Noticed) +
+        " after it was noticed: texcc " + ms(Source.TexccDone - Source.Noticed) + ", " +
+        Source.Primed + ", adopted " + ms(Source.AdoptStart - Source.TexccDone) + " later in " +
+        ms(Source.Adopted - Source.AdoptStart) + " (" + std::to_string(Source.Builds) +
+        " kernel build(s) from source, " + std::to_string(int(Source.BuildMs + 0.5)) +
+        " ms loading, building and warming up programs; tier " + Tier + "), " +
+        (Reduced ? "reduced pass (1/" + std::to_string(Factor) + ") " : std::string("pass ")) +
+        ms(PassEnd - PassStart) + " after " + ms(PassStart - Source.Adopted) +
+        ", image written in " + ms(LastWrite - WriteStart));
+    Source = {};
+  }
   if (EditAt > 0) {
     E["latency_ms"] = eventMs(LastWrite - EditAt);
     E["split"] = ordered_json{{"wait_ms", eventMs(HandledAt - EditAt)},
@@ -187,6 +209,7 @@ void Session::renderFrame() {
   say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
       ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
       "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
+  primeCompiler();
   while (!stopping() && !work())
     idle();
 }
