@@ -331,6 +331,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   pr.base = color;
   pr.roughness = param;
   pr.metallic = pr.f0 = 0.0f;
+  pr.bumped = 0;
+  pr.nSmooth = s.ns;
   if (leaf.type == RT_BSDF_PRINCIPLED) {
     pr.metallic = rt_input(leaf.in[RT_IN_METALLIC], outputs, base).x;
     float spec = rt_input(leaf.in[RT_IN_SPECULAR], outputs, base).x;
@@ -348,8 +350,9 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   }
   /* A shading normal from the material (a bump node): kept on the side of the geometric
    * normal, and tilted towards it so that it is at least a little above the surface. */
-  /* The smooth normal before the bump: a bumped diffuse leaf is shadowed against it as
-   * Cycles' bump map correction (on by default) does (rt_bump_shadowing). */
+  /* The smooth normal before the bump: a bumped diffuse leaf, and a bumped principled's
+   * diffuse base, are shadowed against it as Cycles' bump map correction (on by default)
+   * does (rt_bump_shadowing). */
   float3 nSmooth = s.ns;
   int bumped = 0;
   if (leaf.in[RT_IN_NORMAL].output >= 0) {
@@ -368,6 +371,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       s.ns = nb;
     }
   }
+  pr.bumped = bumped;
   float3 wo = -d;
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
   uint sunShare = canExtend ? rt_sun_share(lights, prm, s.ns) : 0u;

@@ -136,6 +136,11 @@ typedef struct RtPrincipled {
   float roughness;
   float metallic;
   float f0; /* dielectric */
+  /* A bump moved the shading normal off the smooth normal nSmooth: the diffuse base is
+   * shadowed as Cycles shadows every diffuse closure (rt_bump_shadowing); the specular
+   * lobes are not (Cycles' bump map correction softens only diffuse ones). */
+  int bumped;
+  float3 nSmooth;
 } RtPrincipled;
 
 static inline float rt_schlick1(float f0, float cosD) {
@@ -181,6 +186,8 @@ static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, flo
   float pd = rt_principled_pdiffuse(P, w, cosO);
   float dielectric = 1.0f - P.metallic;
   float3 f = P.base * (dielectric * (1.0f - w.dielectricAlbedo) * RT_INV_PI);
+  if (P.bumped)
+    f *= rt_bump_shadowing(P.nSmooth, n, wi);
   float specPdf = 0.0f;
   float a = rt_ggx_alpha(P.roughness);
   float a2 = a * a;

@@ -45,7 +45,12 @@ typedef struct TexccSettings {
   TEXCC_F4 cameraPos; /* xyz: CameraPos */
   float time;         /* Time, seconds */
   int frame;          /* Frame */
-  int pad0;
+  /* The camera's angular size of one pixel, radians: 2 tan(fov / 2) / width (the film's
+   * pixel pitch at unit distance, Cycles' ray differential at the image centre). Bump's step
+   * (texcc_device.h texcc_bump_step) is 0.1 of it times the hit's distance; 0: no footprint
+   * (the step is the float-resolution floor). texrender sets it per render (Renderer.cpp
+   * textureSettings), so it follows the image size. */
+  float pixelAngle;
   int pad1;
 } TexccSettings;
 

@@ -107,6 +107,28 @@ static inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
   return false;
 }
 
+/* A constant `for` of N >= 1 iterations whose start is a literal is charged without a branch
+ * before it (texcc/lib/frontend/Safety.cpp, constantForm): `for (int texcc_bad =
+ * texcc_loop_charge_once(texcc_ctx, N, __LINE__), i = texcc_bad ? (LAST) : (A); ...) if
+ * (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else BODY`. Not enough budget left: none
+ * is left, and the loop makes one iteration from its last value that records the fault (as
+ * texcc_loop_continues does) and runs nothing of BODY. */
+static inline int texcc_loop_charge_once(const TexccCtx *c, uint n, int line) {
+  TexccGuard *g = c->guard;
+  const uint left = g->loopsLeft;
+  const bool ok = !TEXCC_CHECKS || left >= n;
+  g->loopsLeft = ok ? left - n : 0u;
+  return ok ? 0 : line;
+}
+
+static inline void texcc_loop_fault(const TexccCtx *c, int line) {
+  TexccGuard *g = c->guard;
+  if (g->line == 0) {
+    g->line = line;
+    g->lineAt = g->at;
+  }
+}
+
 /* A loop whose trip count is a span texcc can compute before it runs (a `for` over a bound that
  * the loop does not change, e.g. fbm's octaves): `if (!texcc_loop_charge_span(texcc_ctx,
  * (long)(n) - (long)(a), __LINE__)) {} else for (int i = a; i < n; ++i)`, charged max(0, span)
@@ -196,17 +218,18 @@ static inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->f
 static inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->settings->cameraPos.xyz; }
 
 #if TEXCC_POSITION_OFFSET
-/* Bump (docs/graph.md "Bump"). The step of the moved evaluations: TEXCC_BUMP_ANGLE radians
- * seen from the camera (texrender has no ray differentials; 2.8e-4 is 0.1 pixel of a
- * 256-pixel-wide 40-degree view, Cycles' default Filter Width of 0.1 pixel), at least 1e-4 of
- * the position's magnitude (float resolution). */
-#ifndef TEXCC_BUMP_ANGLE
-#define TEXCC_BUMP_ANGLE 2.8e-4f
+/* Bump (docs/graph.md "Bump"). The step of the moved evaluations follows the pixel footprint as
+ * Cycles' ray differentials do: TEXCC_BUMP_FILTER_WIDTH (Cycles' Bump Filter Width, 0.1) of
+ * the camera's angular pixel size (TexccSettings::pixelAngle) times the hit's distance from
+ * the camera, and at least 1e-4 of the position's magnitude (float resolution). */
+#ifndef TEXCC_BUMP_FILTER_WIDTH
+#define TEXCC_BUMP_FILTER_WIDTH 0.1f
 #endif
 static inline float texcc_bump_step(const TexccCtx *c) {
   const float3 p = c->hit.worldPos.xyz;
   const float3 a = fabs(p);
-  return fmax(TEXCC_BUMP_ANGLE * length(p - c->settings->cameraPos.xyz),
+  return fmax(TEXCC_BUMP_FILTER_WIDTH * c->settings->pixelAngle *
+                  length(p - c->settings->cameraPos.xyz),
               1e-4f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
 }
 /* The unit tangent of the moved evaluations: Tangent made orthogonal to Normal (any

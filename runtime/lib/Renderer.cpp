@@ -55,6 +55,21 @@ double now() {
 
 } // namespace
 
+/// The texture kernels' settings (readSetting, and bump's footprint) for an image of
+/// Width x Height pixels: the one place they are filled. pixelAngle is the film's pixel pitch
+/// at unit distance, 2 tan(fov / 2) / width along the fov's axis (makeCamera's right vector
+/// spans half the film's width), so the bump step follows the image size and the fov.
+TexccSettings textureSettings(const Scene &S, const RenderSettings &R) {
+  const RtCamera Cam = makeCamera(S.Cam, R.Width, R.Height);
+  TexccSettings Set{};
+  Set.cameraPos = {{S.Cam.Position[0], S.Cam.Position[1], S.Cam.Position[2], 0}};
+  Set.time = R.Time, Set.frame = R.Frame;
+  const float Half = std::sqrt(Cam.right.s[0] * Cam.right.s[0] + Cam.right.s[1] * Cam.right.s[1] +
+                               Cam.right.s[2] * Cam.right.s[2]);
+  Set.pixelAngle = 2.0f * Half / float(std::max(R.Width, 1));
+  return Set;
+}
+
 uint32_t attributeMaskOf(const Layout &L) {
   uint32_t Mask = 0;
   for (const std::string &A : L.Attributes) {
@@ -178,8 +193,7 @@ void Renderer::uploadLayoutData() {
     Infos.push_back({0, 0, 0, 0});
   B["texels"] = Cl->allocateWith("texels", Texels.data(), bytes(Texels), RO);
   B["images"] = Cl->allocateWith("images", Infos.data(), bytes(Infos), RO);
-  TexccSettings Set{};
-  Set.cameraPos = {{SceneDesc.Cam.Position[0], SceneDesc.Cam.Position[1], SceneDesc.Cam.Position[2], 0}};
+  TexccSettings Set = textureSettings(SceneDesc, Settings);
   B["settings"] = Cl->allocateWith("settings", &Set, sizeof Set, RO);
   AttrMask = attributeMaskOf(Lay);
   HasTextureWork = std::any_of(Data.Materials.begin(), Data.Materials.end(),
@@ -406,9 +420,7 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       allocateWorkBuffers(std::max(Need, Capacity));
     RtCamera Cam = makeCamera(SceneDesc.Cam, W, H);
     Cl->write(B["camera"], &Cam, sizeof Cam);
-    TexccSettings Set{};
-    Set.cameraPos = {{SceneDesc.Cam.Position[0], SceneDesc.Cam.Position[1], SceneDesc.Cam.Position[2], 0}};
-    Set.time = Settings.Time, Set.frame = Settings.Frame;
+    TexccSettings Set = textureSettings(SceneDesc, Settings);
     Cl->write(B["settings"], &Set, sizeof Set);
     RtShadeParams Prm{};
     Prm.maxDepth = Settings.MaxDepth;

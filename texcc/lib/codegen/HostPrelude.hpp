@@ -394,6 +394,23 @@ inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
   return false;
 }
 
+// A constant `for` charged without a branch before it (texcc_device.h, texcc_loop_charge_once).
+inline int texcc_loop_charge_once(const TexccCtx *c, uint n, int line) {
+  TexccGuard *g = c->guard;
+  const uint left = g->loopsLeft;
+  const bool ok = !TEXCC_CHECKS || left >= n;
+  g->loopsLeft = ok ? left - n : 0u;
+  return ok ? 0 : line;
+}
+
+inline void texcc_loop_fault(const TexccCtx *c, int line) {
+  TexccGuard *g = c->guard;
+  if (g->line == 0) {
+    g->line = line;
+    g->lineAt = g->at;
+  }
+}
+
 inline bool texcc_loop_charge_span(const TexccCtx *c, long long span, int line) {
   return texcc_loop_charge(
       c, span <= 0 ? 0u : span >= static_cast<long long>(UINT_MAX) ? UINT_MAX : uint(span), line);
@@ -480,13 +497,14 @@ inline float3 texcc_setting_CameraPos(const TexccCtx *c) {
 
 // Bump: as texcc_device.h's texcc_bump_step, texcc_bump_tangent, texcc_position_offset and
 // texcc_bump (the same operations in the same order).
-#ifndef TEXCC_BUMP_ANGLE
-#define TEXCC_BUMP_ANGLE 2.8e-4f
+#ifndef TEXCC_BUMP_FILTER_WIDTH
+#define TEXCC_BUMP_FILTER_WIDTH 0.1f
 #endif
 inline float texcc_bump_step(const TexccCtx *c) {
   const float3 p = texcc_f3(c->hit.worldPos);
   const float3 a = fabs(p);
-  return fmax(TEXCC_BUMP_ANGLE * length(p - texcc_f3(c->settings->cameraPos)),
+  return fmax(TEXCC_BUMP_FILTER_WIDTH * c->settings->pixelAngle *
+                  length(p - texcc_f3(c->settings->cameraPos)),
               1e-4f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
 }
 inline float3 texcc_bump_tangent(const TexccCtx *c) {

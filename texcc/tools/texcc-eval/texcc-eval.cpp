@@ -158,6 +158,7 @@ Inputs makeInputs(const LayoutInfo &Info, const Options &Opts) {
   In.Settings.cameraPos = f4(0.5f, 1.5f, -2.0f, 0.0f);
   In.Settings.time = 0.75f;
   In.Settings.frame = 3;
+  In.Settings.pixelAngle = 2.8e-3f; // a 256-pixel 40-degree view: bump steps of 2.8e-4 rad
   for (unsigned K = 0; K < Info.NumImages; ++K) {
     TexccImageInfo Im{};
     Im.offset = static_cast<int>(In.Texels.size());

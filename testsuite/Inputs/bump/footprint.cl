@@ -1,0 +1,20 @@
+/* footprint.cl: probes of bump's step for testsuite/bump/bump-footprint.test (footprint.py).
+ *   aboutHit(k)   float   k |WorldPos - Q|^2, Q the unmoved hit recomputed from its UV (UV is
+ *                         never moved) on footprint.py's plane: 0 at the hit, k e^2 at both
+ *                         moved positions, e the bump step
+ *   tiltTan(nb)   float3  tan of the angle between nb (the bumped normal) and the hit's
+ *                         Normal, in every channel */
+float aboutHit(float k) {
+  float3 p = readAttr("WorldPos");
+  float2 uv = readAttr("TexCoord0");
+  float3 q = (float3)(4.0f * uv.x - 2.0f, 0.0f, 4.0f * uv.y - 2.0f);
+  float3 d = p - q;
+  return k * dot(d, d);
+}
+
+float3 tiltTan(float3 nb) {
+  float3 n = readAttr("Normal");
+  float c = dot(nb, n);
+  float s = length(nb - c * n);
+  return (float3)(s / c);
+}
