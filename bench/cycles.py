@@ -201,7 +201,68 @@ def worker():
             np.savez(req["dump"], rel=rel, onModel=on_model, edge=edge, ma=ma, mb=mb)
         return out
 
-    ops = {"render": render, "mask": mask, "analyze": analyze, "seeds": seeds, "blocks": blocks}
+    def noise(req):
+        """Noise against bias per 8x8 block (issue 22, rust's texture-only view): a1/a2 = Cycles
+        at two seeds, b1/b2 = texrender at two seeds, same spp. Per block wholly on the model
+        and smooth in all four images (as blocks()): the difference of the two renderers'
+        seed-averaged means, d = (b1 + b2) / (a1 + a2) - 1, and its noise from the seed-to-seed
+        spreads, e = sqrt((a1 - a2)^2 + (b1 - b2)^2) / (a1 + a2) (one standard deviation of d
+        for Gaussian noise, estimated from one pair each); per channel, the block's figure its
+        largest |d| channel. Also each renderer's seed-to-seed |x1 / x2 - 1|."""
+        imgs = {k: read_exr(req[k]) for k in ("a1", "a2", "b1", "b2")}
+        m = read_exr(req["mask"])[:, :, 0]
+        n = req["block"]
+        h, w = (m.shape[0] // n) * n, (m.shape[1] // n) * n
+
+        def tiles(x):
+            return x[:h, :w].reshape(h // n, n, w // n, n, -1).swapaxes(1, 2).reshape(
+                h // n, w // n, n * n, -1)
+
+        t = {k: tiles(v[:, :, :3]) for k, v in imgs.items()}
+        on_model = (tiles(m[:, :, None])[..., 0] >= 0.999).all(axis=2)
+        weights = np.array([0.2126, 0.7152, 0.0722])
+        edge = np.zeros_like(on_model)
+        for x in t.values():
+            lum = x @ weights
+            edge |= (lum.max(axis=2) - lum.min(axis=2)) > req["edgeRange"] * np.maximum(
+                lum.mean(axis=2), 1e-6)
+        mm = {k: x.mean(axis=2) for k, x in t.items()}
+        sa, sb = np.maximum(mm["a1"] + mm["a2"], 1e-9), mm["b1"] + mm["b2"]
+        d = sb / sa - 1
+        e = np.sqrt((mm["a1"] - mm["a2"]) ** 2 + (mm["b1"] - mm["b2"]) ** 2) / sa
+        ch = np.abs(d).argmax(axis=2)
+        pick = (lambda x: np.take_along_axis(x, ch[..., None], axis=2)[..., 0])
+        dd, ee = pick(d), pick(e)
+        out = {"blockPixels": n, "edgeRange": req["edgeRange"]}
+        for name, sel in (("model", on_model), ("smooth", on_model & ~edge)):
+            ad, ae = np.abs(dd[sel]), ee[sel]
+            seed = {r: np.abs(mm[r + "1"] / np.maximum(mm[r + "2"], 1e-9) - 1).max(axis=2)[sel]
+                    for r in ("a", "b")}
+            rows = np.argwhere(sel)
+            worst = np.argsort(-ad)[:12]
+            out[name] = {
+                "blocks": int(ad.size),
+                "diffMaxPercent": float(100 * ad.max()),
+                "diffP50Percent": float(100 * np.percentile(ad, 50)),
+                "diffP90Percent": float(100 * np.percentile(ad, 90)),
+                "within1Percent": float((ad <= 0.01).mean()),
+                "noiseP50Percent": float(100 * np.percentile(ae, 50)),
+                "noiseP90Percent": float(100 * np.percentile(ae, 90)),
+                "noiseMaxPercent": float(100 * ae.max()),
+                "beyond3Sigma": int((ad > 3 * ae).sum()),
+                "beyond1PercentAnd3Sigma": int(((ad > 0.01) & (ad > 3 * ae)).sum()),
+                "cyclesSeedToSeedP50Percent": float(100 * np.percentile(seed["a"], 50)),
+                "cyclesSeedToSeedMaxPercent": float(100 * seed["a"].max()),
+                "texrenderSeedToSeedP50Percent": float(100 * np.percentile(seed["b"], 50)),
+                "texrenderSeedToSeedMaxPercent": float(100 * seed["b"].max()),
+                "worst": [{"block": [int(rows[i][0]), int(rows[i][1])],
+                           "diffPercent": float(100 * dd[sel][i]),
+                           "noisePercent": float(100 * ae[i]),
+                           "cyclesMean": mm["a1"][tuple(rows[i])].tolist()} for i in worst]}
+        return out
+
+    ops = {"render": render, "mask": mask, "analyze": analyze, "seeds": seeds, "blocks": blocks,
+           "noise": noise}
     reply({"ready": bpy.app.version_string})
     for line in sys.stdin:
         req = json.loads(line)
@@ -416,10 +477,11 @@ TEXTURE_ONLY_VARIANTS = ("rust-model", "scratches-model")
 
 
 def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge_range=0.5,
-                 seed=1):
+                 seed=1, noise_seed=None):
     """Issue 22: the model's material colour through Emission, no lights (make_scene.py
     --texture-only), rendered by Cycles and by texrender from the exporter's output of the same
-    .blend; per-block agreement (the worker's blocks())."""
+    .blend; per-block agreement (the worker's blocks()). noise_seed: both renderers again at
+    that seed, and the worker's noise() (the difference against its seed-to-seed noise)."""
     w, h = (int(x) for x in size.split("x"))
     blends = make_blends(tools, variants, ["--texture-only"], "-texture-only")
     cyc = Cycles()
@@ -439,6 +501,17 @@ def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge
                            edgeRange=edge_range, dump=os.path.join(tools.work, "to-%s.npz" % v))
             res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"],
                         "images": {"cycles": cexr, "texrender": texr, "mask": mask}})
+            if noise_seed is not None:
+                cexr2 = os.path.join(tools.work, "to-cycles-%s-%d.exr" % (v, noise_seed))
+                cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, seed=noise_seed,
+                         exr=cexr2)
+                _, texr2 = texrender_once(tools, own, v, "auto", size, spp,
+                                          "to-%s-%d" % (v, noise_seed), exr=True,
+                                          seed=noise_seed)
+                res["noise"] = cyc.call(op="noise", a1=cexr, a2=cexr2, b1=texr, b2=texr2,
+                                        mask=mask, block=block, edgeRange=edge_range)
+                res["noise"]["seeds"] = [seed, noise_seed]
+                res["images"].update({"cycles2": cexr2, "texrender2": texr2})
             out["results"][v] = res
             common.log("texture-only %s: smooth blocks %s" % (v, res.get("smooth")))
     finally:
@@ -544,6 +617,10 @@ def main():
                     "--agree-size (default 256x256) and --agree-spp (default 128); "
                     "--agree-variants picks one of them, --merge replaces only its results; "
                     "results in bench/results/cycles_texture_only.json")
+    ap.add_argument("--noise-seed", type=int,
+                    help="with --texture-only: both renderers also at this seed; per block, "
+                    "the renderers' difference against their seed-to-seed noise (results' "
+                    "\"noise\")")
     args = ap.parse_args()
     variants, renderers = args.variants.split(","), args.renderers.split(",")
     if "diffuse" not in variants or not set(variants) <= set(VARIANTS) or \
@@ -555,7 +632,8 @@ def main():
         ensure_bpy()
         which = [v for v in args.agree_variants.split(",") if v != "diffuse"] or \
             list(TEXTURE_ONLY_VARIANTS)
-        data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which)
+        data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which,
+                            noise_seed=args.noise_seed)
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "build": os.path.relpath(tools.build,
