@@ -16,11 +16,13 @@ Transport: through the WebSocket of the browser preview (texrender --serve, scri
 the page's own messages) when aiohttp is importable, else through `texrender --watch --control`
 directly; the result says which.
 
-A source edit: in a copy of rust.cl a constant is changed and saved while the preview is idle
-(shape mode, --tier=auto, the shape kernel already running). Measured from the save: the first
-frame rendered with the new code (texcc in the background, then the interp fallback kernel, built
-unless PoCL and texrender's program cache have it: the changed constant makes it new) and the
-first frame of the new shape kernel (built on the background thread).
+A source edit: in a copy of rust.cl a constant of the code (a random one: no cache has the new
+kernel) is changed and saved SETTLE seconds after the shape tier's complete frame (shape mode,
+--tier=auto). Measured from the save: the first frame rendered with the new code (texcc in the
+background, then a foreground build: of the shape kernel, as neither program is cached and the
+shape program is the faster to build; the interp fallback follows in the background) and the
+first frame of the shape tier; and texrender's own split of that first frame ("source change"
+line: texcc, the compiler priming waited for, the adoption and its program builds, the pass).
 
 usage: bench/lookdev.py [--quick] [--transport ws|control] [--build DIR] [--out FILE]
 """
@@ -29,6 +31,7 @@ import asyncio
 import json
 import os
 import queue
+import random
 import re
 import shutil
 import signal
@@ -52,6 +55,9 @@ SLIDERS = [("patches", "scale", [2.0, 2.2, 2.4, 2.6, 2.8, 3.0, 2.7, 2.5, 2.3, 2.
            ("mask", "softness", [0.04, 0.06, 0.08, 0.10, 0.12, 0.10, 0.08, 0.06, 0.05, 0.08])]
 REWIRES = [("mask", "noise", s) for s in ("tone", "grain", "patches", "tone", "patches01")]
 TIMEOUT = 120
+# The source edit is saved this long after the shape tier's complete frame (a user reads the
+# image first; texrender primes the OpenCL compiler after that frame).
+SETTLE = 2.0
 
 
 def script():
@@ -91,7 +97,8 @@ class Control:
 
     def __init__(self, tools, textures, extra, work):
         self.events = queue.Queue()
-        self.log = open(os.path.join(work, "texrender-%d.log" % time.monotonic_ns()), "w")
+        self.log_name = os.path.join(work, "texrender-%d.log" % time.monotonic_ns())
+        self.log = open(self.log_name, "w")
         cmd = [tools.texrender, SCENE, "--textures", textures, "--size", SIZE, "--spp", str(SPP),
                "--device", tools.device, "--cache-dir", tools.cache, "--watch", "--control",
                "-o", os.path.join(work, "frame.png")] + extra
@@ -264,7 +271,7 @@ def source_edit(transport, tools, textures, folder, work):
     try:
         next_event(ch, lambda e: e.get("event") == "ready", "ready")
         next_event(ch, lambda e: is_frame(e, SPP, "shape"), "a complete frame of the shape tier")
-        time.sleep(0.3)
+        time.sleep(SETTLE)
         while not ch.events.empty():
             ch.events.get()
         edited = change_constant(original)
@@ -279,19 +286,45 @@ def source_edit(transport, tools, textures, folder, work):
         ch.close()
         with open(path, "w") as f:
             f.write(original)
+    log = getattr(ch, "log_path", None) or getattr(ch, "log_name", None)
     return {"firstFrameMs": (first["t"] - t0) * 1000, "firstFrameTier": first.get("tier"),
-            "shapeFrameMs": (shape["t"] - t0) * 1000}
+            "shapeFrameMs": (shape["t"] - t0) * 1000, "settleSeconds": SETTLE,
+            "texrenderSplit": source_split(log) if log else None}
 
 
 def change_constant(text):
-    """rust.cl with its first floating-point literal in a function body nudged (a new kernel
-    source: the program caches do not have it)."""
-    body = text.index("{")
-    m = re.compile(r"(?<![\w.])(\d+\.\d+)f?").search(text, body)
+    """rust.cl with the first floating-point literal of its code (not of a comment: texcc keeps
+    comments, but PoCL's kernel cache hashes the preprocessed text, so a comment edit is a
+    cache hit there) nudged by a random amount, so that no program cache, texrender's or
+    PoCL's, has the new kernel, even from an earlier run."""
+    code = re.sub(r"/\*.*?\*/|//[^\n]*", lambda c: " " * len(c.group(0)), text, flags=re.S)
+    m = re.compile(r"(?<![\w.])(\d+\.\d+)f?").search(code, code.index("{"))
     if not m:
         raise common.BenchError("rust.cl: no floating-point constant to change")
-    value = float(m.group(1)) * 1.0001 + 1e-4
+    value = float(m.group(1)) + 1e-4 * (1 + random.randrange(10000) / 1e4)
     return text[:m.start(1)] + repr(value) + text[m.end(1):]
+
+
+def source_split(log_path):
+    """texrender's account of the last regenerated kernel's first frame (its stderr line
+    'source change: ...'), as {stage: ms}."""
+    try:
+        with open(log_path) as f:
+            lines = [l for l in f if "watch: source change: first frame" in l]
+    except OSError:
+        return None
+    if not lines:
+        return None
+    line = lines[-1].strip()
+    num = lambda pat: (lambda m: int(m.group(1)) if m else None)(re.search(pat, line))
+    return {"line": line,
+            "texccMs": num(r"texcc (\d+) ms"),
+            "primeWaitMs": num(r"waited (\d+) ms for it"),
+            "adoptMs": num(r"later in (\d+) ms"),
+            "foregroundProgramMs": num(r"(\d+) ms loading, building and warming up"),
+            "builds": num(r"\((\d+) kernel build\(s\) from source"),
+            "passMs": num(r"pass(?: \(1/\d+\))? (\d+) ms after"),
+            "writeMs": num(r"image written in (\d+) ms")}
 
 
 def pick_transport(name):
