@@ -8,7 +8,7 @@
 
 float f(int n, int k) {
   float s = 0.0f;
-  // CHECK: {{^}}  if (!texcc_loop_charge(texcc_ctx, 39u, __LINE__)) {} else for (int dz = -1; dz <= 1; ++dz)
+  // CHECK: {{^}}  for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 39u, __LINE__), dz = texcc_bad ? (1) : (-1); dz <= 1; ++dz) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   // CHECK-NEXT: {{^}}    for (int dy = -1; dy <= 1; ++dy)
   // CHECK-NEXT: {{^}}      for (int dx = -1; dx <= 1; ++dx)
   for (int dz = -1; dz <= 1; ++dz)
@@ -17,7 +17,7 @@ float f(int n, int k) {
         s += (float)(dx + dy + dz);
   // Two constant loops in one body, one under an `if` (charged whether it runs or not):
   // 4 * (1 + 2 + 5) = 32.
-  // CHECK: {{^}}  if (!texcc_loop_charge(texcc_ctx, 32u, __LINE__)) {} else for (int i = 0; i < 4; ++i) {
+  // CHECK: {{^}}  for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 32u, __LINE__), i = texcc_bad ? (3) : (0); i < 4; ++i) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else {
   // CHECK-NEXT: {{^}}    for (int j = 0; j < 2; ++j)
   // CHECK: {{^}}    if (k > i)
   // CHECK-NEXT: {{^}}      for (int j = 5; j > 0; --j)
@@ -36,7 +36,7 @@ float f(int n, int k) {
       s += 1.0f;
   // A span-charged loop in a constant one is charged at its own entry (its span is known
   // there), and so is the constant loop inside it (charged by it, 2 * (1 + 2) = 6 per entry).
-  // CHECK: {{^}}  if (!texcc_loop_charge(texcc_ctx, 3u, __LINE__)) {} else for (int i = 0; i < 3; ++i)
+  // CHECK: {{^}}  for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 3u, __LINE__), i = texcc_bad ? (2) : (0); i < 3; ++i) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   // CHECK-NEXT: {{^}}    if (!texcc_loop_charge_nest(texcc_ctx, (long)(n) - (long)(0), 3u, __LINE__)) {} else for (int j = 0; j < n; ++j)
   // CHECK-NEXT: {{^}}      for (int l = 0; l < 2; ++l)
   for (int i = 0; i < 3; ++i)
@@ -45,18 +45,18 @@ float f(int n, int k) {
         s += 1.0f;
   // Inside a `while` (which may run the loop any number of times per outer iteration): its own
   // charge.
-  // CHECK: {{^}}  if (!texcc_loop_charge(texcc_ctx, 2u, __LINE__)) {} else for (int i = 0; i < 2; ++i)
+  // CHECK: {{^}}  for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 2u, __LINE__), i = texcc_bad ? (1) : (0); i < 2; ++i) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   // CHECK-NEXT: {{^}}    while ((s < 100.0f) && texcc_loop_continues(texcc_ctx, __LINE__))
-  // CHECK-NEXT: {{^}}      if (!texcc_loop_charge(texcc_ctx, 3u, __LINE__)) {} else for (int j = 0; j < 3; ++j)
+  // CHECK-NEXT: {{^}}      for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 3u, __LINE__), j = texcc_bad ? (2) : (0); j < 3; ++j) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   for (int i = 0; i < 2; ++i)
     while (s < 100.0f)
       for (int j = 0; j < 3; ++j)
         s += 1.0f;
   // Inside a loop that ticks (its body writes its counter): its own charge, and the ticking
   // loop's own nested loop is charged at that loop, not at the constant loop around it.
-  // CHECK: {{^}}  if (!texcc_loop_charge(texcc_ctx, 2u, __LINE__)) {} else for (int i = 0; i < 2; ++i)
+  // CHECK: {{^}}  for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 2u, __LINE__), i = texcc_bad ? (1) : (0); i < 2; ++i) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   // CHECK-NEXT: {{^}}    for (int j = 0; (j < 10) && texcc_loop_continues(texcc_ctx, __LINE__); ++j) {
-  // CHECK-NEXT: {{^}}      if (!texcc_loop_charge(texcc_ctx, 3u, __LINE__)) {} else for (int l = 0; l < 3; ++l)
+  // CHECK-NEXT: {{^}}      for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 3u, __LINE__), l = texcc_bad ? (2) : (0); l < 3; ++l) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 10; ++j) {
       for (int l = 0; l < 3; ++l)
@@ -64,8 +64,8 @@ float f(int n, int k) {
       j += k;
     }
   // A nest whose whole count would pass 2^32 - 1: each loop charges itself.
-  // CHECK: {{^}}  if (!texcc_loop_charge(texcc_ctx, 100000u, __LINE__)) {} else for (int i = 0; i < 100000; ++i)
-  // CHECK-NEXT: {{^}}    if (!texcc_loop_charge(texcc_ctx, 100000u, __LINE__)) {} else for (int j = 0; j < 100000; ++j)
+  // CHECK: {{^}}  for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 100000u, __LINE__), i = texcc_bad ? (99999) : (0); i < 100000; ++i) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
+  // CHECK-NEXT: {{^}}    for (int texcc_bad = texcc_loop_charge_once(texcc_ctx, 100000u, __LINE__), j = texcc_bad ? (99999) : (0); j < 100000; ++j) if (texcc_bad) texcc_loop_fault(texcc_ctx, texcc_bad); else
   for (int i = 0; i < 100000; ++i)
     for (int j = 0; j < 100000; ++j)
       s += 1.0f;
