@@ -5,6 +5,7 @@
 // file, the JSON path and the reason.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,13 @@ struct TriangleMesh {
 /// Loads an OBJ (or gzip-compressed .obj.gz): triangulated; normals are kept when every
 /// face has them and otherwise generated (area-weighted, per vertex position).
 TriangleMesh loadObj(const std::string &Path);
+
+/// loadObj's two readers of an OBJ file's text (Path names it in errors), for the tests:
+/// the fast one reads the common subset of the format in one pass and declines (nullopt) on
+/// anything else, the full one (tinyobjloader) reads every file; where the fast one accepts,
+/// the two give the same mesh bit for bit.
+std::optional<TriangleMesh> objFromTextFast(const std::string &Path, const std::string &Text);
+TriangleMesh objFromTextFull(const std::string &Path, std::string Text);
 
 struct Camera {
   Vec3 Position{0, 0, 1};
