@@ -2,6 +2,7 @@
 #include "texrender/Error.h"
 #include "texcc/OutOfMemory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -150,6 +151,13 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
     M.emission = f4(Mi.Emission);
     M.material = Mat;
     D.Meshes.push_back(M);
+    // Room for this mesh: its exact size for the first, doubling after (as push_back would).
+    auto Grow = [](auto &V, size_t Add) {
+      if (V.capacity() < V.size() + Add)
+        V.reserve(std::max(V.size() + Add, 2 * V.capacity()));
+    };
+    Grow(G.P, TM.Positions.size()), Grow(G.N, TM.Positions.size());
+    Grow(G.UV, TM.Positions.size()), Grow(G.Mesh, TM.triangleCount());
     for (size_t K = 0; K < TM.Positions.size(); ++K) {
       G.P.push_back(transformPoint(Mi.Transform, TM.Positions[K]));
       // Normals transform with the inverse transpose.
