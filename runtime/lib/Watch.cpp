@@ -52,11 +52,8 @@ void Session::idle(double Until) {
   double End = LastPoll + 0.1;
   if (Until > 0)
     End = std::min(End, Until);
-  int Left = std::max(1, int((End - nowSeconds()) * 1000));
-  if (Input)
-    Input->waitFor(Left);
-  else
-    std::this_thread::sleep_for(std::chrono::milliseconds(Left));
+  // A control line or texcc's end wakes it at once (Waker), a saved file at the next poll.
+  Waker->waitFor(std::max(1, int((End - nowSeconds()) * 1000)));
   if (nowSeconds() - LastPoll >= 0.1)
     poll();
 }
@@ -81,7 +78,7 @@ WatchResult Session::run() {
         Sources.push_back(S);
     event({{"event", "ready"}, {"graph", GraphPath}, {"sources", Sources},
            {"width", O.Width}, {"height", O.Height}});
-    Input = std::make_unique<ControlInput>();
+    Input = std::make_unique<ControlInput>(Waker);
   }
   while (!stopping() && !Ended) {
     // A change that came during the reduced pass or the pause after it is handled first. A
@@ -115,8 +112,9 @@ WatchResult Session::run() {
 }
 
 void Session::primeCompiler() {
-  if (Prime.joinable())
+  if (Primed)
     return;
+  Primed = true;
   // A text PoCL's kernel cache (keyed on the preprocessed source) has not seen: it compiles.
   const unsigned long long Salt =
       (unsigned long long)std::chrono::steady_clock::now().time_since_epoch().count() ^
@@ -138,10 +136,11 @@ void Session::primeCompiler() {
 }
 
 std::string Session::waitForPrime() {
-  if (!Prime.joinable())
+  if (!Primed)
     return "the compiler not primed";
   const double Start = nowSeconds();
-  Prime.join();
+  if (Prime.joinable())
+    Prime.join();
   return "the compiler primed in " + ms(PrimeSeconds) + ", waited " + ms(nowSeconds() - Start) +
          " for it";
 }
@@ -263,6 +262,10 @@ void Session::applyKeptEdits(const json &Edited) {
 void Session::reloadScene() {
   try {
     auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
+    // A new OpenCL context: primed again after its first complete frame.
+    if (Prime.joinable())
+      Prime.join();
+    Primed = false;
     // The new renderer has Lay's arguments: the live edits made since are applied again.
     auto NewEditor = std::make_unique<LiveEditor>(Lay);
     if (std::optional<std::vector<std::string>> Edits = argumentEdits(LayGraph, Graph))
@@ -362,7 +365,8 @@ void Session::startJob(const json &New, const std::string &What, bool KeepEdits)
   std::string Out = TempRoot + "/gen" + std::to_string(++Generation);
   say(What + " changed: texcc runs in the background; the current kernel keeps rendering");
   Regeneration *J = Job.get();
-  Job->Thread = std::thread([J, Out, Graph = GraphPath, Options = Lay.CompileOptions] {
+  Job->Thread = std::thread([J, Out, Graph = GraphPath, Options = Lay.CompileOptions,
+                             W = Waker] {
     try {
       J->Result = runTexcc(findTexcc(), Options, Graph, Out, Out + ".log");
     } catch (const std::exception &E) {
@@ -371,6 +375,7 @@ void Session::startJob(const json &New, const std::string &What, bool KeepEdits)
     }
     J->TexccDone = nowSeconds();
     J->Done.store(true);
+    W->notify(); // adopted at once, not at the next poll of the files
   });
 }
 
@@ -395,7 +400,7 @@ void Session::adoptJob() {
     Dirty = true; // a new accumulation of the last good state shows that it is still there
     return;
   }
-  const std::string Primed = waitForPrime();
+  const std::string PrimeAccount = waitForPrime();
   unsigned Builds = R->cl().foregroundBuilds();
   const size_t EventsBefore = R->buildEvents().size();
   const double AdoptStart = nowSeconds();
@@ -416,7 +421,7 @@ void Session::adoptJob() {
   Dirty = true;
   ChangeAt = J->Started;
   Source = {J->Started, J->TexccDone, AdoptStart, nowSeconds(), 0,
-            R->cl().foregroundBuilds() - Builds, Primed};
+            R->cl().foregroundBuilds() - Builds, PrimeAccount};
   const std::vector<BuildEvent> &Events = R->buildEvents();
   for (size_t I = EventsBefore; I < Events.size(); ++I)
     if (!Events[I].Background && Events[I].ReadySeconds >= 0)

@@ -58,25 +58,45 @@ struct Command {
   unsigned LineNo = 0;
 };
 
+/// Wakes the session's idle wait before its next poll of the files: a line of standard input
+/// read (ControlInput), texcc's process ended (Regeneration). Shared with the threads that
+/// notify it (ControlInput's reader is detached and may outlive the session).
+class Wake {
+public:
+  void notify() {
+    {
+      std::lock_guard<std::mutex> Lock(M);
+      Flag = true;
+    }
+    Cv.notify_all();
+  }
+  /// Waits at most Ms milliseconds for a notify() since the last wait returned.
+  void waitFor(int Ms) {
+    std::unique_lock<std::mutex> Lock(M);
+    Cv.wait_for(Lock, std::chrono::milliseconds(Ms), [this] { return Flag; });
+    Flag = false;
+  }
+
+private:
+  std::mutex M;
+  std::condition_variable Cv;
+  bool Flag = false;
+};
+
 /// --control's standard input. A thread reads the lines (bounded, as --interactive does) into a
 /// queue, so that a command is timed when it arrives rather than when the render loop gets to
-/// it, and the idle loop wakes at once. The thread is detached: it may stay blocked in a read
-/// when the session ends; it owns the queue with the session.
+/// it, and the idle loop wakes at once (W). The thread is detached: it may stay blocked in a
+/// read when the session ends; it owns the queue with the session.
 class ControlInput {
 public:
-  ControlInput() : Q(std::make_shared<Queue>()) {
+  explicit ControlInput(std::shared_ptr<Wake> W) : Q(std::make_shared<Queue>()) {
+    Q->W = std::move(W);
     std::thread([Q = Q] { read(*Q); }).detach();
   }
   /// A command or the end of the input is waiting.
   bool pending() {
     std::lock_guard<std::mutex> Lock(Q->M);
     return !Q->Lines.empty() || Q->State != LineRead::Line;
-  }
-  /// Waits at most Ms milliseconds for pending().
-  void waitFor(int Ms) {
-    std::unique_lock<std::mutex> Lock(Q->M);
-    Q->Wake.wait_for(Lock, std::chrono::milliseconds(Ms),
-                     [this] { return !Q->Lines.empty() || Q->State != LineRead::Line; });
   }
   /// The commands read so far; End: how the input ended after them (Line: it did not), and
   /// the number of the line that ended it.
@@ -92,7 +112,7 @@ public:
 private:
   struct Queue {
     std::mutex M;
-    std::condition_variable Wake;
+    std::shared_ptr<Wake> W;
     std::deque<Command> Lines;
     LineRead State = LineRead::Line;
     unsigned EndLine = 0;
@@ -107,14 +127,16 @@ private:
     std::string Line;
     for (unsigned N = 1;; ++N) {
       LineRead Got = readBoundedLine(std::cin, Line, MaxEditLine);
-      std::lock_guard<std::mutex> Lock(Q.M);
-      if (Got == LineRead::Line) {
-        Q.Lines.push_back({Line, nowSeconds(), N});
-      } else {
-        Q.State = Got;
-        Q.EndLine = N;
+      {
+        std::lock_guard<std::mutex> Lock(Q.M);
+        if (Got == LineRead::Line) {
+          Q.Lines.push_back({Line, nowSeconds(), N});
+        } else {
+          Q.State = Got;
+          Q.EndLine = N;
+        }
       }
-      Q.Wake.notify_all();
+      Q.W->notify();
       if (Got != LineRead::Line)
         return;
     }
@@ -173,10 +195,11 @@ private:
   bool tierBuilt();
   /// A change to apply: a saved file, texcc done, a command.
   bool changePending() const { return !Changed.empty() || jobDone() || commandsPending(); }
-  /// After the first complete frame: builds a tiny program from source on a thread of its own,
-  /// so that the OpenCL implementation loads its compiler then rather than at the first saved
-  /// source file (PoCL: about 1.3 s of the first build from source in a process, load 11;
-  /// docs/live.md). A session whose kernels all came from the caches has built nothing yet.
+  /// After the renderer's first complete frame (once per renderer: a scene reload makes a new
+  /// OpenCL context): builds a tiny program from source on a thread of its own, so that the
+  /// OpenCL implementation loads its compiler then rather than at the first saved source file
+  /// (PoCL: about 1.3 s of the first build from source in a process, load 11; docs/live.md). A
+  /// session whose kernels all came from the caches has built nothing yet.
   void primeCompiler();
   /// Before a regenerated kernel is built: the priming still running is waited for (the build
   /// would otherwise load the compiler itself); says how it went, for the "source change" line.
@@ -233,7 +256,10 @@ private:
   std::set<std::string> Changed;
   std::unique_ptr<Regeneration> Job;
   std::thread Prime;         // primeCompiler's build
+  bool Primed = false;       // primeCompiler ran for R (its thread may still be running)
   double PrimeSeconds = 0;   // its time, set by its thread (read after joining it)
+  // Wakes idle(): control lines, texcc done.
+  std::shared_ptr<Wake> Waker = std::make_shared<Wake>();
   bool JobAgain = false, Ended = false, Ok = true;
   unsigned Generation = 0, Frames = 0;
   // Noticed: when the change being applied was seen; ChangeAt: when the change whose first
