@@ -138,8 +138,31 @@ def reps_at(cfg, spp):
     return (cfg.get("repsAt") or {}).get(spp, cfg["reps"])
 
 
+def fixed_parts(tr, cy, samplers, reps=3):
+    """Each renderer's fixed part: the median (of reps) CPU and wall time of a 16x16, 1 spp
+    render of the scene, after a warm-up render (Cycles: the scene's .blend loaded; texrender:
+    its program caches filled). tr and cy are measure_peer's render functions. With reps > 1
+    the renderers take turns, the order rotating with the repetition. Returns {config: {cpu,
+    wall, seconds}} (medians) with the samples under "samples"."""
+    configs = ["texrender-" + s for s in samplers] + ["cycles"]
+    cy(1, 1, None)
+    for s in samplers:
+        tr(s, 1, 1, "peer-warm-" + s.replace(":", "-"))
+    runs = {c: [] for c in configs}
+    for rep in range(reps):
+        k = rep % len(configs)
+        for c in configs[k:] + configs[:k]:
+            runs[c].append(cy(1, 1, None, [16, 16]) if c == "cycles" else
+                           tr(c.split("-", 1)[1], 1, 1, "peer-fixed", "16x16")[0])
+    fixed = {}
+    for c, fs in runs.items():
+        fixed[c] = {k: common.median([f[k] for f in fs]) for k in fs[0]}
+        fixed[c]["samples"] = fs
+    return fixed
+
+
 def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=None,
-                 overrides=None):
+                 overrides=None, fixed_only=0):
     """RMSE and HDR-FLIP against a converged reference as a function of spp and of frame time:
     texrender's default mode (interp, Embree on CPU) with its sampler and with the PCG sampler
     of before issue 26, and Cycles (bpy, .venv) on the same scene. Each renderer is measured
@@ -194,6 +217,11 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
                 return {"seconds": r["seconds"], "wall": r["seconds"],
                         "cpu": process_cpu(cyc.p.pid) - c0}
 
+            if fixed_only:  # --fixed-only N: the fixed parts alone, N repetitions
+                out["scenes"][scene_name] = {"fixed": fixed_parts(tr, cy, samplers, fixed_only)}
+                if checkpoint:
+                    checkpoint(out)
+                continue
             ref_paths = {"texrender": os.path.join(refs, "ref-%s-texrender-%s-%d.exr" % (
                              scene_name, cfg["size"], cfg["refSpp"])),
                          "cycles": os.path.join(refs, "ref-%s-cycles-%s-%d.exr" % (
@@ -206,15 +234,7 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
             ref = {"texrender": reference(ref_paths["texrender"], make_tr_ref),
                    "cycles": reference(ref_paths["cycles"], lambda: cy(
                        cfg["refSpp"], 1000, ref_paths["cycles"]))}
-            # Fixed parts: a 16x16, 1 spp render of the same scene (after a warm-up)
-            cy(1, 1, None)
-            cfix = [cy(1, 1, None, [16, 16]) for _ in range(3)]
-            fixed = {"cycles": {k: common.median([f[k] for f in cfix]) for k in cfix[0]}}
-            for s in samplers:  # warm kernel caches, then the fixed part
-                tr(s, 1, 1, "peer-warm-" + s.replace(":", "-"))
-                tfix = [tr(s, 1, 1, "peer-fixed", "16x16")[0] for _ in range(3)]
-                fixed["texrender-" + s] = {k: common.median([f[k] for f in tfix])
-                                           for k in tfix[0]}
+            fixed = fixed_parts(tr, cy, samplers)
             configs = ["texrender-" + s for s in samplers] + ["cycles"]
             points = []
             for spp in cfg["spp"]:
@@ -398,6 +418,9 @@ def main():
     ap.add_argument("--reps-at", help="repetitions by spp, SPP:N,... (e.g. 1:16,4:8): "
                     "overrides --reps at those spp")
     ap.add_argument("--scenes", help="comma-separated, of: " + ",".join(PEER_SCENES))
+    ap.add_argument("--fixed-only", type=int, default=0, metavar="N",
+                    help="measure only each renderer's fixed part (16x16, 1 spp), N "
+                    "repetitions in turns (no references, no sweep; bench/startup.md)")
     ap.add_argument("--json", default=os.path.join(common.ROOT, "bench", "results",
                                                    "accuracy_peer.json"))
     args = ap.parse_args()
@@ -414,8 +437,10 @@ def main():
                  "scenes": tuple(args.scenes.split(",")) if args.scenes else None}
     import time
     started = (time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime()), os.getloadavg())
+    if args.fixed_only and args.json == ap.get_default("json"):
+        save = lambda obj: None  # never over the sweep's results file unless asked to
     result = measure_peer(tools, args.quick, args.refs, tuple(args.samplers.split(",")), save,
-                          overrides)
+                          overrides, args.fixed_only)
     result["machine"] = common.machine()
     result["run"] = {"command": " ".join(sys.argv), "started": started[0],
                      "loadAtStart": started[1],
@@ -423,7 +448,10 @@ def main():
                      "loadAtEnd": os.getloadavg()}
     save(result)
     for name, s in result["scenes"].items():
-        for row in s["summary"]:
+        for c, f in s["fixed"].items():
+            print("%-10s fixed part %-16s CPU s median %.3f [%s]  wall s median %.3f" % (
+                name, c, f["cpu"], " ".join("%.2f" % x["cpu"] for x in f["samples"]), f["wall"]))
+        for row in s.get("summary", []):
             print("%-10s %-16s spp %4d  cpu %7.3f s (total %7.3f, wall %7.3f)  RMSE %.5f  "
                   "FLIP %s" % (name, row["renderer"], row["spp"], row["cpu"], row["cpuTotal"],
                                row["wallSeconds"], row["rmse"], common.fmt(row["flip"])))
