@@ -57,16 +57,20 @@ __kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAtt
       rt_frame(s.ns, &t, &b);
     }
     a.tangent = (float4)(normalize(t), 0.0f);
-    if (attrMask & (1u << TEXCC_ATTR_OBJECTPOS)) {
-      /* For bump's moved ObjectPos: the tangent frame through the inverse transform. */
-      float3 b = cross(s.ns, a.tangent.xyz);
-      a.objectTangent = (float4)(dot(mesh.worldToObject[0].xyz, a.tangent.xyz),
-                                 dot(mesh.worldToObject[1].xyz, a.tangent.xyz),
-                                 dot(mesh.worldToObject[2].xyz, a.tangent.xyz), 0.0f);
-      a.objectBitangent = (float4)(dot(mesh.worldToObject[0].xyz, b),
-                                   dot(mesh.worldToObject[1].xyz, b),
-                                   dot(mesh.worldToObject[2].xyz, b), 0.0f);
-    }
+  }
+  if ((attrMask & (1u << TEXCC_ATTR_OBJECTPOS)) && (attrMask & (1u << TEXCC_ATTR_GEOMNORMAL))) {
+    /* For bump's moved ObjectPos: its offset directions (texcc_device.h texcc_bump_frame, the
+     * same arithmetic on the geometric normal) through the inverse transform. */
+    float3 n = s.ng;
+    float3 t = normalize((n.x != n.y || n.x != n.z) ? (float3)(n.z - n.y, n.x - n.z, n.y - n.x)
+                                                    : (float3)(n.z - n.y, n.x + n.z, -n.y - n.x));
+    float3 b = cross(n, t);
+    a.objectTangent = (float4)(dot(mesh.worldToObject[0].xyz, t),
+                               dot(mesh.worldToObject[1].xyz, t),
+                               dot(mesh.worldToObject[2].xyz, t), 0.0f);
+    a.objectBitangent = (float4)(dot(mesh.worldToObject[0].xyz, b),
+                                 dot(mesh.worldToObject[1].xyz, b),
+                                 dot(mesh.worldToObject[2].xyz, b), 0.0f);
   }
   if (attrMask & (1u << TEXCC_ATTR_TEXCOORD0))
     a.uvAO.xy = s.uv;

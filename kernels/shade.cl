@@ -373,6 +373,10 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   }
   pr.bumped = bumped;
   float3 wo = -d;
+  /* A glossy leaf's normal lifted so that its mirror reflection stays above the surface, as
+   * Cycles' Glossy BSDF does (rt_valid_reflection_normal). */
+  if (leaf.type == RT_BSDF_GLOSSY)
+    s.ns = rt_valid_reflection_normal(s.ng, wo, s.ns);
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
   uint sunShare = canExtend ? rt_sun_share(lights, prm, s.ns) : 0u;
 

@@ -89,6 +89,31 @@ static inline float rt_bump_shadowing(float3 ns, float3 nb, float3 wi) {
   return rt_ggx_g1(cosI, a2);
 }
 
+/* The normal a glossy lobe uses, as Cycles' Glossy BSDF takes it (its bump map correction, on by
+ * default): where the mirror reflection of wo about n would leave the surface below a small
+ * height t = min(0.9 cos(wo, ng), 0.01) over the geometric normal ng, n is turned towards ng,
+ * in the plane of ng and n, just far enough that the reflection has height t. Without it a
+ * strongly bumped or smooth-shaded normal that faces away from the viewer makes the lobe
+ * black. n itself when n is ng or the reflection is high enough. */
+static inline float3 rt_valid_reflection_normal(float3 ng, float3 wo, float3 n) {
+  const float iz = dot(wo, ng);
+  const float t = fmin(0.9f * iz, 0.01f);
+  if (dot(ng, 2.0f * dot(n, wo) * n - wo) >= t || all(n == ng))
+    return n;
+  /* x: the unit part of n across ng; the new normal is sqrt(1 - z^2) x + z ng, and its
+   * reflection's height 2 (n'.wo) z - iz = t gives a quadratic in z^2. */
+  float3 x = n - dot(n, ng) * ng;
+  const float lx = length(x);
+  x = lx > 1e-7f ? x / lx : n;
+  const float ix = dot(wo, x);
+  const float a = ix * ix + iz * iz;
+  const float b = 2.0f * (a + iz * t);
+  const float c = (t + iz) * (t + iz);
+  const float root = sqrt(fmax(b * b - 4.0f * a * c, 0.0f));
+  const float z2 = 0.25f * (ix < 0.0f ? b + root : b - root) / a;
+  return sqrt(fmax(1.0f - z2, 0.0f)) * x + sqrt(fmax(z2, 0.0f)) * ng;
+}
+
 /* Samples wi for a leaf; returns the weight f*cos/pdf (0 when the sample is invalid). */
 static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, float3 n, float3 wo,
                              float u1, float u2, float3 *wi, float *pdf, int *delta) {

@@ -34,8 +34,9 @@ typedef struct TexccHitAttrs {
   TEXCC_F4 tangent;    /* xyz, unit (dP/du, or any vector orthogonal to the normal) */
   TEXCC_F4 viewDir;    /* xyz, unit, from the hit towards the viewer (-ray direction) */
   TEXCC_F4 uvAO;       /* xy = TexCoord0, z = AO (1 = unoccluded), w = unused */
-  /* xyz: tangent and cross(normal, tangent) through the object's inverse transform (its linear
-   * part), set with Tangent and ObjectPos: bump moves ObjectPos by them (texcc_device.h). */
+  /* xyz: bump's two offset directions, texcc_bump_frame's a and b of the geometric normal,
+   * through the object's inverse transform (its linear part), set with GeomNormal and
+   * ObjectPos: bump moves ObjectPos by them (texcc_device.h). */
   TEXCC_F4 objectTangent;
   TEXCC_F4 objectBitangent;
 } TexccHitAttrs;
@@ -47,11 +48,18 @@ typedef struct TexccSettings {
   int frame;          /* Frame */
   /* The camera's angular size of one pixel, radians: 2 tan(fov / 2) / width (the film's
    * pixel pitch at unit distance, Cycles' ray differential at the image centre). Bump's step
-   * (texcc_device.h texcc_bump_step) is 0.1 of it times the hit's distance; 0: no footprint
-   * (the step is the float-resolution floor). texrender sets it per render (Renderer.cpp
-   * textureSettings), so it follows the image size. */
+   * (texcc_device.h texcc_bump_step) is 0.1 of the ray's footprint, this times the hit's
+   * distance (less off the centre); 0: no footprint (the step is the float-resolution
+   * floor). texrender sets it per render (Renderer.cpp textureSettings), so it follows the
+   * image size. */
   float pixelAngle;
   int pad1;
+  /* The camera's unit view direction and the film's unit right and up axes: where a hit lies
+   * on the film, for bump's footprint off the image centre (texcc_bump_footprint). Zero: the
+   * centre's footprint everywhere. Set with pixelAngle. */
+  TEXCC_F4 cameraForward;
+  TEXCC_F4 cameraRight;
+  TEXCC_F4 cameraUp;
 } TexccSettings;
 
 /* One image bound to a sam2D: texels are linear float4 RGBA, row-major, row 0 at the top

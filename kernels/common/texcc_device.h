@@ -218,51 +218,77 @@ static inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->f
 static inline float3 texcc_setting_CameraPos(const TexccCtx *c) { return c->settings->cameraPos.xyz; }
 
 #if TEXCC_POSITION_OFFSET
-/* Bump (docs/graph.md "Bump"). The step of the moved evaluations follows the pixel footprint as
- * Cycles' ray differentials do: TEXCC_BUMP_FILTER_WIDTH (Cycles' Bump Filter Width, 0.1) of
- * the camera's angular pixel size (TexccSettings::pixelAngle) times the hit's distance from
- * the camera, and at least 1e-4 of the position's magnitude (float resolution). */
+/* Bump (docs/graph.md "Bump"), offset as Cycles 5.0 offsets a Bump node's height (its
+ * svm_node_set_bump and the height's dx/dy copies): the moved evaluations go
+ * TEXCC_BUMP_FILTER_WIDTH (the node's Filter Width, 0.1) of the ray's footprint along two fixed
+ * orthogonal directions in the plane of the geometric normal (texcc_bump_frame), not along the
+ * surface's tangent; the step is at least 1e-4 of the position's magnitude (float
+ * resolution). */
 #ifndef TEXCC_BUMP_FILTER_WIDTH
 #define TEXCC_BUMP_FILTER_WIDTH 0.1f
 #endif
+/* The ray's footprint at the hit, as Cycles' compact ray differential of a camera ray: the
+ * distance times the mean length of the unit ray direction's change over one pixel in x and
+ * in y, pixelAngle x 0.5 (sqrt(1 + y^2) + sqrt(1 + x^2)) / (1 + x^2 + y^2) at the film
+ * position (x, y) (tangents of the angles off the view direction) the hit projects to: 1 x
+ * pixelAngle at the image centre, 0.69 x at the corner of a 60-degree square view. A hit
+ * behind the camera (reached after a bounce), or settings without the camera's axes, takes
+ * the centre's value. Cycles' footprint after a bounce grows with the path's length; this one
+ * with the distance from the camera. */
+static inline float texcc_bump_footprint(const TexccCtx *c) {
+  const float3 v = c->hit.worldPos.xyz - c->settings->cameraPos.xyz;
+  const float z = dot(v, c->settings->cameraForward.xyz);
+  float f = 1.0f;
+  if (z > 0.0f) {
+    const float x = dot(v, c->settings->cameraRight.xyz) / z;
+    const float y = dot(v, c->settings->cameraUp.xyz) / z;
+    f = 0.5f * (sqrt(1.0f + y * y) + sqrt(1.0f + x * x)) / (1.0f + x * x + y * y);
+  }
+  return c->settings->pixelAngle * length(v) * f;
+}
 static inline float texcc_bump_step(const TexccCtx *c) {
-  const float3 p = c->hit.worldPos.xyz;
-  const float3 a = fabs(p);
-  return fmax(TEXCC_BUMP_FILTER_WIDTH * c->settings->pixelAngle *
-                  length(p - c->settings->cameraPos.xyz),
+  const float3 a = fabs(c->hit.worldPos.xyz);
+  return fmax(TEXCC_BUMP_FILTER_WIDTH * texcc_bump_footprint(c),
               1e-4f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
 }
-/* The unit tangent of the moved evaluations: Tangent made orthogonal to Normal (any
- * orthogonal vector if they are parallel); the bitangent is cross(Normal, tangent). */
-static inline float3 texcc_bump_tangent(const TexccCtx *c) {
-  const float3 n = c->hit.normal.xyz;
-  float3 t = c->hit.tangent.xyz - dot(c->hit.tangent.xyz, n) * n;
-  if (!(length(t) > 1e-6f))
-    t = fabs(n.x) > 0.5f ? (float3)(-n.y, n.x, 0.0f) : (float3)(0.0f, -n.z, n.y);
-  return normalize(t);
+/* The offset directions: Cycles' orthonormal pair of the geometric normal n (facing the ray),
+ * a = normalize((1, 1, 1) x n) ((-1, 1, 1) x n when n's components are equal) and b = n x a;
+ * the shading normal where no geometric normal is filled. hit_attributes.cl's objectTangent and
+ * objectBitangent are the same pair through the object's inverse transform. */
+static inline float3 texcc_bump_frame(const TexccCtx *c, float3 *b) {
+  float3 n = c->hit.geomNormal.xyz;
+  if (!(dot(n, n) > 0.25f))
+    n = c->hit.normal.xyz;
+  const float3 a = normalize((n.x != n.y || n.x != n.z)
+                                 ? (float3)(n.z - n.y, n.x - n.z, n.y - n.x)
+                                 : (float3)(n.z - n.y, n.x + n.z, -n.y - n.x));
+  *b = cross(n, a);
+  return a;
 }
-/* Before a node runs: k = 0 the hit's position, 1 moved by one step along the tangent, 2 along
- * the bitangent (in object space by the hit's objectTangent/objectBitangent, the same vectors
- * through the object's inverse transform). The context is the kernel's own (non-const) local. */
+/* Before a node runs: k = 0 the hit's position, 1 moved by one step along the frame's a, 2
+ * along b (in object space by the hit's objectTangent/objectBitangent, the same vectors through
+ * the object's inverse transform). The context is the kernel's own (non-const) local. */
 static inline void texcc_position_offset(const TexccCtx *c, int k) {
   TexccCtx *m = (TexccCtx *)c;
   m->worldOffset = m->objectOffset = (float3)(0.0f);
   if (k == 0)
     return;
   const float e = texcc_bump_step(c);
-  const float3 t = texcc_bump_tangent(c);
-  m->worldOffset = e * (k == 1 ? t : cross(c->hit.normal.xyz, t));
+  float3 b;
+  const float3 a = texcc_bump_frame(c, &b);
+  m->worldOffset = e * (k == 1 ? a : b);
   m->objectOffset = e * (k == 1 ? c->hit.objectTangent.xyz : c->hit.objectBitangent.xyz);
 }
-/* The bump node: the height h at the hit, hx and hy one step along the tangent and bitangent.
- * The perturbed normal from the height's surface gradient (Mikkelsen 2010, the method of
- * Cycles' Bump node): the gradient over the step's parallelogram, scaled by distance, tilts
- * the input normal; strength (0..1) blends towards it. */
+/* The bump node: the height h at the hit, hx and hy one step along a and b. The perturbed
+ * normal from the height's surface gradient (Mikkelsen 2010, the method of Cycles' Bump node):
+ * the gradient over the step's parallelogram, scaled by distance, tilts the input normal;
+ * strength (0..1) blends towards it. */
 static inline float3 texcc_bump(const TexccCtx *c, float h, float strength, float distance,
                                 float3 normal, float hx, float hy) {
   const float e = texcc_bump_step(c);
-  const float3 t = texcc_bump_tangent(c);
-  const float3 dx = e * t, dy = e * cross(c->hit.normal.xyz, t);
+  float3 b;
+  const float3 a = texcc_bump_frame(c, &b);
+  const float3 dx = e * a, dy = e * b;
   const float3 rx = cross(dy, normal), ry = cross(normal, dx);
   const float det = dot(dx, rx);
   const float3 grad = (hx - h) * rx + (hy - h) * ry;

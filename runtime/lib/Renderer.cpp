@@ -58,7 +58,8 @@ double now() {
 /// The texture kernels' settings (readSetting, and bump's footprint) for an image of
 /// Width x Height pixels: the one place they are filled. pixelAngle is the film's pixel pitch
 /// at unit distance, 2 tan(fov / 2) / width along the fov's axis (makeCamera's right vector
-/// spans half the film's width), so the bump step follows the image size and the fov.
+/// spans half the film's width), so the bump step follows the image size and the fov; the
+/// camera's unit axes place a hit on the film (the step shrinks off the centre).
 TexccSettings textureSettings(const Scene &S, const RenderSettings &R) {
   const RtCamera Cam = makeCamera(S.Cam, R.Width, R.Height);
   TexccSettings Set{};
@@ -67,6 +68,14 @@ TexccSettings textureSettings(const Scene &S, const RenderSettings &R) {
   const float Half = std::sqrt(Cam.right.s[0] * Cam.right.s[0] + Cam.right.s[1] * Cam.right.s[1] +
                                Cam.right.s[2] * Cam.right.s[2]);
   Set.pixelAngle = 2.0f * Half / float(std::max(R.Width, 1));
+  // The camera's unit axes: where a hit lies on the film (the footprint off the centre).
+  const auto Unit = [](const cl_float4 &V) {
+    const float L = std::sqrt(V.s[0] * V.s[0] + V.s[1] * V.s[1] + V.s[2] * V.s[2]);
+    return L > 0.0f ? cl_float4{{V.s[0] / L, V.s[1] / L, V.s[2] / L, 0.0f}} : cl_float4{};
+  };
+  Set.cameraForward = Unit(Cam.forward);
+  Set.cameraRight = Unit(Cam.right);
+  Set.cameraUp = Unit(Cam.up);
   return Set;
 }
 

@@ -7,7 +7,7 @@
  *   add3(a, b, c)    float   a + b + c
  *   scaled(h, k)     float   h * k
  *   hitNormal()      float3  the hit's shading normal (to compare the bumped normal with)
- *   hitTangent()     float3  the hit's tangent */
+ *   hitGeomNormal()  float3  the hit's geometric normal (bump's offsets lie across it) */
 float linearX(float a) { return a * readAttr("WorldPos").x; }
 
 float objectWaves(float f) {
@@ -23,4 +23,4 @@ float add3(float a, float b, float c) { return a + b + c; }
 
 float3 hitNormal() { return readAttr("Normal"); }
 
-float3 hitTangent() { return readAttr("Tangent"); }
+float3 hitGeomNormal() { return readAttr("GeomNormal"); }

@@ -495,24 +495,36 @@ inline float3 texcc_setting_CameraPos(const TexccCtx *c) {
   return texcc_f3(c->settings->cameraPos);
 }
 
-// Bump: as texcc_device.h's texcc_bump_step, texcc_bump_tangent, texcc_position_offset and
-// texcc_bump (the same operations in the same order).
+// Bump: as texcc_device.h's texcc_bump_footprint, texcc_bump_step, texcc_bump_frame,
+// texcc_position_offset and texcc_bump (the same operations in the same order).
 #ifndef TEXCC_BUMP_FILTER_WIDTH
 #define TEXCC_BUMP_FILTER_WIDTH 0.1f
 #endif
+inline float texcc_bump_footprint(const TexccCtx *c) {
+  const float3 v = texcc_f3(c->hit.worldPos) - texcc_f3(c->settings->cameraPos);
+  const float z = dot(v, texcc_f3(c->settings->cameraForward));
+  float f = 1.0f;
+  if (z > 0.0f) {
+    const float x = dot(v, texcc_f3(c->settings->cameraRight)) / z;
+    const float y = dot(v, texcc_f3(c->settings->cameraUp)) / z;
+    f = 0.5f * (sqrt(1.0f + y * y) + sqrt(1.0f + x * x)) / (1.0f + x * x + y * y);
+  }
+  return c->settings->pixelAngle * length(v) * f;
+}
 inline float texcc_bump_step(const TexccCtx *c) {
-  const float3 p = texcc_f3(c->hit.worldPos);
-  const float3 a = fabs(p);
-  return fmax(TEXCC_BUMP_FILTER_WIDTH * c->settings->pixelAngle *
-                  length(p - texcc_f3(c->settings->cameraPos)),
+  const float3 a = fabs(texcc_f3(c->hit.worldPos));
+  return fmax(TEXCC_BUMP_FILTER_WIDTH * texcc_bump_footprint(c),
               1e-4f * (1.0f + fmax(a.x, fmax(a.y, a.z))));
 }
-inline float3 texcc_bump_tangent(const TexccCtx *c) {
-  const float3 n = texcc_f3(c->hit.normal), t0 = texcc_f3(c->hit.tangent);
-  float3 t = t0 - dot(t0, n) * n;
-  if (!(length(t) > 1e-6f))
-    t = fabs(n.x) > 0.5f ? float3(-n.y, n.x, 0.0f) : float3(0.0f, -n.z, n.y);
-  return normalize(t);
+inline float3 texcc_bump_frame(const TexccCtx *c, float3 *b) {
+  float3 n = texcc_f3(c->hit.geomNormal);
+  if (!(dot(n, n) > 0.25f))
+    n = texcc_f3(c->hit.normal);
+  const float3 a = normalize((n.x != n.y || n.x != n.z)
+                                 ? float3(n.z - n.y, n.x - n.z, n.y - n.x)
+                                 : float3(n.z - n.y, n.x + n.z, -n.y - n.x));
+  *b = cross(n, a);
+  return a;
 }
 inline void texcc_position_offset(const TexccCtx *c, int k) {
   TexccCtx *m = const_cast<TexccCtx *>(c);
@@ -520,16 +532,18 @@ inline void texcc_position_offset(const TexccCtx *c, int k) {
   if (k == 0)
     return;
   const float e = texcc_bump_step(c);
-  const float3 t = texcc_bump_tangent(c);
-  m->worldOffset = e * (k == 1 ? t : cross(texcc_f3(c->hit.normal), t));
+  float3 b;
+  const float3 a = texcc_bump_frame(c, &b);
+  m->worldOffset = e * (k == 1 ? a : b);
   m->objectOffset =
       e * (k == 1 ? texcc_f3(c->hit.objectTangent) : texcc_f3(c->hit.objectBitangent));
 }
 inline float3 texcc_bump(const TexccCtx *c, float h, float strength, float distance,
                          float3 normal, float hx, float hy) {
   const float e = texcc_bump_step(c);
-  const float3 t = texcc_bump_tangent(c);
-  const float3 dx = e * t, dy = e * cross(texcc_f3(c->hit.normal), t);
+  float3 b;
+  const float3 a = texcc_bump_frame(c, &b);
+  const float3 dx = e * a, dy = e * b;
   const float3 rx = cross(dy, normal), ry = cross(normal, dx);
   const float det = dot(dx, rx);
   const float3 grad = (hx - h) * rx + (hy - h) * ry;

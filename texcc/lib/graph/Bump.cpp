@@ -155,7 +155,7 @@ private:
 
 SignatureMap withBuiltinSignatures(const SignatureMap &Sigs) {
   SignatureMap All = Sigs;
-  const std::vector<std::string> BumpReads = {"Normal", "ObjectPos", "Tangent", "WorldPos"};
+  const std::vector<std::string> BumpReads = {"GeomNormal", "Normal", "ObjectPos", "WorldPos"};
   std::vector<Param> UserParams = {param("height", BaseType::Float),
                                    param("strength", BaseType::Float),
                                    param("distance", BaseType::Float),

@@ -103,6 +103,11 @@ cl_float4 f4(float X, float Y, float Z, float W) {
   return V;
 }
 
+cl_float4 unitVector(const cl_float4 &V) {
+  const float L = std::sqrt(V.s[0] * V.s[0] + V.s[1] * V.s[1] + V.s[2] * V.s[2]);
+  return f4(V.s[0] / L, V.s[1] / L, V.s[2] / L, 0.0f);
+}
+
 cl_float4 unitVector(Rng &R) {
   for (;;) {
     float X = R.uniform(-1, 1), Y = R.uniform(-1, 1), Z = R.uniform(-1, 1);
@@ -117,7 +122,11 @@ TexccHitAttrs randomHit(Rng &R) {
   H.worldPos = f4(R.uniform(-3, 3), R.uniform(-3, 3), R.uniform(-3, 3), 1.0f);
   H.objectPos = f4(R.uniform(-1, 1), R.uniform(-1, 1), R.uniform(-1, 1), 1.0f);
   H.normal = unitVector(R);
-  H.geomNormal = unitVector(R);
+  // A geometric normal within 37 degrees of the shading normal, as on a mesh (bump's offsets
+  // lie across it).
+  const cl_float4 Off = unitVector(R);
+  H.geomNormal = unitVector(f4(H.normal.s[0] + 0.6f * Off.s[0], H.normal.s[1] + 0.6f * Off.s[1],
+                               H.normal.s[2] + 0.6f * Off.s[2], 0.0f));
   H.tangent = unitVector(R);
   H.viewDir = unitVector(R);
   H.uvAO = f4(R.uniform(-0.5f, 1.5f), R.uniform(-0.5f, 1.5f), R.uniform(0, 1), 0.0f);
