@@ -1,23 +1,19 @@
-// OBJ loading through tinyobjloader, with gzip support (zlib) and generated normals.
+// OBJ loading: one pass over the text (plain or gzip-compressed, through zlib), triangulated,
+// with generated normals where the file gives none.
 #include "texrender/Error.h"
 #include "texrender/Scene.h"
 #include "texcc/OutOfMemory.h"
 #include "texcc/Support/File.h"
 #include "texcc/Support/Numbers.h"
 
-#include <tiny_obj_loader.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <optional>
-#include <sstream>
 
 namespace texrender {
 
@@ -57,24 +53,6 @@ std::string readMaybeGzipped(const std::string &Path) {
   return Out;
 }
 
-/// Blanks the `vw` (skin weight) lines, keeping their line breaks so that tinyobjloader's line
-/// numbers stay right. They are a tinyobjloader extension that texrender never reads, and its
-/// parser converts their joint ids from float to int unchecked: "vw 0 1e38 1" is undefined
-/// behaviour inside it (found by fuzz-obj). Lines end at '\n' or '\r', as tinyobjloader's do.
-void blankSkinWeightLines(std::string &Text) {
-  size_t Begin = 0;
-  while (Begin < Text.size()) {
-    size_t End = Text.find_first_of("\r\n", Begin);
-    if (End == std::string::npos)
-      End = Text.size();
-    size_t First = Text.find_first_not_of(" \t", Begin);
-    if (First != std::string::npos && First + 2 < End && Text.compare(First, 2, "vw") == 0 &&
-        (Text[First + 2] == ' ' || Text[First + 2] == '\t'))
-      Text.replace(Begin, End - Begin, End - Begin, ' ');
-    Begin = End + 1;
-  }
-}
-
 Vec3 sub(const Vec3 &A, const Vec3 &B) { return {A[0] - B[0], A[1] - B[1], A[2] - B[2]}; }
 Vec3 cross(const Vec3 &A, const Vec3 &B) {
   return {A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
@@ -85,49 +63,14 @@ Vec3 normalized(const Vec3 &V) {
   return L > 0 ? Vec3{V[0] / L, V[1] / L, V[2] / L} : Vec3{0, 0, 0};
 }
 
-/// tinyobjloader reads a coordinate it cannot parse ("nan", "x") as 0 and one too large for a
-/// float as infinity, silently. Every number of the v, vn and vt lines must be a finite float.
-void checkVertexNumbers(const std::string &Path, const std::string &Text) {
-  size_t LineNo = 0;
-  for (size_t Pos = 0; Pos < Text.size();) {
-    size_t End = Text.find('\n', Pos);
-    if (End == std::string::npos)
-      End = Text.size();
-    ++LineNo;
-    const char *P = Text.c_str() + Pos, *Stop = Text.c_str() + End;
-    while (P < Stop && (*P == ' ' || *P == '\t'))
-      ++P;
-    bool Vertex = P + 1 < Stop && P[0] == 'v' &&
-                  (P[1] == ' ' || P[1] == '\t' ||
-                   ((P[1] == 'n' || P[1] == 't') && P + 2 < Stop && (P[2] == ' ' || P[2] == '\t')));
-    for (P += Vertex ? (P[1] == ' ' || P[1] == '\t' ? 1 : 2) : 0; Vertex && P < Stop;) {
-      while (P < Stop && (*P == ' ' || *P == '\t' || *P == '\r'))
-        ++P;
-      if (P >= Stop || *P == '#')
-        break;
-      const char *Token = P;
-      while (P < Stop && *P != ' ' && *P != '\t' && *P != '\r')
-        ++P;
-      std::string Word(Token, P);
-      char *NumEnd = nullptr;
-      double D = std::strtod(Word.c_str(), &NumEnd);
-      if (NumEnd != Word.c_str() + Word.size() || !texcc::fitsInFloat(D))
-        throw Error(Path + ":" + std::to_string(LineNo) + ": invalid OBJ: '" + Word +
-                    "' is not a finite number");
-    }
-    Pos = End + 1;
-  }
-}
-
 std::string formatVec3(const Vec3 &V) {
   char Buf[96];
   std::snprintf(Buf, sizeof Buf, "%g, %g, %g", V[0], V[1], V[2]);
   return Buf;
 }
 
-/// Whether a face corner gives an optional index (tinyobjloader: -1 when it does not) into an
-/// array of Tuple floats each; an index to a missing element is an error (it used to be skipped
-/// silently, unlike a bad vertex index).
+/// Whether a face corner gives an optional index (-1 when it does not) into an array of Tuple
+/// floats each; an index to a missing element is an error.
 bool hasIndex(int Index, size_t Tuple, size_t Size, const std::string &Path, const char *What) {
   if (Index == -1)
     return false;
@@ -143,25 +86,23 @@ struct Face {
   bool FileNormals = true;
 };
 
-Face readFace(const tinyobj::attrib_t &A, const tinyobj::index_t *Idx, const std::string &Path) {
+Face readFace(const ObjText &A, const ObjCorner *Idx, const std::string &Path) {
   Face Fc;
   for (int C = 0; C < 3; ++C) {
-    const tinyobj::index_t &I = Idx[C];
-    if (I.vertex_index < 0 || 3 * size_t(I.vertex_index) + 2 >= A.vertices.size())
+    const ObjCorner &I = Idx[C];
+    if (I.V < 0 || 3 * size_t(I.V) + 2 >= A.Positions.size())
       throw Error(Path + ": invalid OBJ: vertex index out of range");
-    Fc.P[C] = {A.vertices[3 * I.vertex_index], A.vertices[3 * I.vertex_index + 1],
-               A.vertices[3 * I.vertex_index + 2]};
+    Fc.P[C] = {A.Positions[3 * I.V], A.Positions[3 * I.V + 1], A.Positions[3 * I.V + 2]};
     if (!std::isfinite(Fc.P[C][0]) || !std::isfinite(Fc.P[C][1]) || !std::isfinite(Fc.P[C][2]))
-      throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.vertex_index + 1) +
+      throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.V + 1) +
                   " has a non-finite coordinate (" + formatVec3(Fc.P[C]) + ")");
-    if (hasIndex(I.normal_index, 3, A.normals.size(), Path, "normal"))
-      Fc.N[C] = normalized({A.normals[3 * I.normal_index], A.normals[3 * I.normal_index + 1],
-                            A.normals[3 * I.normal_index + 2]});
+    if (hasIndex(I.N, 3, A.Normals.size(), Path, "normal"))
+      Fc.N[C] = normalized({A.Normals[3 * I.N], A.Normals[3 * I.N + 1], A.Normals[3 * I.N + 2]});
     else
       Fc.FileNormals = false;
     Fc.UV[C] = {0, 0};
-    if (hasIndex(I.texcoord_index, 2, A.texcoords.size(), Path, "texture coordinate"))
-      Fc.UV[C] = {A.texcoords[2 * I.texcoord_index], A.texcoords[2 * I.texcoord_index + 1]};
+    if (hasIndex(I.T, 2, A.TexCoords.size(), Path, "texture coordinate"))
+      Fc.UV[C] = {A.TexCoords[2 * I.T], A.TexCoords[2 * I.T + 1]};
   }
   return Fc;
 }
@@ -214,188 +155,266 @@ void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
   }
 }
 
-// --- The fast reader --------------------------------------------------------------------------
+// --- The reader ------------------------------------------------------------------------------
 //
-// Most OBJ files (every one texrender's scripts and Blender exporter write) use a small part of
-// the format: v/vn/vt lines with plain decimal numbers, triangles, comments, g/o/s/usemtl/mtllib.
-// The fast reader parses exactly that part in one pass over the text; on anything else (another
-// statement, a polygon, an unusual number or index, a stray '\r', or any input the full reader
-// would reject) it declines, and the full reader (tinyobjloader with texrender's checks before
-// it) reads the file as before. Where it accepts, it gives what tinyobjloader gives, bit for bit:
-// the same vertex arrays (numbers converted with tinyobjloader's own arithmetic, which is not
-// correctly rounded: a correctly rounded conversion would move some coordinates by an ulp and
-// change images) and the same face indices (its index rules), so the mesh built from them is
-// the same (testsuite: ObjFast gtests compare the two on every construct).
+// Lines end at '\n', "\r\n" or a lone '\r'; blanks are spaces and tabs. Read: v, vn and vt (every
+// number a finite float; the first three, three and two kept, missing ones 0; a '#' ends the
+// numbers), and f (corners v, v/t, v//n or v/t/n; a negative index counts back from the elements
+// read so far; faces of fewer than three corners are skipped, quads split along the shorter
+// diagonal, larger polygons fanned from their first corner). Every other statement (comments,
+// g, o, s, usemtl, mtllib, l, p, vp, curves, tinyobjloader's vw ...) is ignored. Numbers are
+// converted as tinyobjloader, the reader before this one, converts them (digit by digit in
+// double, then 5^e and 2^e: not correctly rounded) and quads split by its rule, so that meshes
+// (and images) stay the same bit for bit; runtime/unittests/ObjFastTest.cpp checks this
+// against tinyobjloader.
 
 bool isBlank(char C) { return C == ' ' || C == '\t'; }
 bool isDigit(char C) { return C >= '0' && C <= '9'; }
 
-/// One number of a v, vn or vt line, [P, End) the line's rest; on success *Out is the float
-/// tinyobjloader computes for it and P is past it. Accepted: sign? (digits ('.' digits*)? |
-/// '.' digits) ([eE] sign? digits{1,3})?, whose value (and so strtod's) is a finite float.
-bool fastNumber(const char *&P, const char *End, float &Out) {
+/// One token [P, End) as a number, or false: sign? (digits ('.' digits*)? | '.' digits)
+/// ([eE] sign? digits)?, all of the token, whose value is a finite float.
+bool parseNumber(const char *P, const char *End, float &Out) {
   static const double Tenths[] = {1.0, 0.1, 0.01, 0.001, 0.0001, 0.00001, 0.000001, 0.0000001};
-  const char *Q = P;
   bool Negative = false;
-  if (Q < End && (*Q == '+' || *Q == '-'))
-    Negative = *Q++ == '-';
+  if (P < End && (*P == '+' || *P == '-'))
+    Negative = *P++ == '-';
   double Mantissa = 0.0;
   bool AnyDigit = false;
-  while (Q < End && isDigit(*Q)) {
+  while (P < End && isDigit(*P)) {
     Mantissa *= 10;
-    Mantissa += static_cast<int>(*Q++ - '0');
+    Mantissa += static_cast<int>(*P++ - '0');
     AnyDigit = true;
   }
-  if (Q < End && *Q == '.') {
-    ++Q;
-    for (int Read = 1; Q < End && isDigit(*Q); ++Read, ++Q) {
-      Mantissa += static_cast<int>(*Q - '0') * (Read < 8 ? Tenths[Read] : std::pow(10.0, -Read));
+  if (P < End && *P == '.') {
+    ++P;
+    for (int Read = 1; P < End && isDigit(*P); ++Read, ++P) {
+      Mantissa += static_cast<int>(*P - '0') * (Read < 8 ? Tenths[Read] : std::pow(10.0, -Read));
       AnyDigit = true;
     }
   }
   if (!AnyDigit)
     return false;
   int Exponent = 0;
-  if (Q < End && (*Q == 'e' || *Q == 'E')) {
-    ++Q;
+  if (P < End && (*P == 'e' || *P == 'E')) {
+    ++P;
     bool NegativeExp = false;
-    if (Q < End && (*Q == '+' || *Q == '-'))
-      NegativeExp = *Q++ == '-';
-    int Digits = 0;
-    for (; Q < End && isDigit(*Q); ++Q, ++Digits)
-      Exponent = 10 * Exponent + (*Q - '0');
-    if (Digits == 0 || Digits > 3)
+    if (P < End && (*P == '+' || *P == '-'))
+      NegativeExp = *P++ == '-';
+    if (P == End || !isDigit(*P))
       return false;
+    for (; P < End && isDigit(*P); ++P)
+      Exponent = std::min(10 * Exponent + (*P - '0'), 100000); // far past any float
     Exponent = NegativeExp ? -Exponent : Exponent;
   }
-  if (Q < End && !isBlank(*Q))
-    return false; // the token goes on ("1.5x", "1e5.5", "nan", a '\r' or NUL ...)
+  if (P != End)
+    return false;
   double V = (Negative ? -1 : 1) *
              (Exponent ? std::ldexp(Mantissa * std::pow(5.0, Exponent), Exponent) : Mantissa);
-  if (!(std::fabs(V) < 1e38))
-    return false; // near or past FLT_MAX: the full reader's check decides
+  if (!texcc::fitsInFloat(V)) // also NaN (0e999: 0 * inf)
+    return false;
   Out = static_cast<float>(V);
-  P = Q;
   return true;
 }
 
-/// Count numbers (Count..MaxCount) separated by blanks up to the line's end, appended to Out.
-bool fastNumbers(const char *P, const char *End, size_t Count, size_t MaxCount,
-                 std::vector<float> &Out) {
-  for (size_t I = 0;; ++I) {
-    while (P < End && isBlank(*P))
-      ++P;
-    if (P == End)
-      return I >= Count;
-    float F;
-    if (I == MaxCount || !fastNumber(P, End, F))
-      return false;
-    if (I < Count)
-      Out.push_back(F);
-  }
-}
-
-/// One OBJ index (-?[1-9 digits]{1,9}, not 0) made zero-based as tinyobjloader does: a
-/// negative one counts back from the N elements read so far.
-bool fastIndex(const char *&P, const char *End, int N, int &Out) {
+/// One index of a corner, [P, End) its digits ([+-]?digits), zero-based as OBJ defines it (a
+/// negative one counts back from the N elements read so far); false when it is not one or 0.
+bool parseIndex(const char *P, const char *End, int N, int &Out) {
   bool Negative = P < End && *P == '-';
-  P += Negative;
-  int V = 0, Digits = 0;
-  for (; P < End && isDigit(*P) && Digits < 9; ++P, ++Digits)
+  if (P < End && (*P == '-' || *P == '+'))
+    ++P;
+  if (P == End || End - P > 9)
+    return false;
+  int V = 0;
+  for (; P < End; ++P) {
+    if (!isDigit(*P))
+      return false;
     V = 10 * V + (*P - '0');
-  if (Digits == 0 || (P < End && isDigit(*P)) || V == 0)
-    return false; // index 0 is an error the full reader reports with its line
+  }
+  if (V == 0)
+    return false;
   Out = Negative ? N - V : V - 1;
   return true;
 }
 
-/// A face line's corners (exactly three: v, v/t, v//n or v/t/n each), appended to Idx.
-bool fastFace(const char *P, const char *End, const tinyobj::attrib_t &A,
-              std::vector<tinyobj::index_t> &Idx) {
-  const int NV = int(A.vertices.size() / 3), NN = int(A.normals.size() / 3),
-            NT = int(A.texcoords.size() / 2);
-  for (int C = 0;; ++C) {
-    while (P < End && isBlank(*P))
-      ++P;
-    if (P == End)
-      return C == 3;
-    if (C == 3)
-      return false; // a polygon: tinyobjloader's triangulation, in the full reader
-    tinyobj::index_t I;
-    I.vertex_index = I.normal_index = I.texcoord_index = -1;
-    if (!fastIndex(P, End, NV, I.vertex_index))
-      return false;
-    if (P < End && *P == '/') {
-      ++P;
-      if (P < End && *P != '/' && !fastIndex(P, End, NT, I.texcoord_index))
-        return false;
-      if (P < End && *P == '/') {
-        ++P;
-        if (!fastIndex(P, End, NN, I.normal_index))
-          return false;
-      } else if (I.texcoord_index == -1) {
-        return false; // "v/" with nothing after
-      }
-    }
-    if (P < End && !isBlank(*P))
-      return false;
-    Idx.push_back(I);
-  }
-}
-
-bool startsWord(const char *P, const char *End, const char *Word) {
-  size_t N = std::strlen(Word);
-  return size_t(End - P) >= N && std::memcmp(P, Word, N) == 0 && (P + N == End || isBlank(P[N]));
-}
-
-/// The fast reader over the whole text; false: declined (the full reader reads it).
-bool readFast(const std::string &Text, tinyobj::attrib_t &A, std::vector<tinyobj::index_t> &Idx) {
-  const char *P = Text.data(), *TextEnd = P + Text.size();
-  // About 30 bytes a line: reserving from the size saves most reallocations of big files.
-  A.vertices.reserve(Text.size() / 32), Idx.reserve(Text.size() / 32);
-  while (P < TextEnd) {
-    const char *Eol = static_cast<const char *>(std::memchr(P, '\n', size_t(TextEnd - P)));
-    if (!Eol)
-      Eol = TextEnd;
-    const char *End = Eol > P && Eol[-1] == '\r' ? Eol - 1 : Eol;
-    const char *Next = Eol == TextEnd ? TextEnd : Eol + 1;
-    while (P < End && isBlank(*P))
-      ++P;
-    bool Ok = true;
-    if (P == End) {
-      // blank line
-    } else if (*P == 'v' && End - P > 1 && isBlank(P[1])) {
-      Ok = fastNumbers(P + 2, End, 3, 3, A.vertices);
-    } else if (*P == 'v' && End - P > 2 && P[1] == 'n' && isBlank(P[2])) {
-      Ok = fastNumbers(P + 3, End, 3, 3, A.normals);
-    } else if (*P == 'v' && End - P > 2 && P[1] == 't' && isBlank(P[2])) {
-      Ok = fastNumbers(P + 3, End, 2, 3, A.texcoords); // a third (w) is read and dropped
-    } else if (*P == 'f' && End - P > 1 && isBlank(P[1])) {
-      Ok = fastFace(P + 2, End, A, Idx);
-    } else if (*P == '#' || startsWord(P, End, "g") || startsWord(P, End, "o") ||
-               startsWord(P, End, "s") || startsWord(P, End, "usemtl") ||
-               startsWord(P, End, "mtllib")) {
-      // Nothing the mesh uses; a '\r' or NUL inside would end or cut the line differently.
-      Ok = !std::memchr(P, '\r', size_t(End - P)) && !std::memchr(P, '\0', size_t(End - P));
+/// A token for a message: control bytes (a NUL, a lone CR ...) as \xNN.
+std::string printable(const char *P, const char *End) {
+  std::string Out;
+  for (; P < End; ++P) {
+    if (static_cast<unsigned char>(*P) < 0x20 || *P == 0x7f) {
+      char Buf[8];
+      std::snprintf(Buf, sizeof Buf, "\\x%02x", static_cast<unsigned char>(*P));
+      Out += Buf;
     } else {
-      Ok = false;
+      Out += *P;
     }
-    if (!Ok)
-      return false;
+  }
+  return Out;
+}
+
+struct Reader {
+  const std::string &Path;
+  ObjText &Out;
+  size_t Line = 0;
+  std::vector<ObjCorner> Poly;
+  std::vector<size_t> Quads; // where in Out.Corners each quad's two triangles start
+
+  [[noreturn]] void fail(const std::string &What) const {
+    throw Error(Path + ":" + std::to_string(Line) + ": invalid OBJ: " + What);
+  }
+
+  /// The numbers of a v, vn or vt line: the first Keep appended (0 for missing ones).
+  void numbers(const char *P, const char *End, size_t Keep, std::vector<float> &To) {
+    size_t Count = 0;
+    while (true) {
+      while (P < End && isBlank(*P))
+        ++P;
+      if (P == End || *P == '#')
+        break;
+      const char *Token = P;
+      while (P < End && !isBlank(*P))
+        ++P;
+      float F;
+      if (!parseNumber(Token, P, F))
+        fail("'" + printable(Token, P) + "' is not a finite number");
+      if (Count++ < Keep)
+        To.push_back(F);
+    }
+    for (; Count < Keep; ++Count)
+      To.push_back(0.0f);
+  }
+
+  void face(const char *P, const char *End) {
+    Poly.clear();
+    const int NV = int(Out.Positions.size() / 3), NN = int(Out.Normals.size() / 3),
+              NT = int(Out.TexCoords.size() / 2);
+    while (true) {
+      while (P < End && isBlank(*P))
+        ++P;
+      if (P == End)
+        break;
+      const char *Token = P;
+      while (P < End && !isBlank(*P))
+        ++P;
+      const char *S1 = static_cast<const char *>(std::memchr(Token, '/', size_t(P - Token)));
+      const char *S2 =
+          S1 ? static_cast<const char *>(std::memchr(S1 + 1, '/', size_t(P - S1 - 1))) : nullptr;
+      ObjCorner C;
+      bool Ok = parseIndex(Token, S1 ? S1 : P, NV, C.V);
+      if (Ok && S1 && (S2 ? S2 > S1 + 1 : true))
+        Ok = parseIndex(S1 + 1, S2 ? S2 : P, NT, C.T); // v/t or v/t/n
+      if (Ok && S2)
+        Ok = parseIndex(S2 + 1, P, NN, C.N);
+      if (!Ok)
+        fail("face corner '" + printable(Token, P) +
+             "' is not v, v/t, v//n or v/t/n with non-zero indices");
+      Poly.push_back(C);
+    }
+    if (Poly.size() < 3)
+      return; // no area: skipped
+    if (Poly.size() == 4)
+      Quads.push_back(Out.Corners.size()); // split once every vertex is known
+    if (Poly.size() == 4) {
+      for (int K : {0, 1, 2, 0, 2, 3})
+        Out.Corners.push_back(Poly[size_t(K)]);
+      return;
+    }
+    for (size_t K = 1; K + 1 < Poly.size(); ++K) {
+      Out.Corners.push_back(Poly[0]);
+      Out.Corners.push_back(Poly[K]);
+      Out.Corners.push_back(Poly[K + 1]);
+    }
+  }
+
+  /// A quad [0, 1, 2, 3] becomes [0, 1, 2] [0, 2, 3] when the diagonal 0-2 is the shorter, else
+  /// [0, 1, 3] [1, 2, 3] (tinyobjloader's rule, its float arithmetic); a quad with a vertex out
+  /// of range is left for readFace's error.
+  void splitQuads() {
+    const std::vector<float> &V = Out.Positions;
+    for (size_t At : Quads) {
+      ObjCorner Q[4] = {Out.Corners[At], Out.Corners[At + 1], Out.Corners[At + 2],
+                        Out.Corners[At + 5]};
+      bool InRange = true;
+      for (const ObjCorner &C : Q)
+        InRange &= C.V >= 0 && 3 * size_t(C.V) + 2 < V.size();
+      if (!InRange)
+        continue;
+      const float *P0 = &V[3 * size_t(Q[0].V)], *P1 = &V[3 * size_t(Q[1].V)],
+                  *P2 = &V[3 * size_t(Q[2].V)], *P3 = &V[3 * size_t(Q[3].V)];
+      float E02x = P2[0] - P0[0], E02y = P2[1] - P0[1], E02z = P2[2] - P0[2];
+      float E13x = P3[0] - P1[0], E13y = P3[1] - P1[1], E13z = P3[2] - P1[2];
+      float Sqr02 = E02x * E02x + E02y * E02y + E02z * E02z;
+      float Sqr13 = E13x * E13x + E13y * E13y + E13z * E13z;
+      if (Sqr02 < Sqr13)
+        continue; // as placed
+      const int Order[6] = {0, 1, 3, 1, 2, 3};
+      for (int K = 0; K < 6; ++K)
+        Out.Corners[At + size_t(K)] = Q[Order[K]];
+    }
+  }
+};
+
+} // namespace
+
+ObjText parseObj(const std::string &Path, const std::string &Text) {
+  ObjText Out;
+  Reader R{Path, Out, 0, {}, {}};
+  const char *P = Text.data(), *TextEnd = P + Text.size();
+  Out.Positions.reserve(Text.size() / 32), Out.Corners.reserve(Text.size() / 32);
+  const char *NL = nullptr; // the next '\n' (or the end) at or after P
+  while (P < TextEnd) {
+    // The line: up to '\n', "\r\n" or a lone '\r'.
+    if (!NL || NL < P) {
+      NL = static_cast<const char *>(std::memchr(P, '\n', size_t(TextEnd - P)));
+      if (!NL)
+        NL = TextEnd;
+    }
+    const char *End = NL;
+    const char *CR = static_cast<const char *>(std::memchr(P, '\r', size_t(End - P)));
+    const char *Next;
+    if (CR && CR + 1 == End && End < TextEnd) // "\r\n"
+      Next = End + 1, End = CR;
+    else if (CR) // a lone '\r'
+      End = CR, Next = CR + 1;
+    else
+      Next = End < TextEnd ? End + 1 : TextEnd;
+    ++R.Line;
+    while (P < End && isBlank(*P))
+      ++P;
+    if (P + 1 < End && P[0] == 'v' && isBlank(P[1]))
+      R.numbers(P + 2, End, 3, Out.Positions);
+    else if (P + 2 < End && P[0] == 'v' && P[1] == 'n' && isBlank(P[2]))
+      R.numbers(P + 3, End, 3, Out.Normals);
+    else if (P + 2 < End && P[0] == 'v' && P[1] == 't' && isBlank(P[2]))
+      R.numbers(P + 3, End, 2, Out.TexCoords);
+    else if (P + 1 < End && P[0] == 'f' && isBlank(P[1]))
+      R.face(P + 2, End);
     P = Next;
   }
-  return true;
+  R.splitQuads();
+  return Out;
 }
 
-/// The mesh of the faces Idx[0, N) (corners, three a triangle) over A: zero-area faces are
-/// dropped, the winding made to agree with the file's normals.
-void appendFaces(const tinyobj::attrib_t &A, const tinyobj::index_t *Idx, size_t N,
-                 const std::string &Path, TriangleMesh &M, std::vector<int> &PosIndex,
-                 std::vector<bool> &HasNormals, size_t &Degenerate) {
-  for (size_t F = 0; F + 2 < N; F += 3) {
-    Face Fc = readFace(A, &Idx[F], Path);
+static TriangleMesh readObj(const std::string &Path);
+
+TriangleMesh loadObj(const std::string &Path) {
+  const std::string Step = "loading OBJ '" + Path + "'";
+  return texcc::whileAllocating(Step.c_str(), [&] { return readObj(Path); });
+}
+
+static TriangleMesh readObj(const std::string &Path) {
+  const ObjText A = parseObj(Path, readMaybeGzipped(Path));
+  const size_t Corners = A.Corners.size();
+  TriangleMesh M;
+  M.Positions.reserve(Corners), M.Normals.reserve(Corners), M.UVs.reserve(Corners);
+  std::vector<int> PosIndex;
+  PosIndex.reserve(Corners);
+  std::vector<bool> HasNormals;
+  HasNormals.reserve(Corners / 3);
+  size_t Degenerate = 0;
+  for (size_t F = 0; F + 2 < Corners; F += 3) {
+    Face Fc = readFace(A, &A.Corners[F], Path);
     const bool FileNormals = Fc.FileNormals;
-    const Vec3 *P = Fc.P, *Nr = Fc.N;
+    const Vec3 *P = Fc.P, *N = Fc.N;
     const Vec2 *UV = Fc.UV;
     // A zero-area face is never hit, has no normal, and as a light would have an infinite
     // sampling density: drop it.
@@ -409,52 +428,19 @@ void appendFaces(const tinyobj::attrib_t &A, const tinyobj::index_t *Idx, size_t
       // The winding defines the front (the emitting side of an area light); make it agree
       // with the normals the file gives.
       Vec3 Fn = cross(sub(P[1], P[0]), sub(P[2], P[0]));
-      Vec3 Sum = {Nr[0][0] + Nr[1][0] + Nr[2][0], Nr[0][1] + Nr[1][1] + Nr[2][1],
-                  Nr[0][2] + Nr[1][2] + Nr[2][2]};
+      Vec3 Sum = {N[0][0] + N[1][0] + N[2][0], N[0][1] + N[1][1] + N[2][1],
+                  N[0][2] + N[1][2] + N[2][2]};
       if (dot(Fn, Sum) < 0)
         Order[1] = 2, Order[2] = 1;
     }
     for (int C : Order) {
       M.Positions.push_back(P[C]);
-      M.Normals.push_back(FileNormals ? Nr[C] : Vec3{0, 0, 0});
+      M.Normals.push_back(FileNormals ? N[C] : Vec3{0, 0, 0});
       M.UVs.push_back(UV[C]);
-      PosIndex.push_back(Idx[F + C].vertex_index);
+      PosIndex.push_back(A.Corners[F + size_t(C)].V);
     }
     HasNormals.push_back(FileNormals);
   }
-}
-
-} // namespace
-
-static TriangleMesh readObj(const std::string &Path);
-
-TriangleMesh loadObj(const std::string &Path) {
-  const std::string Step = "loading OBJ '" + Path + "'";
-  return texcc::whileAllocating(Step.c_str(), [&] { return readObj(Path); });
-}
-
-static TriangleMesh readObj(const std::string &Path) {
-  std::string Text = readMaybeGzipped(Path);
-  if (std::optional<TriangleMesh> M = objFromTextFast(Path, Text))
-    return std::move(*M);
-  return objFromTextFull(Path, std::move(Text));
-}
-
-/// The mesh of the faces (one index list a shape), normals generated where the file gave none.
-static TriangleMesh meshOf(const std::string &Path, const tinyobj::attrib_t &A,
-                           const std::vector<std::pair<const tinyobj::index_t *, size_t>> &Shapes) {
-  size_t Corners = 0;
-  for (const auto &S : Shapes)
-    Corners += S.second;
-  TriangleMesh M;
-  M.Positions.reserve(Corners), M.Normals.reserve(Corners), M.UVs.reserve(Corners);
-  std::vector<int> PosIndex;
-  PosIndex.reserve(Corners);
-  std::vector<bool> HasNormals;
-  HasNormals.reserve(Corners / 3);
-  size_t Degenerate = 0;
-  for (const auto &S : Shapes)
-    appendFaces(A, S.first, S.second, Path, M, PosIndex, HasNormals, Degenerate);
   if (M.Positions.empty() && Degenerate > 0)
     throw Error(Path + ": OBJ file has no faces of non-zero area (" + std::to_string(Degenerate) +
                 " degenerate)");
@@ -462,33 +448,6 @@ static TriangleMesh meshOf(const std::string &Path, const tinyobj::attrib_t &A,
     throw Error(Path + ": OBJ file has no faces");
   generateNormals(M, PosIndex, HasNormals);
   return M;
-}
-
-std::optional<TriangleMesh> objFromTextFast(const std::string &Path, const std::string &Text) {
-  tinyobj::attrib_t A;
-  std::vector<tinyobj::index_t> Idx;
-  if (!readFast(Text, A, Idx))
-    return std::nullopt;
-  return meshOf(Path, A, {{Idx.data(), Idx.size()}});
-}
-
-TriangleMesh objFromTextFull(const std::string &Path, std::string Text) {
-  checkVertexNumbers(Path, Text);
-  blankSkinWeightLines(Text);
-  tinyobj::ObjReaderConfig Cfg;
-  Cfg.triangulate = true;
-  Cfg.vertex_color = false;
-  tinyobj::ObjReader Reader;
-  if (!Reader.ParseFromString(Text, "", Cfg)) {
-    std::string E = Reader.Error();
-    while (!E.empty() && E.back() == '\n')
-      E.pop_back();
-    throw Error(Path + ": invalid OBJ: " + E);
-  }
-  std::vector<std::pair<const tinyobj::index_t *, size_t>> Shapes;
-  for (const auto &Shape : Reader.GetShapes())
-    Shapes.push_back({Shape.mesh.indices.data(), Shape.mesh.indices.size()});
-  return meshOf(Path, Reader.GetAttrib(), Shapes);
 }
 
 } // namespace texrender

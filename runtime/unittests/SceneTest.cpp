@@ -64,16 +64,15 @@ TEST(Obj, WindingFollowsFileNormals) {
   }
 }
 
-// fuzz/regressions/obj/skin-weight-joint-overflow.obj: tinyobjloader converts a `vw` line's
-// joint id from float to int unchecked (undefined behaviour for 1e38); loadObj blanks those
-// lines, which texrender never reads, and keeps their line breaks ('\n' or '\r') so that
-// tinyobjloader's messages still name the right line.
+// fuzz/regressions/obj/skin-weight-joint-overflow.obj: tinyobjloader, the reader before
+// parseObj, converted a `vw` line's joint id from float to int unchecked (undefined behaviour for
+// 1e38); texrender never reads those lines, and line breaks ('\n' or '\r') still count.
 TEST(Obj, IgnoresSkinWeightLines) {
   fs::path D = tempDir("objvw");
   writeFile(D / "vw.obj", std::string("vw 0 1e38 1\n  vw\t1 2 3\n") + Quad);
   EXPECT_EQ(loadObj((D / "vw.obj").string()).triangleCount(), 2u);
   writeFile(D / "vwline.obj", "vw 0 1e38 1\rv 0 0 0\nf 0 1 2\n");
-  EXPECT_NE(errorOf([&] { loadObj((D / "vwline.obj").string()); }).find("line 3"),
+  EXPECT_NE(errorOf([&] { loadObj((D / "vwline.obj").string()); }).find("vwline.obj:3: invalid OBJ"),
             std::string::npos);
 }
 

@@ -5,7 +5,6 @@
 // file, the JSON path and the reason.
 
 #include <array>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,12 +25,22 @@ struct TriangleMesh {
 /// face has them and otherwise generated (area-weighted, per vertex position).
 TriangleMesh loadObj(const std::string &Path);
 
-/// loadObj's two readers of an OBJ file's text (Path names it in errors), for the tests:
-/// the fast one reads the common subset of the format in one pass and declines (nullopt) on
-/// anything else, the full one (tinyobjloader) reads every file; where the fast one accepts,
-/// the two give the same mesh bit for bit.
-std::optional<TriangleMesh> objFromTextFast(const std::string &Path, const std::string &Text);
-TriangleMesh objFromTextFull(const std::string &Path, std::string Text);
+/// One corner of an OBJ face: zero-based position, texture coordinate and normal indices as the
+/// file gives them (-1: none; not yet checked against the arrays).
+struct ObjCorner {
+  int V = -1, T = -1, N = -1;
+};
+
+/// An OBJ file's text as read (for loadObj and the tests): the v, vn and vt arrays (3, 3 and 2
+/// floats each) and the faces as triangles, three corners each, in file order (quads split along
+/// the shorter diagonal, larger polygons fanned from their first corner, faces of fewer than
+/// three corners skipped). Throws Error naming Path and the line for a number that is not a
+/// finite float or a face corner that is not one.
+struct ObjText {
+  std::vector<float> Positions, Normals, TexCoords;
+  std::vector<ObjCorner> Corners;
+};
+ObjText parseObj(const std::string &Path, const std::string &Text);
 
 struct Camera {
   Vec3 Position{0, 0, 1};
