@@ -119,6 +119,7 @@ void TierManager::activate(const cl::Program &P, bool Fallback) {
 void TierManager::build(bool HasWork) {
   HasTextureWork = HasWork;
   supersedePending();
+  Deferred.reset();
   TextureKernels.clear();
   ShapeProgram = InterpProgram = cl::Program();
   ActiveTier.clear();
@@ -163,8 +164,20 @@ void TierManager::buildShapeTiers(const char *Reason) {
   if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
     TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater};
-    startBackgroundBuild([Same] { return Same; }, Job, nullptr, Reason);
+    if (DeferFallback && !Plan.ShapeLater)
+      Deferred = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
+    else
+      startBackgroundBuild([Same] { return Same; }, Job, nullptr, Reason);
   }
+}
+
+bool TierManager::startDeferredBuild() {
+  if (!Deferred || Pending || Queued)
+    return false;
+  QueuedBuild B = std::move(*Deferred);
+  Deferred.reset();
+  startBackgroundBuild(std::move(B.MakeLayout), B.Job, std::move(B.Reencode), B.Reason);
+  return true;
 }
 
 void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,

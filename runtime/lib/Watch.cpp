@@ -68,6 +68,7 @@ bool Session::tierBuilt() {
 
 WatchResult Session::run() {
   R = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
+  R->setDeferFallbackBuilds(true); // started after a complete frame (renderFrame)
   Editor = std::make_unique<LiveEditor>(Lay);
   watchFiles();
   say("watching " + GraphPath + ", its sources and " + O.ScenePath + "; Ctrl-C ends");
@@ -262,6 +263,7 @@ void Session::applyKeptEdits(const json &Edited) {
 void Session::reloadScene() {
   try {
     auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
+    New->setDeferFallbackBuilds(true);
     // A new OpenCL context: primed again after its first complete frame.
     if (Prime.joinable())
       Prime.join();

@@ -210,6 +210,10 @@ void Session::renderFrame() {
       ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
       "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
   primeCompiler();
+  // The interp fallback of a regenerated shape kernel, held back while its first frames
+  // rendered (TierManager::setDeferFallbackBuilds).
+  if (R->startDeferredBuild())
+    say("the interp fallback builds in the background now (held back until a complete frame)");
   while (!stopping() && !work())
     idle();
 }

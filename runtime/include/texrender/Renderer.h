@@ -129,6 +129,9 @@ public:
   /// the seconds waited.
   double waitForBackgroundBuild() { return Tiers->waitForBackgroundBuild(); }
   bool backgroundBuildPending() const { return Tiers->backgroundBuildPending(); }
+  /// TierManager::setDeferFallbackBuilds and startDeferredBuild (texrender --watch).
+  void setDeferFallbackBuilds(bool On) { Tiers->setDeferFallbackBuilds(On); }
+  bool startDeferredBuild() { return Tiers->startDeferredBuild(); }
 
   /// The texture kernels, their tiers and builds (TierManager.h).
   const TierManager &tiers() const { return *Tiers; }

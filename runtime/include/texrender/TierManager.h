@@ -66,6 +66,15 @@ public:
   /// the seconds waited.
   double waitForBackgroundBuild();
   bool backgroundBuildPending() const { return Pending || Queued; }
+  /// On: a background build that makes only the interp fallback of a layout whose own kernel
+  /// renders (tier auto, the shape kernel built in the foreground) waits for
+  /// startDeferredBuild() instead of starting with the layout. texrender --watch starts it once
+  /// the frame is complete: built at once, its compile competes for the cores (and PoCL's
+  /// device) with the first frames of new code (docs/live.md).
+  void setDeferFallbackBuilds(bool On) { DeferFallback = On; }
+  /// Starts the deferred build, if there is one and no other build is pending; returns whether
+  /// it started.
+  bool startDeferredBuild();
 
   /// The active tier's texture kernels in launch order (one, or wavefront's node launches and
   /// its outputs kernel).
@@ -138,6 +147,8 @@ private:
     std::string Reason;
   };
   std::optional<QueuedBuild> Queued;
+  bool DeferFallback = false;
+  std::optional<QueuedBuild> Deferred; // setDeferFallbackBuilds's build, until started
   std::vector<BuildEvent> Events;
   unsigned FramesRendered = 0;
 };
