@@ -20,8 +20,9 @@ A source edit: in a copy of rust.cl a constant of the code (a random one: no cac
 kernel) is changed and saved SETTLE seconds after the shape tier's complete frame (shape mode,
 --tier=auto). Measured from the save: the first frame rendered with the new code (texcc in the
 background, then a foreground build: of the shape kernel, as neither program is cached and the
-shape program is the faster to build; the interp fallback follows in the background) and the
-first frame of the shape tier; and texrender's own split of that first frame ("source change"
+shape program is the faster to build; the interp fallback follows in the background once a
+frame is complete), the first full-resolution frame with it, and the first frame of the shape
+tier; and texrender's own split of that first frame ("source change"
 line: texcc, the compiler priming waited for, the adoption and its program builds, the pass).
 
 usage: bench/lookdev.py [--quick] [--transport ws|control] [--build DIR] [--out FILE]
@@ -280,7 +281,11 @@ def source_edit(transport, tools, textures, folder, work):
             f.write(edited)
             f.truncate()
         first = next_event(ch, is_frame, "the first frame with the new code")
+        full = first if not first.get("reduced") else \
+            next_event(ch, lambda e: is_frame(e) and not e.get("reduced"),
+                       "the first full-resolution frame with the new code")
         shape = first if first.get("tier") == "shape" else \
+            full if full.get("tier") == "shape" else \
             next_event(ch, lambda e: is_frame(e, tier="shape"), "the new shape kernel's frame")
     finally:
         ch.close()
@@ -288,6 +293,7 @@ def source_edit(transport, tools, textures, folder, work):
             f.write(original)
     log = getattr(ch, "log_path", None) or getattr(ch, "log_name", None)
     return {"firstFrameMs": (first["t"] - t0) * 1000, "firstFrameTier": first.get("tier"),
+            "fullFrameMs": (full["t"] - t0) * 1000,
             "shapeFrameMs": (shape["t"] - t0) * 1000, "settleSeconds": SETTLE,
             "texrenderSplit": source_split(log) if log else None}
 
