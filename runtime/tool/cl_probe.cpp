@@ -1,16 +1,19 @@
 // texcc-cl-probe: prints one line per OpenCL device; exits 1 when there is none.
 //
 // texcc-cl-probe --time-build DIR [--variant OPTS]... [--reps N] [--hits N] [--device N]
-//                [--include DIR]: times, on one device and in one process, what a texture
-// program of a texcc output folder costs texrender before its first frame and per hit: for the
-// shape kernel (kernel.source) and, when the folder has one, its interp fallback, under each
-// variant (extra build options appended to texrender's "-cl-std=CL1.2 -I DIR"; default: none
-// and -cl-opt-disable), interleaved, N rounds: clBuildProgram from source, the first launch
-// (PoCL compiles the work-group function there; the renderer's 64-wide groups, numHits 0), and
-// the device time per hit over H random hits (texcc_uniforms run first, as texrender does).
-// Outputs of every variant are compared with the first variant's (largest absolute
-// difference). The compiler is primed first (a tiny build), as texrender --watch does. Run it
-// with POCL_KERNEL_CACHE=0, or PoCL's own cache turns every round after the first into a load.
+//                [--include DIR] [--only shape|interp]
+// times, on one device and in one process, what a texture program of a texcc output folder
+// costs texrender before its first frame and per hit: for the shape kernel (kernel.source) and,
+// when the folder has one, its interp fallback, under each variant (extra build options
+// appended to texrender's "-cl-std=CL1.2 -I DIR"; default: none and -cl-opt-disable),
+// interleaved, N rounds: clBuildProgram from source, the first launch (PoCL compiles the
+// work-group function there; the renderer's 64-wide groups, numHits 0), and the device time per
+// hit over H random hits (texcc_uniforms run first, as texrender does). Outputs of every
+// variant are compared with the first variant's (largest absolute difference), and the binary
+// taken after those launches is loaded into a new program and launched (PoCL's binaries carry
+// the compiled work-group functions). The compiler is primed first (a tiny build), as
+// texrender --watch does. Run it with POCL_KERNEL_CACHE=0, or PoCL's own cache turns every
+// round after the first into a load.
 #define CL_HPP_ENABLE_EXCEPTIONS
 #include <CL/opencl.hpp>
 
