@@ -97,7 +97,9 @@ public:
       throw Error("cannot start Embree: " + std::to_string(int(rtcGetDeviceError(nullptr))));
     rtcSetDeviceErrorFunction(Device, embreeError, &LastError);
     Scene = rtcNewScene(Device);
-    rtcSetSceneBuildQuality(Scene, RTC_BUILD_QUALITY_HIGH);
+    // Medium (binned SAH), as Cycles builds its Embree BVH by default: high (spatial splits)
+    // cost a third of texrender's start-up for no measured frame-time gain (bench/startup.md).
+    rtcSetSceneBuildQuality(Scene, RTC_BUILD_QUALITY_MEDIUM);
     const size_t NT = C.Data.Tris.size();
     if (NT > 0) {
       RTCGeometry G = rtcNewGeometry(Device, RTC_GEOMETRY_TYPE_TRIANGLE);
