@@ -1,5 +1,5 @@
-// fuzz-obj: OBJ text (or gzip data: loadObj accepts both) through texrender's loadObj:
-// tinyobjloader's parser, triangulation, index checks, winding and generated normals.
+// fuzz-obj: OBJ text (or gzip data: loadObj accepts both) through texrender's loadObj: its
+// one-pass OBJ reader (parseObj), triangulation, index checks, winding and generated normals.
 // texrender::Error is the expected rejection; anything else is a finding.
 #include "FuzzFile.h"
 
