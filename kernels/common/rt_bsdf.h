@@ -49,12 +49,17 @@ static inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float
                            float3 wi, float *pdf) {
   float cosI = dot(wi, n), cosO = dot(wo, n);
   *pdf = 0.0f;
-  if (cosI <= 0.0f || cosO <= 0.0f)
-    return (float3)(0.0f);
+  /* Diffuse asks only that the light is above n, as Cycles' diffuse closure does: a bumped
+   * or smooth-shaded normal that faces away from the viewer still shades (the bump
+   * shadowing, shade.cl, rejects light below the smooth normal). */
   if (type == RT_BSDF_DIFFUSE) {
+    if (cosI <= 0.0f)
+      return (float3)(0.0f);
     *pdf = cosI * RT_INV_PI;
     return color * RT_INV_PI;
   }
+  if (cosI <= 0.0f || cosO <= 0.0f)
+    return (float3)(0.0f);
   if (type == RT_BSDF_GLOSSY) {
     float a2 = rt_ggx_alpha(roughness);
     a2 *= a2;

@@ -10,10 +10,15 @@
                                      plane), or N' (lifted.json), N turned towards the plane's
                                      normal just enough that the reflection is 0.01 above the
                                      plane, as Cycles' ensure_valid_specular_reflection does
-  valid_reflection.py check OUTDIR   the central 4x4 pixels of away.exr against lifted.exr
+                                     diffuse.json: a white-0.5 diffuse with the normal N, lit
+                                     only by a sun 45 degrees up towards -z (irradiance pi)
+  valid_reflection.py check OUTDIR   the central 4x4 pixels of away.exr against lifted.exr, and
+                                     of diffuse.exr against 0.5 cos(N, sun) x G1 (Cycles' bump
+                                     shadowing, shadowing.py)
 
 Without the lift the lobe faces away from the viewer and renders black; with it, both images
-show the same lobe.
+show the same lobe. A diffuse lobe, as Cycles' diffuse closure, asks only that the light is
+above N: it shades although N faces away from the viewer (texrender before: black).
 """
 import json
 import math
@@ -24,6 +29,18 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "sc
 
 CAMERA = (0.0, 1.0, 3.0)
 AWAY = (0.0, 1.0, -0.8)
+SUN = (0.0, 1.0, -1.0)
+RADIUS = 0.27  # degrees
+
+
+def g1(cos, a2):
+    return 2 * cos / (cos + math.sqrt(a2 + (1 - a2) * cos * cos))
+
+
+def diffuse_expected():
+    n, sun, ng = norm(AWAY), norm(SUN), [0.0, 1.0, 0.0]
+    cos_d = dot(n, ng)
+    return 0.5 * dot(n, sun) * g1(dot(ng, sun), min(1.0, 0.125 * (1 / cos_d ** 2 - 1)))
 
 
 def norm(v):
@@ -70,6 +87,8 @@ def make(out):
                         "args": {"x": nl[0], "y": nl[1], "z": nl[2]}}],
              "materials": {m: {"bsdf": "glossy", "color": [1, 1, 1], "roughness": 0.3,
                                "normal": {"node": m}} for m in ("away", "lifted")}}
+    graph["materials"]["diffuse"] = {"bsdf": "diffuse", "color": [0.5, 0.5, 0.5],
+                                     "normal": {"node": "away"}}
     with open(os.path.join(out, "graph.json"), "w") as f:
         json.dump(graph, f, indent=1)
     for m in ("away", "lifted"):
@@ -81,6 +100,12 @@ def make(out):
                  "meshes": [{"obj": "plane.obj", "material": m}]}
         with open(os.path.join(out, m + ".json"), "w") as f:
             json.dump(scene, f, indent=1)
+    radiance = 1.0 / (2.0 * (1.0 - math.cos(math.radians(RADIUS))))
+    scene["lights"] = [{"type": "sun", "radiance": [radiance] * 3, "angularRadius": RADIUS,
+                        "direction": norm(SUN)}]
+    scene["meshes"][0]["material"] = "diffuse"
+    with open(os.path.join(out, "diffuse.json"), "w") as f:
+        json.dump(scene, f, indent=1)
     print("N %s, lifted %s" % (["%.4f" % x for x in n], ["%.4f" % x for x in nl]))
     return 0
 
@@ -89,7 +114,7 @@ def check(out):
     import numpy as np
     from texexr import read_exr
     means = {}
-    for m in ("away", "lifted"):
+    for m in ("away", "lifted", "diffuse"):
         with open(os.path.join(out, m + ".exr"), "rb") as f:
             img = read_exr(f.read())
         img = np.asarray(img[0] if isinstance(img, tuple) else img)
@@ -99,8 +124,11 @@ def check(out):
     good = means["lifted"] > 0.05 and abs(ratio - 1) <= 0.01
     print("away %.4f, lifted %.4f, ratio %.4f %s" % (means["away"], means["lifted"], ratio,
                                                     "ok" if good else "FAIL"))
-    print("PASS" if good else "FAIL")
-    return 0 if good else 1
+    want = diffuse_expected()
+    good_d = abs(means["diffuse"] / want - 1) <= 0.01
+    print("diffuse %.4f expected %.4f %s" % (means["diffuse"], want, "ok" if good_d else "FAIL"))
+    print("PASS" if good and good_d else "FAIL")
+    return 0 if good and good_d else 1
 
 
 if __name__ == "__main__":
