@@ -732,6 +732,7 @@ def tail_sections():
                        ("bench/loop-budget.md", "cost of texcc's loop budget per hit (`bench/per_hit.py`, checked against `--no-checks`)"),
                        ("bench/cycles.md", "texrender against Cycles: how `bench/cycles.py` runs, what it times, notes on its results"),
                        ("bench/sampling.md", "sampling: where the variance comes from, and error against converged references beside Cycles (`bench/sampling.py`, `bench/accuracy.py --peer`)"),
+                       ("bench/startup.md", "texrender's fixed start-up cost (process start, OBJ, BVHs; `bench/startup.py`), the part `bench/accuracy.py --peer` subtracts"),
                        ("bench/lookdev.md", "live look-development: edit-to-first-frame latency through the browser preview (`bench/lookdev.py`)"),
                        ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`; its AO figure is now `bench/ao.py`)")):
         if os.path.exists(os.path.join(common.ROOT, name)):
