@@ -29,6 +29,24 @@ def g1(cos, a2):
     return 2 * cos / (cos + math.sqrt(a2 + (1 - a2) * cos * cos))
 
 
+def write_plane(out):
+    """OUTDIR/plane.obj: the square y = 0, x and z in [-2, 2], normal +y (the bump tests' plane)."""
+    with open(os.path.join(out, "plane.obj"), "w") as f:
+        f.write("v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nvn 0 1 0\n"
+                "f 1//1 3//1 2//1\nf 1//1 4//1 3//1\n")
+
+
+def centre_mean(path, half):
+    """The mean RGB of the (2 half)^2 pixels at the centre of the EXR at path."""
+    import numpy as np
+    from texexr import read_exr
+    with open(path, "rb") as f:
+        img = read_exr(f.read())
+    img = np.asarray(img[0] if isinstance(img, tuple) else img)
+    h, w = img.shape[:2]
+    return float(img[h // 2 - half:h // 2 + half, w // 2 - half:w // 2 + half, :3].mean())
+
+
 EXPECTED = {"bumped": 0.5 * math.cos(SUN_OFF - math.radians(45)) *
             g1(math.cos(SUN_OFF), math.tan(math.radians(45)) ** 2 / 8),
             "flat": 0.5 * math.cos(SUN_OFF)}
@@ -37,9 +55,7 @@ EXPECTED = {"bumped": 0.5 * math.cos(SUN_OFF - math.radians(45)) *
 def make(out):
     os.makedirs(out, exist_ok=True)
     here = os.path.dirname(os.path.abspath(__file__))
-    with open(os.path.join(out, "plane.obj"), "w") as f:
-        f.write("v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nvn 0 1 0\n"
-                "f 1//1 3//1 2//1\nf 1//1 4//1 3//1\n")
+    write_plane(out)
     with open(os.path.join(here, "linear-graph.json")) as f:
         graph = json.load(f)
     graph["sources"] = [os.path.join(here, s) for s in graph["sources"]]
@@ -64,15 +80,9 @@ def make(out):
 
 
 def check(out):
-    import numpy as np
-    from texexr import read_exr
     ok = True
     for name, want in EXPECTED.items():
-        with open(os.path.join(out, name + ".exr"), "rb") as f:
-            img = read_exr(f.read())
-        img = np.asarray(img[0] if isinstance(img, tuple) else img)
-        h, w = img.shape[:2]
-        got = img[h // 2 - 4:h // 2 + 4, w // 2 - 4:w // 2 + 4, :3].mean()
+        got = centre_mean(os.path.join(out, name + ".exr"), 4)
         good = abs(got / want - 1) <= 0.01
         ok &= good
         print("%-7s %.4f expected %.4f (%+.2f%%) %s" % (name, got, want, 100 * (got / want - 1),

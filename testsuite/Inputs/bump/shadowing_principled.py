@@ -30,9 +30,7 @@ G1 = shadowing.g1(math.cos(shadowing.SUN_OFF), math.tan(math.radians(45)) ** 2 /
 def make(out):
     os.makedirs(out, exist_ok=True)
     here = os.path.dirname(os.path.abspath(__file__))
-    with open(os.path.join(out, "plane.obj"), "w") as f:
-        f.write("v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nvn 0 1 0\n"
-                "f 1//1 3//1 2//1\nf 1//1 4//1 3//1\n")
+    shadowing.write_plane(out)
     c = math.sqrt(0.5)
     with open(os.path.join(out, "tilted.obj"), "w") as f:
         # (x, 0, z) turned 45 degrees about z: (c x, c x, z), normal (-c, c, 0)
@@ -66,15 +64,8 @@ def make(out):
 
 
 def check(out):
-    import numpy as np
-    from texexr import read_exr
-    got = {}
-    for name in ("bumped", "tilted", "black"):
-        with open(os.path.join(out, name + ".exr"), "rb") as f:
-            img = read_exr(f.read())
-        img = np.asarray(img[0] if isinstance(img, tuple) else img)
-        h, w = img.shape[:2]
-        got[name] = float(img[h // 2 - 4:h // 2 + 4, w // 2 - 4:w // 2 + 4, :3].mean())
+    got = {name: shadowing.centre_mean(os.path.join(out, name + ".exr"), 4)
+           for name in ("bumped", "tilted", "black")}
     shadow = (got["bumped"] - got["black"]) / (got["tilted"] - got["black"])
     good = abs(shadow / G1 - 1) <= 0.01
     print("bumped %.4f tilted %.4f black (specular) %.4f" % (got["bumped"], got["tilted"],

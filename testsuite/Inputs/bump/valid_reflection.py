@@ -25,16 +25,15 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "scripts"))
+
+from shadowing import centre_mean, g1, write_plane  # noqa: E402
 
 CAMERA = (0.0, 1.0, 3.0)
 AWAY = (0.0, 1.0, -0.8)
 SUN = (0.0, 1.0, -1.0)
 RADIUS = 0.27  # degrees
-
-
-def g1(cos, a2):
-    return 2 * cos / (cos + math.sqrt(a2 + (1 - a2) * cos * cos))
 
 
 def diffuse_expected():
@@ -73,9 +72,7 @@ def lifted(ng, wo, n):
 def make(out):
     os.makedirs(out, exist_ok=True)
     here = os.path.dirname(os.path.abspath(__file__))
-    with open(os.path.join(out, "plane.obj"), "w") as f:
-        f.write("v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nvn 0 1 0\n"
-                "f 1//1 3//1 2//1\nf 1//1 4//1 3//1\n")
+    write_plane(out)
     wo = norm(CAMERA)
     n = norm(AWAY)
     assert dot([2 * dot(n, wo) * n[j] - wo[j] for j in range(3)], [0, 1, 0]) < 0
@@ -111,15 +108,7 @@ def make(out):
 
 
 def check(out):
-    import numpy as np
-    from texexr import read_exr
-    means = {}
-    for m in ("away", "lifted", "diffuse"):
-        with open(os.path.join(out, m + ".exr"), "rb") as f:
-            img = read_exr(f.read())
-        img = np.asarray(img[0] if isinstance(img, tuple) else img)
-        h, w = img.shape[:2]
-        means[m] = float(img[h // 2 - 2:h // 2 + 2, w // 2 - 2:w // 2 + 2, :3].mean())
+    means = {m: centre_mean(os.path.join(out, m + ".exr"), 2) for m in ("away", "lifted", "diffuse")}
     ratio = means["away"] / means["lifted"] if means["lifted"] > 0 else float("nan")
     good = means["lifted"] > 0.05 and abs(ratio - 1) <= 0.01
     print("away %.4f, lifted %.4f, ratio %.4f %s" % (means["away"], means["lifted"], ratio,
