@@ -18,6 +18,7 @@
 #include <CL/opencl.hpp>
 
 #include "../../kernels/common/texcc_abi.h"
+#include "texcc/Kernel/Manifest.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,6 +35,29 @@
 
 namespace {
 
+/// Every device of every platform, in the order texrender numbers them (--device), with its
+/// platform; a platform whose devices cannot be listed is skipped.
+std::vector<std::pair<cl::Device, cl::Platform>> allDevices() {
+  std::vector<cl::Platform> Platforms;
+  try {
+    cl::Platform::get(&Platforms);
+  } catch (const cl::Error &) {
+    Platforms.clear();
+  }
+  std::vector<std::pair<cl::Device, cl::Platform>> All;
+  for (auto &P : Platforms) {
+    std::vector<cl::Device> Devices;
+    try {
+      P.getDevices(CL_DEVICE_TYPE_ALL, &Devices);
+    } catch (const cl::Error &) {
+      continue;
+    }
+    for (auto &D : Devices)
+      All.emplace_back(D, P);
+  }
+  return All;
+}
+
 int listDevices() {
   std::vector<cl::Platform> Platforms;
   try {
@@ -46,17 +70,9 @@ int listDevices() {
     return 1;
   }
   int Count = 0;
-  for (auto &P : Platforms) {
-    std::vector<cl::Device> Devices;
-    try {
-      P.getDevices(CL_DEVICE_TYPE_ALL, &Devices);
-    } catch (const cl::Error &) {
-      continue;
-    }
-    for (auto &D : Devices)
-      std::printf("%d: %s (%s)\n", Count++, D.getInfo<CL_DEVICE_NAME>().c_str(),
-                  P.getInfo<CL_PLATFORM_NAME>().c_str());
-  }
+  for (auto &[D, P] : allDevices())
+    std::printf("%d: %s (%s)\n", Count++, D.getInfo<CL_DEVICE_NAME>().c_str(),
+                P.getInfo<CL_PLATFORM_NAME>().c_str());
   if (Count == 0) {
     std::fprintf(stderr, "texcc-cl-probe: no OpenCL device found\n");
     return 1;
@@ -80,20 +96,6 @@ std::string readFile(const std::string &Path) {
   std::ostringstream S;
   S << In.rdbuf();
   return S.str();
-}
-
-/// The string value of "Key": "..." after the first occurrence of Section in layout.json (a
-/// probe: no JSON library; texcc writes these keys once each).
-std::string jsonString(const std::string &Json, const std::string &Key) {
-  size_t At = Json.find("\"" + Key + "\"");
-  if (At == std::string::npos)
-    return "";
-  At = Json.find(':', At);
-  size_t Open = Json.find('"', At);
-  size_t Close = Json.find('"', Open + 1);
-  if (At == std::string::npos || Open == std::string::npos || Close == std::string::npos)
-    return "";
-  return Json.substr(Open + 1, Close - Open - 1);
 }
 
 struct Program {
@@ -270,36 +272,28 @@ int timeBuild(int Argc, char **Argv) {
     Include = Exe.substr(0, Exe.rfind('/')) + "/../kernels/common";
   }
   const std::string Base = "-cl-std=CL1.2 -I " + Include;
-  const std::string Layout = readFile(Dir + "/layout.json");
+  texcc::kernel::Manifest Layout;
+  texcc::kernel::ManifestError Why;
+  if (!texcc::kernel::readManifestFile(Dir + "/layout.json", Layout, Why))
+    fail(Why.str());
   std::vector<Program> Programs;
-  const std::string Source = jsonString(Layout, "source");
-  const std::string Fallback = jsonString(Layout, "interpFallback");
+  const std::string &Source = Layout.Kernel.Source;
+  const std::string &Fallback = Layout.Kernel.InterpFallback;
   if (Only.empty() || Only == "shape")
     Programs.push_back({"kernel", Dir + "/" + Source, readFile(Dir + "/" + Source),
-                        !jsonString(Layout, "uniforms").empty()});
+                        !Layout.Kernel.Uniforms.empty()});
   if (!Fallback.empty() && (Only.empty() || Only == "interp"))
     Programs.push_back({"interp fallback", Dir + "/" + Fallback, readFile(Dir + "/" + Fallback),
                         false});
 
-  std::vector<cl::Platform> Platforms;
-  cl::Platform::get(&Platforms);
-  std::vector<cl::Device> All;
-  for (auto &P : Platforms) {
-    std::vector<cl::Device> D;
-    try {
-      P.getDevices(CL_DEVICE_TYPE_ALL, &D);
-    } catch (const cl::Error &) {
-      continue;
-    }
-    All.insert(All.end(), D.begin(), D.end());
-  }
+  const auto All = allDevices();
   if (DeviceIndex < 0 || DeviceIndex >= int(All.size()))
     fail("no OpenCL device " + std::to_string(DeviceIndex));
   Bench B;
-  B.Device = All[size_t(DeviceIndex)];
+  B.Device = All[size_t(DeviceIndex)].first;
   B.Ctx = cl::Context(B.Device);
   B.Queue = cl::CommandQueue(B.Ctx, B.Device, CL_QUEUE_PROFILING_ENABLE);
-  B.Entry = jsonString(Layout, "entry");
+  B.Entry = Layout.Kernel.Entry;
   B.setUp(Hits, Dir);
   {
     double T0 = now();
