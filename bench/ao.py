@@ -3,8 +3,8 @@ every hit in one launch beats looping over a hit's AO rays inside one work-item)
 
 The atrium with rust (which reads AO) is rendered with texrender's default parallel AO and with
 `--ao-method=loop` (`ao_loop`, one OpenCL work-item per hit looping over its rays), for each trace
-backend: `--trace=embree` (the CPU default: `ao_rays` makes every AO ray of every hit, one Embree
-stream traces them all, `ao_reduce` averages; the loop variant keeps Embree for closest hit and
+backend: `--trace=embree` (the CPU default: `ao_rays` makes every AO ray of every hit, Embree traces
+each hit's rays as one packet, `ao_reduce` averages; the loop variant keeps Embree for closest hit and
 shadow rays) and `--trace=opencl` (`ao_trace`, one work-item per AO ray, then `ao_reduce`).
 Both methods trace the same rays, so the images must be identical: the figure checks it with
 `texrender-compare --exact`. Each repetition renders both, alternating which goes first; AO time
