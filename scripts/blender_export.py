@@ -189,7 +189,19 @@ class Export:
             mesh.loop_triangles.foreach_get("material_index", mi)
             normals = np.empty(len(mesh.loops) * 3, np.float32)
             mesh.corner_normals.foreach_get("vector", normals)
-            normals = normals.reshape(-1, 3)
+            tv, tl = tv.reshape(-1, 3), tl.reshape(-1, 3)
+            # One normal per triangle corner. A flat-shaded face's corner normals are its
+            # polygon's normal, but Cycles shades each of its triangles with the triangle's own
+            # normal (Ng; a non-planar quad's two triangles differ), and so does the AO node's
+            # hemisphere (issue 22): flat triangles get their geometric normal.
+            corner_normals = normals.reshape(-1, 3)[tl]
+            smooth = np.empty(ntri, bool)
+            mesh.loop_triangles.foreach_get("use_smooth", smooth)
+            p = co.astype(np.float64)[tv]
+            ng = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+            length = np.linalg.norm(ng, axis=1)
+            flat = ~smooth & (length > 0)
+            corner_normals[flat] = (ng[flat] / length[flat, None])[:, None, :]
             uv = None
             # Cycles' default UV map (Texture Coordinate's UV) is the one active for rendering.
             layer = next((l for l in mesh.uv_layers if l.active_render), mesh.uv_layers.active)
@@ -197,14 +209,14 @@ class Export:
                 uv = np.empty(len(mesh.loops) * 2, np.float32)
                 layer.data.foreach_get("uv", uv)
                 uv = uv.reshape(-1, 2)
-            tv, tl = tv.reshape(-1, 3), tl.reshape(-1, 3)
             files = []
             for slot in sorted(set(mi.tolist())):
                 pick = mi == slot
                 corners = tl[pick].reshape(-1)
                 # Each position, normal and UV once (smooth meshes share them between corners).
                 verts, vidx = np.unique(tv[pick].reshape(-1), return_inverse=True)
-                vn, nidx = np.unique(normals[corners], axis=0, return_inverse=True)
+                vn, nidx = np.unique(corner_normals[pick].reshape(-1, 3), axis=0,
+                                     return_inverse=True)
                 columns = [vidx.reshape(-1) + 1]
                 if uv is not None:
                     vt, tidx = np.unique(uv[corners], axis=0, return_inverse=True)
