@@ -477,16 +477,19 @@ TEXTURE_ONLY_VARIANTS = ("rust-model", "scratches-model")
 
 
 def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge_range=0.5,
-                 seed=1, noise_seed=None):
+                 seed=1, noise_seed=None, probe=None):
     """Issue 22: the model's material colour through Emission, no lights (make_scene.py
     --texture-only), rendered by Cycles and by texrender from the exporter's output of the same
     .blend; per-block agreement (the worker's blocks()). noise_seed: both renderers again at
-    that seed, and the worker's noise() (the difference against its seed-to-seed noise)."""
+    that seed, and the worker's noise() (the difference against its seed-to-seed noise).
+    probe: make_scene.py's --texture-probe (rust: "ao", the AO node's output alone;
+    "constant-ao", AO replaced by 0.5)."""
     w, h = (int(x) for x in size.split("x"))
-    blends = make_blends(tools, variants, ["--texture-only"], "-texture-only")
+    extra = ["--texture-only"] + (["--texture-probe", probe] if probe else [])
+    blends = make_blends(tools, variants, extra, "-texture-only" + ("-" + probe if probe else ""))
     cyc = Cycles()
     out = {"size": size, "spp": spp, "cyclesVersion": cyc.version, "results": {},
-           "loadAverageBefore": os.getloadavg()}
+           "loadAverageBefore": os.getloadavg(), "probe": probe}
     try:
         for v in variants:
             mask = os.path.join(tools.work, "to-mask-%s.exr" % v)
@@ -621,6 +624,10 @@ def main():
                     help="with --texture-only: both renderers also at this seed; per block, "
                     "the renderers' difference against their seed-to-seed noise (results' "
                     "\"noise\")")
+    ap.add_argument("--texture-probe", choices=("ao", "ao-squared", "constant-ao"),
+                    help="with --texture-only, rust-model: the AO node's output alone (ao), its "
+                    "square (ao-squared) or the colour with AO replaced by a constant 0.5 (constant-ao); bisects issue 22's "
+                    "rust blocks (make_scene.py --texture-probe)")
     args = ap.parse_args()
     variants, renderers = args.variants.split(","), args.renderers.split(",")
     if "diffuse" not in variants or not set(variants) <= set(VARIANTS) or \
@@ -633,7 +640,7 @@ def main():
         which = [v for v in args.agree_variants.split(",") if v != "diffuse"] or \
             list(TEXTURE_ONLY_VARIANTS)
         data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which,
-                            noise_seed=args.noise_seed)
+                            noise_seed=args.noise_seed, probe=args.texture_probe)
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "build": os.path.relpath(tools.build,

@@ -32,6 +32,8 @@ What it reads, what it writes:
   Bump and Normal inputs drop out: this view checks what the texture computes, not the shading.
   The camera keeps its direction and moves towards the model until its bounding sphere's radius
   is 0.75 of the half-view, so that many 8x8 blocks lie wholly on the gears.
+  --texture-probe ao | ao-squared | constant-ao (rust): the AO node's AO output alone through
+  the Emission, its square, or the colour with the AO node replaced by a constant 0.5 (bisecting issue 22's rust blocks).
 """
 
 import argparse
@@ -266,11 +268,30 @@ def material_colour(t, socket):
     return None, tuple(colour.default_value)
 
 
-def texture_only(m):
-    """The material's colour through an Emission shader (strength 1), in place of its surface."""
+def texture_only(m, probe=None):
+    """The material's colour through an Emission shader (strength 1), in place of its surface.
+    probe (rust only, issue 22's bisection): "ao": the AO node's AO output instead of the
+    colour; "ao-squared": its square (with "ao": the spread of the 8-ray estimate);
+    "constant-ao": the colour, with the AO node's output replaced by a constant 0.5
+    (the Occlusion node's input), so that the mask depends on the patches alone."""
     t = m.node_tree
     out = t.nodes["Output"]
     link, value = material_colour(t, out.inputs["Surface"])
+    if probe is not None and "AO" not in t.nodes:
+        sys.exit("make_scene: --texture-probe is for the rust material (it has the AO node)")
+    if probe == "ao":
+        link, value = t.nodes["AO"].outputs["AO"], None
+    elif probe == "ao-squared":
+        square = node(t, "ShaderNodeMath", "AOSquared")
+        square.operation = "MULTIPLY"
+        t.links.new(t.nodes["AO"].outputs["AO"], square.inputs[0])
+        t.links.new(t.nodes["AO"].outputs["AO"], square.inputs[1])
+        link, value = square.outputs["Value"], None
+    elif probe == "constant-ao":
+        occlusion = t.nodes["Occlusion"]
+        t.links.remove(occlusion.inputs[1].links[0])
+        occlusion.inputs[1].default_value = 0.5
+        t.nodes.remove(t.nodes["AO"])
     em = node(t, "ShaderNodeEmission", "TextureOnly", Strength=1.0)
     if link is not None:
         t.links.new(link, em.inputs["Color"])
@@ -402,7 +423,7 @@ def build(args):
                      "scratches-model, diffuse)")
         model = mats[model_material].copy()
         model.name = model_material + "-texture-only"
-        mats[model_material] = texture_only(model)
+        mats[model_material] = texture_only(model, args.texture_probe)
     conv = mathutils.Matrix(((1, 0, 0, 0), (0, 0, -1, 0), (0, 1, 0, 0), (0, 0, 0, 1)))
     for mesh in scene_json["meshes"]:
         path = os.path.join(base, mesh["obj"])
@@ -441,7 +462,13 @@ def main():
     ap.add_argument("--size", help="WxH (default: the scene's film)")
     ap.add_argument("--texture-only", action="store_true",
                     help="the model's material colour through Emission, no lights (issue 22)")
+    ap.add_argument("--texture-probe", choices=("ao", "ao-squared", "constant-ao"),
+                    help="with --texture-only, rust: the AO node's output alone (ao), its square "
+                    "(ao-squared), or the "
+                    "colour with AO replaced by a constant 0.5 (constant-ao)")
     args = ap.parse_args(argv)
+    if args.texture_probe and not args.texture_only:
+        ap.error("--texture-probe needs --texture-only")
     ensure_bpy("make_scene")
     build(args)
 

@@ -144,6 +144,34 @@ static inline float3 rt_sample_cosine(float u1, float u2) {
   return (float3)(r * cos(phi), r * sin(phi), sqrt(fmax(0.0f, 1.0f - u1)));
 }
 
+/* Cosine-weighted hemisphere around +z, pdf = z / pi, through the concentric map of the square
+ * onto the unit disk (Shirley and Chiu 1997), lifted onto the hemisphere: the warp of Cycles'
+ * Ambient Occlusion node. Same distribution as rt_sample_cosine, but a stratified set of (u1, u2)
+ * becomes a differently stratified set of directions (square cells stay compact on the disk;
+ * rt_sample_cosine's become rings and wedges), so an estimate from a few directions has another
+ * spread (issue 22). */
+static inline float3 rt_sample_cosine_concentric(float u1, float u2) {
+  float a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
+  float r = 0.0f, phi = 0.0f;
+  if (a * a > b * b) {
+    r = a;
+    phi = 0.25f * RT_PI * (b / a);
+  } else if (b != 0.0f) {
+    r = b;
+    phi = 0.5f * RT_PI - 0.25f * RT_PI * (a / b);
+  }
+  float x = r * cos(phi), y = r * sin(phi);
+  return (float3)(x, y, sqrt(fmax(0.0f, 1.0f - x * x - y * y)));
+}
+
+/* The tangent pair Cycles builds around a unit normal n (its make_orthonormals): t along
+ * (1, 1, 1) x n ((-1, 1, 1) x n when n's three components are equal), b = n x t. */
+static inline float3 rt_to_world_cycles(float3 v, float3 n) {
+  float3 t = normalize((n.x != n.y || n.x != n.z) ? (float3)(n.z - n.y, n.x - n.z, n.y - n.x)
+                                                  : (float3)(n.z - n.y, n.x + n.z, -n.y - n.x));
+  return v.x * t + v.y * cross(n, t) + v.z * n;
+}
+
 /* Uniform sphere; pdf = 1 / (4 pi). */
 static inline float3 rt_sample_sphere(float u1, float u2) {
   float z = 1.0f - 2.0f * u1;

@@ -2,11 +2,12 @@
 
     .venv/bin/python testsuite/Inputs/blender-export/cycles_reference.py [--spp 4096]
 
-For each case (make_blend.py's "scene" and "texture-only"): builds the .blend, renders it with
-Cycles (bpy 5.0.1, CPU, no denoising, no adaptive sampling, box pixel filter of 1 px, a
-transparent film for texture-only so that alpha is the coverage) and writes the block means into
-cycles-means.json / cycles-texture-only.json (region_means.py --write; texture-only also marks
-the silhouette blocks). Then re-export the committed scenes with scripts/blender_export.py.
+For each case (make_blend.py's "scene", "texture-only" and "ao-spread"): builds the .blend,
+renders it with Cycles (bpy 5.0.1, CPU, no denoising, no adaptive sampling, box pixel filter of
+1 px, a transparent film for texture-only and ao-spread so that alpha is the coverage) and
+writes the block means into cycles-means.json / cycles-texture-only.json /
+cycles-ao-spread.json (region_means.py --write; texture-only and ao-spread also mark the
+silhouette blocks). Then re-export the committed scenes with scripts/blender_export.py.
 """
 import argparse
 import os
@@ -16,7 +17,8 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASES = {"scene": ("cycles-means.json", []), "texture-only": ("cycles-texture-only.json",
-                                                              ["--edges"])}
+                                                              ["--edges"]),
+         "ao-spread": ("cycles-ao-spread.json", ["--edges"])}
 
 
 def render(blend, exr, spp, transparent):

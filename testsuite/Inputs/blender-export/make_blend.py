@@ -22,7 +22,10 @@ feed the Diffuse BSDF and the Mix Shader; "options": the cube moves from z 0 (fr
 "Side", the sun and the ground; "world-texture": a Sky Texture feeds the world's Background; "instances": the cube is
 also instanced twice through a collection, at x -1.5 and +1.5, y +1; "principled": the ground is
 a Principled BSDF (Base Color 0.2 0.3 0.4, Metallic 0.5, Roughness 0.3, Specular IOR Level 0.7)
-whose Roughness comes from the cube's kind of Noise through a Map Range.
+whose Roughness comes from the cube's kind of Noise through a Map Range; "ao-spread": no lights,
+a black world, 128x96, the ground and the cube both an Emission of an AO node (8 samples,
+distance 0.7) through a Map Range smoothstep from 0.45 to 0.75 (issue 22: the block means
+depend on the spread of the AO node's 8-ray estimate, not only on its mean).
 """
 import sys
 
@@ -271,6 +274,33 @@ def main():
         tree.links.new(ramp.outputs["Color"], emission.inputs["Color"])
         output = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeOutputMaterial")
         tree.links.new(emission.outputs["Emission"], output.inputs["Surface"])
+    if case == "ao-spread":
+        # Issue 22: the AO node's 8-ray estimate through a smoothstep, on the ground and the
+        # cube, as an Emission with no lights: the block means depend on how the estimate
+        # spreads, not only on its mean.
+        for obj in (lamp, sun):
+            bpy.data.objects.remove(obj)
+        scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+        scene.render.resolution_x, scene.render.resolution_y = 128, 96
+        cam.location = (1.5, -1.9, 0.9)  # close to the cube's foot: the ground's AO varies
+        cam.rotation_euler = (1.2, 0.0, 0.6)
+        spread = bpy.data.materials.new("AOSpread")
+        spread.use_nodes = True
+        t = spread.node_tree
+        t.nodes.clear()
+        output = t.nodes.new("ShaderNodeOutputMaterial")
+        ao = ambient_occlusion(t, "AO", 8, 0.7)
+        step = t.nodes.new("ShaderNodeMapRange")
+        step.name = "Step"
+        step.interpolation_type = "SMOOTHSTEP"
+        step.inputs["From Min"].default_value = 0.45
+        step.inputs["From Max"].default_value = 0.75
+        emission = t.nodes.new("ShaderNodeEmission")
+        t.links.new(ao.outputs["AO"], step.inputs["Value"])
+        t.links.new(step.outputs["Result"], emission.inputs["Color"])
+        t.links.new(emission.outputs["Emission"], output.inputs["Surface"])
+        for obj in (cube, scene.objects["Ground"]):
+            obj.data.materials[0] = spread
     if case == "render-settings":
         sub.render_levels = 2
         lamp.hide_render = True
