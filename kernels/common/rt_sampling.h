@@ -93,6 +93,46 @@ static inline float rt_sobol1d(uint index, uint seed) {
   return rt_unit(rt_owen(rt_reverse_bits(rt_owen(index, seed)), rt_hash(seed ^ 0x68bc21ebu)));
 }
 
+/* rt_sobol2 of 8 indices at once: lane k is rt_sobol2(index.sk, seed) bit for bit (the same
+ * integer maths on uint8; DeviceTest's Sobol8MatchesScalar). For a caller that wants 8 points
+ * of one pattern (a hit's AO rays, ao.cl): PoCL vectorizes neither the scalar loop nor across
+ * work-items there, but compiles uint8 / float8 maths to SIMD instructions. */
+static inline uint8 rt_reverse_bits8(uint8 x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+static inline uint8 rt_owen8(uint8 x, uint seed) {
+  x = rt_reverse_bits8(x);
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return rt_reverse_bits8(x);
+}
+
+static inline uint8 rt_sobol1_8(uint8 index) {
+  uint8 y = index;
+  y ^= (y >> 1) & 0x55555555u;
+  y ^= (y >> 2) & 0x33333333u;
+  y ^= (y >> 4) & 0x0f0f0f0fu;
+  y ^= (y >> 8) & 0x00ff00ffu;
+  y ^= (y >> 16) & 0x0000ffffu;
+  return rt_reverse_bits8(y);
+}
+
+static inline float8 rt_unit8(uint8 x) { return convert_float8(x >> 8) * (1.0f / 16777216.0f); }
+
+static inline void rt_sobol2_8(uint8 index, uint seed, float8 *u1, float8 *u2) {
+  uint8 i = rt_owen8(index, seed);
+  *u1 = rt_unit8(rt_owen8(rt_reverse_bits8(i), rt_hash(seed ^ 0x68bc21ebu)));
+  *u2 = rt_unit8(rt_owen8(rt_sobol1_8(i), rt_hash(seed ^ 0x02e5be93u)));
+}
+
 /* Bench-only: with RT_SAMPLER_PCG defined, every pattern is independent PCG numbers from the
  * path's stream instead (the sampler before issue 26; bench/sampling.py --sampler pcg). */
 #ifdef RT_SAMPLER_PCG
@@ -144,32 +184,32 @@ static inline float3 rt_sample_cosine(float u1, float u2) {
   return (float3)(r * cos(phi), r * sin(phi), sqrt(fmax(0.0f, 1.0f - u1)));
 }
 
-/* Cosine-weighted hemisphere around +z, pdf = z / pi, through the concentric map of the square
+/* 8 directions at once (lane k from (u1.sk, u2.sk); a hit's AO rays, ao.cl's ao_dirs8), each
+ * cosine-weighted around +z, pdf = z / pi, through the concentric map of the square
  * onto the unit disk (Shirley and Chiu 1997), lifted onto the hemisphere: the warp of Cycles'
  * Ambient Occlusion node. Same distribution as rt_sample_cosine, but a stratified set of (u1, u2)
  * becomes a differently stratified set of directions (square cells stay compact on the disk;
  * rt_sample_cosine's become rings and wedges), so an estimate from a few directions has another
  * spread (issue 22). */
-static inline float3 rt_sample_cosine_concentric(float u1, float u2) {
-  float a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
-  float r = 0.0f, phi = 0.0f;
-  if (a * a > b * b) {
-    r = a;
-    phi = 0.25f * RT_PI * (b / a);
-  } else if (b != 0.0f) {
-    r = b;
-    phi = 0.5f * RT_PI - 0.25f * RT_PI * (a / b);
-  }
-  float x = r * cos(phi), y = r * sin(phi);
-  return (float3)(x, y, sqrt(fmax(0.0f, 1.0f - x * x - y * y)));
+static inline void rt_sample_cosine_concentric8(float8 u1, float8 u2, float8 *x, float8 *y,
+                                                float8 *z) {
+  /* The map's branches are selects (the lanes' divisions by zero are not selected). */
+  float8 a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
+  int8 first = a * a > b * b, second = !first & (b != 0.0f);
+  float8 r = select(select((float8)0.0f, b, second), a, first);
+  float8 phi = select(select((float8)0.0f, 0.5f * RT_PI - 0.25f * RT_PI * (a / b), second),
+                      0.25f * RT_PI * (b / a), first);
+  float8 c, s = sincos(phi, &c); /* the bits of cos and sin on PoCL, at half the cost */
+  *x = r * c, *y = r * s;
+  *z = sqrt(fmax(0.0f, 1.0f - *x * *x - *y * *y));
 }
 
 /* The tangent pair Cycles builds around a unit normal n (its make_orthonormals): t along
  * (1, 1, 1) x n ((-1, 1, 1) x n when n's three components are equal), b = n x t. */
-static inline float3 rt_to_world_cycles(float3 v, float3 n) {
-  float3 t = normalize((n.x != n.y || n.x != n.z) ? (float3)(n.z - n.y, n.x - n.z, n.y - n.x)
-                                                  : (float3)(n.z - n.y, n.x + n.z, -n.y - n.x));
-  return v.x * t + v.y * cross(n, t) + v.z * n;
+static inline void rt_frame_cycles(float3 n, float3 *t, float3 *b) {
+  *t = normalize((n.x != n.y || n.x != n.z) ? (float3)(n.z - n.y, n.x - n.z, n.y - n.x)
+                                            : (float3)(n.z - n.y, n.x + n.z, -n.y - n.x));
+  *b = cross(n, *t);
 }
 
 /* Uniform sphere; pdf = 1 / (4 pi). */

@@ -206,3 +206,40 @@ TEST(Device, NewLayoutMapsMeshMaterialsByName) {
   }
   fs::remove_all(Dir);
 }
+
+// rt_sobol2_8 (the 8 points of a pattern at once, as ao_dirs8 makes a hit's AO rays) is
+// rt_sobol2 lane by lane, bit for bit: 4096 pattern seeds x indices 0-31 and 1000-1007.
+TEST(Device, Sobol8MatchesScalar) {
+  if (!haveDevice())
+    GTEST_SKIP() << "no OpenCL device";
+  const char *Env = std::getenv("TEXRENDER_KERNELS");
+  const std::string Common = (fs::path(Env && *Env ? Env : TEXRENDER_KERNEL_DIR) / "common").string();
+  ClContext Cl(0, "");
+  cl::Program P = Cl.buildProgram("sobol8-test.cl", R"(
+#include "rt_sampling.h"
+__kernel void sobol8(uint n, __global uint *bad) {
+  uint g = get_global_id(0);
+  if (g >= n)
+    return;
+  uint seed = rt_hash(g >> 3), j0 = (g & 7) < 4 ? (g & 7) * 8 : 1000u;
+  float8 u1, u2;
+  rt_sobol2_8(j0 + (uint8)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u), seed, &u1, &u2);
+  float a1[8], a2[8];
+  vstore8(u1, 0, a1), vstore8(u2, 0, a2);
+  for (uint k = 0; k < 8; ++k) {
+    float2 u = rt_sobol2(j0 + k, seed);
+    if (as_uint(u.x) != as_uint(a1[k]) || as_uint(u.y) != as_uint(a2[k]))
+      atomic_inc(bad);
+  }
+}
+)", "-cl-std=CL1.2 -I " + Common);
+  const cl_uint N = 4096 * 8;
+  cl_uint Zero = 0, Bad = 1;
+  cl::Buffer B = Cl.allocateWith("bad", &Zero, sizeof Zero, CL_MEM_READ_WRITE);
+  cl::Kernel K(P, "sobol8");
+  K.setArg(0, N), K.setArg(1, B);
+  Cl.launch(K, N, "sobol8");
+  Cl.finish();
+  Cl.read(B, &Bad, sizeof Bad);
+  EXPECT_EQ(Bad, 0u);
+}
