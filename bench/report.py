@@ -630,7 +630,7 @@ def ao_section(d):
         return lines + ["Not measured yet: run `bench/run --only ao`.", ""]
     lines += ["`bench/ao.py` (`%s`, %s, 5-minute load average %.1f on 2 cores): the atrium with "
               "rust (its mask reads AO), %s, 1 spp, per trace backend: parallel AO (`embree`: "
-              "`ao_rays` makes every AO ray of every hit, one Embree stream traces them, "
+              "`ao_rays` makes every AO ray of every hit, Embree traces each hit's rays as one packet, "
               "`ao_reduce` averages; `opencl`: `ao_trace`, one work-item per AO ray, then "
               "`ao_reduce`) against `--ao-method=loop` (`ao_loop`: one OpenCL work-item per hit "
               "looping over its rays, the design the paper argues against). Same rays: the "
