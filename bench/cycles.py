@@ -620,6 +620,8 @@ def main():
                     "--agree-size (default 256x256) and --agree-spp (default 128); "
                     "--agree-variants picks one of them, --merge replaces only its results; "
                     "results in bench/results/cycles_texture_only.json")
+    ap.add_argument("--seed", type=int, default=1,
+                    help="with --texture-only: both renderers' seed (default 1)")
     ap.add_argument("--noise-seed", type=int,
                     help="with --texture-only: both renderers also at this seed; per block, "
                     "the renderers' difference against their seed-to-seed noise (results' "
@@ -640,7 +642,8 @@ def main():
         which = [v for v in args.agree_variants.split(",") if v != "diffuse"] or \
             list(TEXTURE_ONLY_VARIANTS)
         data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which,
-                            noise_seed=args.noise_seed, probe=args.texture_probe)
+                            seed=args.seed, noise_seed=args.noise_seed,
+                            probe=args.texture_probe)
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "build": os.path.relpath(tools.build,
