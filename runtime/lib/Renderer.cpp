@@ -259,7 +259,8 @@ void Renderer::allocateWorkBuffers(size_t N) {
   B["hitMaterial"] = Cl->allocate("hitMaterial", PerHit * sizeof(cl_int), RW);
   B["textureOutputs"] = Cl->allocate("textureOutputs", (HasTextureWork ? N : 1) * Lay.MaxOutputs * sizeof(cl_float4), RW);
   // layout.json's scratch per hit (wavefront: every node's value), or the spilled value stack.
-  size_t ScratchPerHit = std::max<size_t>(Lay.ScratchFloat4PerHit, Lay.Spill ? Lay.StackSlots : 0);
+  size_t ScratchPerHit = std::max<size_t>({Lay.ScratchFloat4PerHit, Lay.Spill ? Lay.StackSlots : 0,
+                                           Tiers->quickScratchFloat4PerHit()}); // + quick tier
   B["textureScratch"] = Cl->allocate("textureScratch", std::max<size_t>(1, N * ScratchPerHit) * sizeof(cl_float4), RW);
   const cl_int NoFault[TEXCC_FAULT_WORDS] = {};
   B["textureFaults"] = Cl->allocateWith("textureFaults", NoFault, sizeof NoFault, RW);

@@ -6,6 +6,9 @@
 #include "texrender/Error.h"
 
 #include <cstdio>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 namespace texrender {
 
@@ -93,6 +96,7 @@ double TierManager::foregroundBuildSeconds() const {
 
 void TierManager::activate(const cl::Program &P, bool Fallback) {
   TextureKernels.clear();
+  ActiveQuick = false;
   ActiveFallback = Fallback;
   ActiveTier = tierName(Fallback);
   std::string File = Fallback ? Lay.InterpFallback : Lay.KernelSource;
@@ -152,9 +156,21 @@ void TierManager::buildShapeTiers(const char *Reason) {
     ShapeNames.push_back(Lay.Uniforms);
   requireKernelsDeclared(Lay.KernelSource, ShapeText, ShapeNames);
   const std::string FallbackHeadroom = stackHeadroomOption(Lay, FallbackText, FallbackSlots);
-  const TierBuildPlan Plan =
-      planTierBuilds(Policy, Cl.isCached(ShapeText, ProgramOptions),
-                     Cl.isCached(FallbackText, ProgramOptions + FallbackHeadroom));
+  const bool ShapeCached = Cl.isCached(ShapeText, ProgramOptions);
+  const bool FallbackCached = Cl.isCached(FallbackText, ProgramOptions + FallbackHeadroom);
+  const TierBuildPlan Plan = planTierBuilds(Policy, ShapeCached, FallbackCached);
+  // Neither cached (a changed function): the quick tier, when it needs at most one build; the
+  // shape kernel and its fallback are built behind it (held back like the fallback below).
+  if (Policy == TierPolicy::Auto && !ShapeCached && !FallbackCached && buildQuickTier(Reason)) {
+    Layout Same = Lay;
+    QueuedBuild B{[Same] { return Same; }, TierJob{/*SameLayout=*/true, true, true}, nullptr,
+                  Reason};
+    if (DeferFallback)
+      Deferred = std::move(B);
+    else
+      startBackgroundBuild(std::move(B.MakeLayout), B.Job, nullptr, Reason);
+    return;
+  }
   if (Plan.ShapeNow)
     ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, false, Reason);
   if (Plan.InterpNow)
@@ -168,6 +184,146 @@ void TierManager::buildShapeTiers(const char *Reason) {
       Deferred = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
     else
       startBackgroundBuild([Same] { return Same; }, Job, nullptr, Reason);
+  }
+}
+
+unsigned TierManager::quickScratchFloat4PerHit() const {
+  return QuickTier ? Lay.Manifest.Kernel.QuickScratchFloat4PerHit : 0;
+}
+
+bool TierManager::buildQuickTier(const char *Reason) {
+  const texcc::kernel::KernelEntries &K = Lay.Manifest.Kernel;
+  if (!QuickTier || FramesRendered == 0 || K.QuickPrograms.empty() || K.QuickEntry.empty())
+    return false;
+  // A warm-up in flight is waited for: the compiler is busy with it either way, and the quick
+  // tier then does not depend on how far it got.
+  mergeQuickWarmUp(/*Wait=*/true);
+  std::vector<std::string> Paths, Texts;
+  unsigned Missing = 0;
+  for (const texcc::kernel::QuickProgram &P : K.QuickPrograms) {
+    Paths.push_back(Lay.Dir + "/" + P.Source);
+    Texts.push_back(readKernelSource(Paths.back()));
+    Missing += QuickKept.count(quickKey(Texts.back())) ? 0 : 1;
+  }
+  if (Missing > 1)
+    return false;
+  std::map<std::string, cl::Program> Now;
+  std::map<std::string, cl::Program> ByKernel;
+  for (size_t I = 0; I < Texts.size(); ++I) {
+    const texcc::kernel::QuickProgram &P = K.QuickPrograms[I];
+    auto It = QuickKept.find(quickKey(Texts[I]));
+    cl::Program Prog;
+    if (It != QuickKept.end()) {
+      Prog = It->second;
+    } else {
+      requireKernelsDeclared(Paths[I], Texts[I], P.Kernels);
+      BuildEvent E;
+      E.Kernel = QuickTierName;
+      E.Reason = Reason;
+      E.StartSeconds = steadySeconds() - Epoch;
+      Prog = Cl.buildProgram(Paths[I], Texts[I], ProgramOptions);
+      warmUpKernels(Cl, Prog, P.Kernels, Paths[I]); // PoCL's compile belongs to the build
+      E.ReadySeconds = steadySeconds() - Epoch;
+      E.FirstFrame = int(FramesRendered);
+      Events.push_back(E);
+    }
+    Now[quickKey(Texts[I])] = Prog;
+    for (const std::string &Name : P.Kernels)
+      ByKernel[Name] = Prog;
+  }
+  QuickKept = std::move(Now); // only this layout's programs are kept
+  std::vector<std::string> Names;
+  for (const texcc::kernel::LaunchLayout &L : K.QuickLaunches)
+    Names.push_back(L.Kernel);
+  Names.push_back(K.QuickEntry);
+  TextureKernels.clear();
+  for (const std::string &N : Names) {
+    auto It = ByKernel.find(N);
+    if (It == ByKernel.end())
+      throw Error(Lay.Dir + "/layout.json: /kernel/quick: no program holds kernel '" + N + "'");
+    TextureKernels.push_back(cl::Kernel(It->second, N.c_str()));
+  }
+  ActiveQuick = true;
+  ActiveFallback = false;
+  ActiveTier = QuickTierName;
+  UniformsKernel = cl::Kernel(); // node kernels call the functions unhoisted
+  UniformsDirty = true;
+  return true;
+}
+
+bool TierManager::warmQuickPrograms() {
+  const texcc::kernel::KernelEntries &K = Lay.Manifest.Kernel;
+  if (!QuickTier || !HasTextureWork || K.QuickPrograms.empty())
+    return false;
+  mergeQuickWarmUp(false);
+  if (QuickWarming.valid())
+    return false;
+  struct Todo {
+    std::string Path, Source;
+    std::vector<std::string> Kernels;
+  };
+  std::vector<Todo> Work;
+  for (const texcc::kernel::QuickProgram &P : K.QuickPrograms) {
+    Todo T{Lay.Dir + "/" + P.Source, readKernelSource(Lay.Dir + "/" + P.Source), P.Kernels};
+    if (!QuickKept.count(quickKey(T.Source)))
+      Work.push_back(std::move(T));
+  }
+  if (Work.empty())
+    return false;
+  ClContext *Ctx = &Cl;
+  const std::string Options = ProgramOptions;
+  const double Start = Epoch;
+  QuickWarming = std::async(std::launch::async, [Ctx, Work, Options, Start] {
+    // As BackgroundBuild's thread: nice 19 (Linux: a thread's nice value is its own).
+    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), 19);
+    std::vector<QuickWarmed> Out;
+    for (const Todo &T : Work) {
+      QuickWarmed W;
+      W.Source = T.Source;
+      W.StartSeconds = steadySeconds() - Start;
+      try {
+        W.Program = Ctx->buildProgram(T.Path, T.Source, Options, "", /*Background=*/true);
+        warmUpKernels(*Ctx, W.Program, T.Kernels, T.Path);
+      } catch (const std::exception &E) {
+        W.Program = cl::Program();
+        W.Error = E.what();
+      }
+      W.ReadySeconds = steadySeconds() - Start;
+      Out.push_back(std::move(W));
+    }
+    return Out;
+  });
+  return true;
+}
+
+std::optional<std::pair<double, unsigned>> TierManager::quickWarmUpFinished() {
+  if (!QuickWarming.valid() ||
+      QuickWarming.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return std::nullopt;
+  const size_t First = Events.size();
+  mergeQuickWarmUp(false);
+  if (Events.size() == First)
+    return std::nullopt;
+  return std::make_pair(Events.back().ReadySeconds - Events[First].StartSeconds,
+                        unsigned(Events.size() - First));
+}
+
+void TierManager::mergeQuickWarmUp(bool Wait) {
+  if (!QuickWarming.valid())
+    return;
+  if (!Wait && QuickWarming.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  for (QuickWarmed &W : QuickWarming.get()) {
+    BuildEvent E;
+    E.Kernel = QuickTierName;
+    E.Reason = "warm-up";
+    E.Background = true;
+    E.StartSeconds = W.StartSeconds;
+    E.ReadySeconds = W.ReadySeconds;
+    E.Error = W.Error;
+    Events.push_back(E);
+    if (W.Error.empty())
+      QuickKept[quickKey(W.Source)] = W.Program;
   }
 }
 
@@ -220,6 +376,7 @@ void TierManager::launchQueued() {
       },
       Events.size() - 1);
   PendingReencode = std::move(Queued->Reencode);
+  PendingSwitches = Queued->Job.Shape || !Queued->Job.SameLayout;
   Queued.reset();
 }
 
@@ -295,6 +452,7 @@ void TierManager::adopt(TierBuildResult &R) {
 
 double TierManager::waitForBackgroundBuild() {
   double T0 = steadySeconds();
+  mergeQuickWarmUp(/*Wait=*/true);
   while (Pending || Queued || !Retired.empty()) {
     reapRetired(/*Wait=*/true);
     launchQueued();

@@ -54,6 +54,9 @@ void Session::idle(double Until) {
     End = std::min(End, Until);
   // A control line or texcc's end wakes it at once (Waker), a saved file at the next poll.
   Waker->waitFor(std::max(1, int((End - nowSeconds()) * 1000)));
+  if (auto Warm = R->quickWarmUpFinished())
+    say("the quick tier's programs are built (" + std::to_string(Warm->second) + " in " +
+        ms(Warm->first) + ")");
   if (nowSeconds() - LastPoll >= 0.1)
     poll();
 }
@@ -69,6 +72,7 @@ bool Session::tierBuilt() {
 WatchResult Session::run() {
   R = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
   R->setDeferFallbackBuilds(true); // started after a complete frame (renderFrame)
+  R->setQuickTier(true);            // its programs warmed up after a complete frame
   Editor = std::make_unique<LiveEditor>(Lay);
   watchFiles();
   say("watching " + GraphPath + ", its sources and " + O.ScenePath + "; Ctrl-C ends");
@@ -264,6 +268,7 @@ void Session::reloadScene() {
   try {
     auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
     New->setDeferFallbackBuilds(true);
+    New->setQuickTier(true);
     // A new OpenCL context: primed again after its first complete frame.
     if (Prime.joinable())
       Prime.join();

@@ -212,8 +212,16 @@ void Session::renderFrame() {
   primeCompiler();
   // The interp fallback of a regenerated shape kernel, held back while its first frames
   // rendered (TierManager::setDeferFallbackBuilds).
+  const bool Quick = R->activeTier() == QuickTierName;
   if (R->startDeferredBuild())
-    say("the interp fallback builds in the background now (held back until a complete frame)");
+    say(Quick ? "the shape kernel and its interp fallback build in the background now (held "
+                "back until a complete frame)"
+              : "the interp fallback builds in the background now (held back until a complete "
+                "frame)");
+  // Shape mode's quick tier: the programs of the layout's functions, built once in the
+  // background so that a saved source file rebuilds only the changed function's.
+  else if (R->warmQuickPrograms())
+    say("the quick tier's programs build in the background now");
   while (!stopping() && !work())
     idle();
 }

@@ -132,6 +132,12 @@ public:
   /// TierManager::setDeferFallbackBuilds and startDeferredBuild (texrender --watch).
   void setDeferFallbackBuilds(bool On) { Tiers->setDeferFallbackBuilds(On); }
   bool startDeferredBuild() { return Tiers->startDeferredBuild(); }
+  /// TierManager::setQuickTier and warmQuickPrograms (texrender --watch).
+  void setQuickTier(bool On) { Tiers->setQuickTier(On); }
+  bool warmQuickPrograms() { return Tiers->warmQuickPrograms(); }
+  std::optional<std::pair<double, unsigned>> quickWarmUpFinished() {
+    return Tiers->quickWarmUpFinished();
+  }
 
   /// The texture kernels, their tiers and builds (TierManager.h).
   const TierManager &tiers() const { return *Tiers; }

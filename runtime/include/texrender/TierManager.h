@@ -13,6 +13,8 @@
 #include "texrender/TextureTiers.h"
 
 #include <functional>
+#include <future>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,6 +34,9 @@ struct TierBuildPlan {
   bool ShapeLater = false, InterpLater = false;
 };
 TierBuildPlan planTierBuilds(TierPolicy P, bool ShapeCached, bool FallbackCached);
+
+/// The quick tier's name (stats.json, the frame log).
+constexpr const char *QuickTierName = "quick";
 
 class TierManager {
 public:
@@ -65,7 +70,12 @@ public:
   /// Waits for the background build in flight, if any, and switches to its kernels. Returns
   /// the seconds waited.
   double waitForBackgroundBuild();
-  bool backgroundBuildPending() const { return Pending || Queued; }
+  /// A background build is queued or running; one that makes a kernel to switch to (the shape
+  /// kernel, or a new layout) no longer counts once it is done, so that an idle session notices
+  /// it (the next frame adopts it).
+  bool backgroundBuildPending() const {
+    return Queued || (Pending && (!PendingSwitches || !Pending->ready()));
+  }
   /// On: a background build that makes only the interp fallback of a layout whose own kernel
   /// renders (tier auto, the shape kernel built in the foreground) waits for
   /// startDeferredBuild() instead of starting with the layout. texrender --watch starts it once
@@ -76,6 +86,22 @@ public:
   /// it started.
   bool startDeferredBuild();
 
+  /// On (texrender --watch): shape mode's quick tier (layout.json kernel.quick, docs/live.md).
+  /// warmQuickPrograms() builds the layout's quick programs on a thread of their own and keeps
+  /// them; a regenerated layout whose shape kernel and fallback are both uncached then renders
+  /// with its quick programs when all but at most one are kept (a saved source file that changed
+  /// one function): that one is built in the foreground, tier "quick", and the shape kernel and
+  /// its fallback are built by the deferred build (setDeferFallbackBuilds), which switches to
+  /// the shape tier.
+  void setQuickTier(bool On) { QuickTier = On; }
+  /// Starts building, in the background, the quick programs of the layout not kept yet (none
+  /// while an earlier warm-up runs); returns whether it started.
+  bool warmQuickPrograms();
+  /// Once, when a warm-up started by warmQuickPrograms has ended: its wall seconds (first
+  /// start to last end) and the programs it built; std::nullopt otherwise.
+  std::optional<std::pair<double, unsigned>> quickWarmUpFinished();
+  /// The node values per hit the quick tier needs in the texture scratch buffer (0 when off).
+  unsigned quickScratchFloat4PerHit() const;
   /// The active tier's texture kernels in launch order (one, or wavefront's node launches and
   /// its outputs kernel).
   std::vector<cl::Kernel> &kernels() { return TextureKernels; }
@@ -98,6 +124,10 @@ public:
 
 private:
   void buildShapeTiers(const char *Reason);
+  /// The quick tier for this layout, if its programs are kept but at most one (built here).
+  bool buildQuickTier(const char *Reason);
+  void mergeQuickWarmUp(bool Wait);
+  static std::string quickKey(const std::string &Source) { return Source; }
   /// ExtraOptions: appended to ProgramOptions (the value-stack headroom's -D).
   /// Fallback: the program is the layout's interp fallback (Caps.InterpFallback), else the
   /// layout's own kernel.
@@ -128,6 +158,7 @@ private:
 
   std::string ActiveTier;      // tierName(ActiveFallback); "" without texture work
   bool ActiveFallback = false; // the interp fallback renders
+  bool ActiveQuick = false;    // the quick tier renders (kernels of QuickKept's programs)
   std::vector<cl::Kernel> TextureKernels;
   // The texcc_uniforms of the shape tier or of an interp kernel that hoists (Layout::Uniforms),
   // and whether fakeStack changed (or the kernel did) since it last ran.
@@ -137,6 +168,7 @@ private:
   unsigned FallbackSlots = 0;
   unsigned InterpModeSlots = 0;
   std::unique_ptr<BackgroundBuild> Pending;
+  bool PendingSwitches = false; // Pending makes a kernel the next frame renders with
   std::function<void(Layout &)> PendingReencode;
   std::vector<std::unique_ptr<BackgroundBuild>> Retired;
   // The newest build requested while a superseded one still runs: it starts when that ends.
@@ -151,6 +183,16 @@ private:
   std::optional<QueuedBuild> Deferred; // setDeferFallbackBuilds's build, until started
   std::vector<BuildEvent> Events;
   unsigned FramesRendered = 0;
+  bool QuickTier = false;
+  // Quick programs built and warmed up, by source text (those of the current layout).
+  std::map<std::string, cl::Program> QuickKept;
+  struct QuickWarmed {
+    std::string Source;
+    cl::Program Program;
+    double StartSeconds = 0, ReadySeconds = 0;
+    std::string Error;
+  };
+  std::future<std::vector<QuickWarmed>> QuickWarming;
 };
 
 } // namespace texrender

@@ -98,8 +98,8 @@ public:
            " *      then texcc_wf_outputs";
   }
   void emit(std::ostringstream &OS, const graph::CompiledGraph &CG,
-            const CodegenOptions &) const override {
-    emitWavefront(OS, CG);
+            const CodegenOptions &Opts) const override {
+    emitWavefront(OS, CG, Opts.WavefrontOnlyFunction, Opts.WavefrontOutputsOnly);
   }
 };
 
@@ -135,6 +135,24 @@ public:
     CodegenOptions Interp = Opts;
     Interp.EvalMode = Mode::Interp;
     Files.push_back({InterpFallbackFile, generateKernel(CG, Interp)});
+    // The quick tier (docs/live.md): per live function a wavefront program of its nodes, and
+    // the outputs kernel's. A function's program text depends only on its own code (and the
+    // graph), so a saved source file changes only the programs of the functions it changed.
+    if (CG.Nodes.empty())
+      return;
+    CodegenOptions Quick = Opts;
+    Quick.EvalMode = Mode::Wavefront;
+    Quick.InterpUserCode.clear();
+    for (const std::string &Fn : CG.liveFunctions()) {
+      auto It = Opts.QuickUserCode.find(Fn);
+      Quick.UserCode = It == Opts.QuickUserCode.end() ? std::string() : It->second;
+      Quick.WavefrontOnlyFunction = Fn;
+      Files.push_back({quickProgramFile(Fn), generateKernel(CG, Quick)});
+    }
+    Quick.UserCode.clear();
+    Quick.WavefrontOnlyFunction.clear();
+    Quick.WavefrontOutputsOnly = true;
+    Files.push_back({QuickOutputsFile, generateKernel(CG, Quick)});
   }
 };
 

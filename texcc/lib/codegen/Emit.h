@@ -118,7 +118,14 @@ void emitShape(std::ostringstream &OS, const graph::CompiledGraph &CG);
 /// `texcc_program(fakeStack, mat)`: the word offset of material mat's program (interp, shape).
 void emitProgramLocator(std::ostringstream &OS);
 void emitInline(std::ostringstream &OS, const graph::CompiledGraph &CG);
-void emitWavefront(std::ostringstream &OS, const graph::CompiledGraph &CG);
+/// OnlyFunction: only the node kernels of that function's nodes and no outputs kernel (a quick
+/// program of shape mode); OutputsOnly: only the outputs kernel.
+void emitWavefront(std::ostringstream &OS, const graph::CompiledGraph &CG,
+                   const std::string &OnlyFunction = "", bool OutputsOnly = false);
+/// Shape mode's quick tier (layout.json kernel.quick): the file of function Fn's program, and
+/// of the outputs kernel's.
+std::string quickProgramFile(const std::string &Fn);
+constexpr const char *QuickOutputsFile = "proctex.quick.outputs.cl";
 void emitHost(std::ostringstream &OS, const graph::CompiledGraph &CG);
 
 } // namespace texcc::codegen

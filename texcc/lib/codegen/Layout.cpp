@@ -25,6 +25,20 @@ static kernel::KernelEntries kernelEntries(const CompiledGraph &CG, const Codege
     K.ShapeHash = shapeHash(CG);
     if (!hoistingFunctions(CG).empty())
       K.Uniforms = UniformsEntry;
+    if (!CG.Nodes.empty()) { // the quick tier (Backend.cpp, ShapeBackend::addOutputs)
+      for (const std::string &Fn : CG.liveFunctions()) {
+        kernel::QuickProgram P{quickProgramFile(Fn), {}};
+        for (unsigned N : CG.WavefrontOrder)
+          if (CG.Nodes[N].Fn == Fn)
+            P.Kernels.push_back(wavefrontKernelName(N));
+        K.QuickPrograms.push_back(P);
+      }
+      K.QuickPrograms.push_back({QuickOutputsFile, {WavefrontOutputsEntry}});
+      for (unsigned N : CG.WavefrontOrder)
+        K.QuickLaunches.push_back({wavefrontKernelName(N), N});
+      K.QuickEntry = WavefrontOutputsEntry;
+      K.QuickScratchFloat4PerHit = static_cast<unsigned>(CG.Nodes.size());
+    }
     return K;
   }
   if (Opts.EvalMode != Mode::Wavefront) {

@@ -92,11 +92,17 @@ static void emitOutputsKernel(std::ostringstream &OS, const CompiledGraph &CG) {
      << "}\n";
 }
 
-void emitWavefront(std::ostringstream &OS, const CompiledGraph &CG) {
+void emitWavefront(std::ostringstream &OS, const CompiledGraph &CG,
+                   const std::string &OnlyFunction, bool OutputsOnly) {
   const std::vector<std::vector<unsigned>> Users = nodeUsers(CG);
-  for (unsigned NodeIndex : CG.WavefrontOrder)
-    emitNodeKernel(OS, CG, NodeIndex, Users[NodeIndex]);
-  emitOutputsKernel(OS, CG);
+  if (!OutputsOnly)
+    for (unsigned NodeIndex : CG.WavefrontOrder)
+      if (OnlyFunction.empty() || CG.Nodes[NodeIndex].Fn == OnlyFunction)
+        emitNodeKernel(OS, CG, NodeIndex, Users[NodeIndex]);
+  if (OnlyFunction.empty())
+    emitOutputsKernel(OS, CG);
 }
+
+std::string quickProgramFile(const std::string &Fn) { return "proctex.quick.fn." + Fn + ".cl"; }
 
 } // namespace texcc::codegen

@@ -107,6 +107,9 @@ static void renderUserCode(const cg::Backend &B, const fe::FrontendResult &FR,
   CO.UserCode = renderReachableUserCode(FR, CG, CG.liveFunctions(), B.hoistedInUserCode(CG));
   if (!B.writesInterpreter() || CG.Nodes.empty())
     return;
+  if (CO.EvalMode == cg::Mode::Shape)
+    for (const std::string &Fn : CG.liveFunctions())
+      CO.QuickUserCode[Fn] = renderReachableUserCode(FR, CG, {Fn}, {});
   std::set<std::string> All;
   for (const auto &KV : CG.Signatures)
     All.insert(KV.first);

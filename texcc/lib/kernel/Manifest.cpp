@@ -67,10 +67,15 @@ bool ShapeLayout::operator==(const ShapeLayout &O) const {
 bool LaunchLayout::operator==(const LaunchLayout &O) const {
   return std::tie(Kernel, Node) == std::tie(O.Kernel, O.Node);
 }
+bool QuickProgram::operator==(const QuickProgram &O) const {
+  return std::tie(Source, Kernels) == std::tie(O.Source, O.Kernels);
+}
 bool KernelEntries::operator==(const KernelEntries &O) const {
-  return std::tie(Source, Entry, InterpFallback, Shapes, ShapeHash, Uniforms, Launches) ==
+  return std::tie(Source, Entry, InterpFallback, Shapes, ShapeHash, Uniforms, Launches,
+                  QuickPrograms, QuickLaunches, QuickEntry, QuickScratchFloat4PerHit) ==
          std::tie(O.Source, O.Entry, O.InterpFallback, O.Shapes, O.ShapeHash, O.Uniforms,
-                  O.Launches);
+                  O.Launches, O.QuickPrograms, O.QuickLaunches, O.QuickEntry,
+                  O.QuickScratchFloat4PerHit);
 }
 bool Manifest::operator==(const Manifest &O) const {
   return std::tie(Version, Mode, Target, Graph, CompileOptions, HasCompileOptions, Kernel, Caps,

@@ -474,6 +474,21 @@ void readTop(const Json &J, Manifest &M) {
         M.Kernel.Launches.push_back({La.str("kernel"), La.u("node", 0)});
       }
     }
+    if (K.has("quick")) {
+      Obj Q(K.req("quick"), "/kernel/quick");
+      const Json &Ps = Q.array("programs");
+      for (size_t I = 0; I < Ps.size(); ++I) {
+        Obj P(Ps[I], "/kernel/quick/programs/" + std::to_string(I));
+        M.Kernel.QuickPrograms.push_back({P.str("source"), P.strings("kernels")});
+      }
+      const Json &Ls = Q.array("launches");
+      for (size_t I = 0; I < Ls.size(); ++I) {
+        Obj La(Ls[I], "/kernel/quick/launches/" + std::to_string(I));
+        M.Kernel.QuickLaunches.push_back({La.str("kernel"), La.u("node", 0)});
+      }
+      M.Kernel.QuickEntry = Q.str("entry");
+      M.Kernel.QuickScratchFloat4PerHit = Q.u("scratchFloat4PerHit", 0);
+    }
   }
   M.MaxOutputs = std::max(1u, O.u("maxOutputs", 1));
   M.HasCapabilities = O.has("capabilities");

@@ -49,6 +49,18 @@ OJson kernelJson(const KernelEntries &K) {
     J["launches"] = arrayOf(K.Launches, [](const LaunchLayout &L) -> OJson {
       return {{"kernel", L.Kernel}, {"node", L.Node}};
     });
+  if (!K.QuickPrograms.empty()) {
+    OJson Q = OJson::object();
+    Q["programs"] = arrayOf(K.QuickPrograms, [](const QuickProgram &P) -> OJson {
+      return {{"source", P.Source}, {"kernels", P.Kernels}};
+    });
+    Q["launches"] = arrayOf(K.QuickLaunches, [](const LaunchLayout &L) -> OJson {
+      return {{"kernel", L.Kernel}, {"node", L.Node}};
+    });
+    Q["entry"] = K.QuickEntry;
+    Q["scratchFloat4PerHit"] = K.QuickScratchFloat4PerHit;
+    J["quick"] = Q;
+  }
   return J;
 }
 

@@ -140,12 +140,23 @@ TEST(ShapeKernel, OneBodyPerShapeAndACaseForEveryMaterial) {
 TEST(ShapeKernel, WritesTheInterpKernelAsFallbackAndListsTheShapes) {
   CompiledGraph CG = compile(GraphText);
   std::vector<OutputFile> Files = generateOutputs(CG, shapeOptions(), false);
-  ASSERT_EQ(Files.size(), 4u);
+  // proctex.cl, the fallback, the quick tier's program of each of the 2 live functions and of
+  // the outputs kernel (docs/live.md), layout.json, args.bin.
+  ASSERT_EQ(Files.size(), 7u);
   EXPECT_EQ(Files[1].Name, InterpFallbackFile);
   CodegenOptions Interp = shapeOptions();
   Interp.EvalMode = Mode::Interp;
   EXPECT_EQ(Files[1].Contents, generateKernel(CG, Interp));
-  nlohmann::json L = nlohmann::json::parse(Files[2].Contents);
+  for (size_t I : {2u, 3u}) {
+    EXPECT_EQ(Files[I].Name.rfind("proctex.quick.fn.", 0), 0u) << Files[I].Name;
+    EXPECT_NE(Files[I].Contents.find("__kernel void texcc_wf_"), std::string::npos);
+    EXPECT_EQ(Files[I].Contents.find("__kernel void texcc_wf_outputs"), std::string::npos);
+  }
+  EXPECT_EQ(Files[4].Name, "proctex.quick.outputs.cl");
+  EXPECT_EQ(count(Files[4].Contents, "__kernel void "), 1u);
+  nlohmann::json L = nlohmann::json::parse(Files[5].Contents);
+  EXPECT_EQ(L["kernel"]["quick"]["programs"].size(), 3u);
+  EXPECT_EQ(L["kernel"]["quick"]["entry"], "texcc_wf_outputs");
   EXPECT_EQ(L["mode"], "shape");
   EXPECT_EQ(L["kernel"]["interpFallback"], "proctex.interp.cl");
   EXPECT_EQ(L["kernel"]["shapes"].dump(),

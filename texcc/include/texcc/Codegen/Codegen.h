@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <set>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,13 @@ struct CodegenOptions {
   /// the OpenCL interp kernel's (interp mode, shape mode's proctex.interp.cl), which has a case
   /// for each. Empty: UserCode.
   std::string InterpUserCode;
+  /// Shape mode's quick tier: per live texture function, the user code it reaches, unhoisted
+  /// (its wavefront program, proctex.quick.fn.<fn>.cl).
+  std::map<std::string, std::string> QuickUserCode;
+  /// Wavefront code of one function's nodes only, without the outputs kernel; or only the
+  /// outputs kernel (the quick tier's programs).
+  std::string WavefrontOnlyFunction;
+  bool WavefrontOutputsOnly = false;
   /// Interp mode: the interp kernel calls texcc_hoisted_<fn> for every function with hoisted
   /// values (interpHoistingFunctions), reading them from the record, and has the kernel
   /// texcc_uniforms that computes them (docs/modes.md). Off for shape mode's fallback.

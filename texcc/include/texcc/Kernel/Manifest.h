@@ -160,6 +160,16 @@ struct LaunchLayout {
   bool operator==(const LaunchLayout &O) const;
 };
 
+/// Shape mode's quick tier (kernel.quick, docs/live.md): one program per live texture function
+/// holding that function's wavefront node kernels (and the user code it reaches), plus one for
+/// the outputs kernel; after a saved source file the runtime rebuilds only the programs whose
+/// text changed.
+struct QuickProgram {
+  std::string Source;               // the program's file, in the texture folder
+  std::vector<std::string> Kernels; // its node kernels (or the outputs kernel)
+  bool operator==(const QuickProgram &O) const;
+};
+
 /// kernel: the entry points.
 struct KernelEntries {
   std::string Source = "proctex.cl";
@@ -169,6 +179,10 @@ struct KernelEntries {
   std::string ShapeHash;            // shape mode
   std::string Uniforms;             // the hoisted-value kernel ("" when none)
   std::vector<LaunchLayout> Launches; // wavefront: node kernels in order; Entry runs last
+  std::vector<QuickProgram> QuickPrograms; // shape mode: the quick tier's programs
+  std::vector<LaunchLayout> QuickLaunches; // their node kernels in order; QuickEntry runs last
+  std::string QuickEntry;                  // the quick tier's outputs kernel
+  unsigned QuickScratchFloat4PerHit = 0;   // node values per hit the quick tier keeps
   bool operator==(const KernelEntries &O) const;
 };
 
