@@ -263,8 +263,9 @@ def edit_session(transport, tools, textures, first_pass, work):
             "edits": rows}
 
 
-def source_edit(transport, tools, textures, folder, work):
-    """Saves a copy of rust.cl with one constant changed while the preview is idle."""
+def source_edit(transport, tools, textures, folder, work, wait_quick=True):
+    """Saves a copy of rust.cl with one constant changed while the preview is idle (after the
+    quick tier's warm-up; wait_quick False: binaries without the quick tier)."""
     path = os.path.join(folder, "rust.cl")
     with open(path) as f:
         original = f.read()
@@ -276,7 +277,7 @@ def source_edit(transport, tools, textures, folder, work):
         # mode, docs/live.md); a save during that warm-up waits for it: measured after it.
         log = getattr(ch, "log_path", None) or getattr(ch, "log_name", None)
         warm = wait_log(log, r"the quick tier's programs are built \((\d+) in (\d+) ms\)",
-                        "the quick tier's warm-up", ch)
+                        "the quick tier's warm-up", ch) if wait_quick else None
         time.sleep(SETTLE)
         while not ch.events.empty():
             ch.events.get()
@@ -297,7 +298,8 @@ def source_edit(transport, tools, textures, folder, work):
         with open(path, "w") as f:
             f.write(original)
     return {"firstFrameMs": (first["t"] - t0) * 1000, "firstFrameTier": first.get("tier"),
-            "quickWarmUp": {"programs": int(warm.group(1)), "ms": int(warm.group(2))},
+            "quickWarmUp": {"programs": int(warm.group(1)), "ms": int(warm.group(2))}
+            if warm else None,
             "fullFrameMs": (full["t"] - t0) * 1000,
             "shapeFrameMs": (shape["t"] - t0) * 1000, "settleSeconds": SETTLE,
             "texrenderSplit": source_split(log) if log else None}
