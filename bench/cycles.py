@@ -73,6 +73,8 @@ def worker():
         scene.render.resolution_x, scene.render.resolution_y = req["size"]
         scene.cycles.samples = req["spp"]
         scene.cycles.seed = req.get("seed", 1)
+        if req.get("pattern"):  # Cycles' sampling pattern (default: the .blend's, Tabulated Sobol)
+            scene.cycles.sampling_pattern = req["pattern"]
         return scene
 
     def read_exr(path):
@@ -477,26 +479,26 @@ TEXTURE_ONLY_VARIANTS = ("rust-model", "scratches-model")
 
 
 def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge_range=0.5,
-                 seed=1, noise_seed=None, probe=None):
+                 seed=1, noise_seed=None, probe=None, pattern=None):
     """Issue 22: the model's material colour through Emission, no lights (make_scene.py
     --texture-only), rendered by Cycles and by texrender from the exporter's output of the same
     .blend; per-block agreement (the worker's blocks()). noise_seed: both renderers again at
     that seed, and the worker's noise() (the difference against its seed-to-seed noise).
     probe: make_scene.py's --texture-probe (rust: "ao", the AO node's output alone;
-    "constant-ao", AO replaced by 0.5)."""
+    "constant-ao", AO replaced by 0.5). pattern: Cycles' sampling pattern (e.g. BLUE_NOISE)."""
     w, h = (int(x) for x in size.split("x"))
     extra = ["--texture-only"] + (["--texture-probe", probe] if probe else [])
     blends = make_blends(tools, variants, extra, "-texture-only" + ("-" + probe if probe else ""))
     cyc = Cycles()
     out = {"size": size, "spp": spp, "cyclesVersion": cyc.version, "results": {},
-           "loadAverageBefore": os.getloadavg(), "probe": probe}
+           "loadAverageBefore": os.getloadavg(), "probe": probe, "cyclesPattern": pattern}
     try:
         for v in variants:
             mask = os.path.join(tools.work, "to-mask-%s.exr" % v)
             cyc.call(op="mask", blend=blends[v], size=[w, h], spp=16, exr=mask)
             cexr = os.path.join(tools.work, "to-cycles-%s.exr" % v)
             t = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, seed=seed,
-                         exr=cexr)["seconds"]
+                         exr=cexr, pattern=pattern)["seconds"]
             own = {v: exported(tools, blends[v], v + "-texture-only")}
             r, texr = texrender_once(tools, own, v, "auto", size, spp, "to-" + v, exr=True,
                                      seed=seed)
@@ -507,7 +509,7 @@ def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge
             if noise_seed is not None:
                 cexr2 = os.path.join(tools.work, "to-cycles-%s-%d.exr" % (v, noise_seed))
                 cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, seed=noise_seed,
-                         exr=cexr2)
+                         exr=cexr2, pattern=pattern)
                 _, texr2 = texrender_once(tools, own, v, "auto", size, spp,
                                           "to-%s-%d" % (v, noise_seed), exr=True,
                                           seed=noise_seed)
@@ -626,6 +628,9 @@ def main():
                     help="with --texture-only: both renderers also at this seed; per block, "
                     "the renderers' difference against their seed-to-seed noise (results' "
                     "\"noise\")")
+    ap.add_argument("--cycles-pattern", choices=("TABULATED_SOBOL", "BLUE_NOISE"),
+                    help="with --texture-only: Cycles' sampling pattern (default: the .blend's, "
+                    "Tabulated Sobol)")
     ap.add_argument("--texture-probe", choices=("ao", "ao-squared", "constant-ao"),
                     help="with --texture-only, rust-model: the AO node's output alone (ao), its "
                     "square (ao-squared) or the colour with AO replaced by a constant 0.5 (constant-ao); bisects issue 22's "
@@ -643,7 +648,7 @@ def main():
             list(TEXTURE_ONLY_VARIANTS)
         data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which,
                             seed=args.seed, noise_seed=args.noise_seed,
-                            probe=args.texture_probe)
+                            probe=args.texture_probe, pattern=args.cycles_pattern)
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "build": os.path.relpath(tools.build,
