@@ -145,11 +145,14 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
       std::vector<std::string> Kernels{R.L.Entry};
       if (!R.L.Uniforms.empty())
         Kernels.push_back(R.L.Uniforms);
-      R.Shape = buildAndWarm(Cl, R.L.KernelSource, readKernelSource(R.L.KernelSource), Kernels,
-                             Options);
+      R.Shape = buildAndWarm(Cl, R.L.KernelSource,
+                             Job.ShapeText.empty() ? readKernelSource(R.L.KernelSource)
+                                                   : Job.ShapeText,
+                             Kernels, Options);
     }
     if (Job.Interp) {
-      const std::string Source = readKernelSource(R.L.InterpFallback);
+      const std::string Source = Job.FallbackText.empty() ? readKernelSource(R.L.InterpFallback)
+                                                          : Job.FallbackText;
       const std::string Headroom = stackHeadroomOption(R.L, Source, R.FallbackSlots);
       R.Interp = buildAndWarm(Cl, R.L.InterpFallback, Source, {R.L.Entry}, Options + Headroom);
     }

@@ -163,7 +163,8 @@ void TierManager::buildShapeTiers(const char *Reason) {
   // shape kernel and its fallback are built behind it (held back like the fallback below).
   if (Policy == TierPolicy::Auto && !ShapeCached && !FallbackCached && buildQuickTier(Reason)) {
     Layout Same = Lay;
-    QueuedBuild B{[Same] { return Same; }, TierJob{/*SameLayout=*/true, true, true}, nullptr,
+    QueuedBuild B{[Same] { return Same; },
+                  TierJob{/*SameLayout=*/true, true, true, ShapeText, FallbackText}, nullptr,
                   Reason};
     if (DeferFallback)
       Deferred = std::move(B);
@@ -179,7 +180,8 @@ void TierManager::buildShapeTiers(const char *Reason) {
   activate(ShapeProgram() ? ShapeProgram : InterpProgram, !ShapeProgram());
   if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
-    TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater};
+    TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater,
+                ShapeText, FallbackText};
     if (DeferFallback && !Plan.ShapeLater)
       Deferred = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
     else

@@ -72,6 +72,9 @@ struct TierJob {
   bool SameLayout = false; // for the layout the renderer runs, else for MakeLayout's new one
   bool Shape = true;       // the layout's shape kernel
   bool Interp = false;     // the layout's interp fallback
+  // The programs' texts when read already (non-empty): a live edit's regenerated layout lives
+  // in a temporary folder that is gone by the time a deferred build runs.
+  std::string ShapeText, FallbackText;
 };
 
 /// Builds the programs Job names for the layout MakeLayout gives (run first, on the calling
