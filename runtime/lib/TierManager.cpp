@@ -197,9 +197,9 @@ bool TierManager::buildQuickTier(const char *Reason) {
   const texcc::kernel::KernelEntries &K = Lay.Manifest.Kernel;
   if (!QuickTier || FramesRendered == 0 || K.QuickPrograms.empty() || K.QuickEntry.empty())
     return false;
-  // A warm-up in flight is waited for: the compiler is busy with it either way, and the quick
-  // tier then does not depend on how far it got.
-  mergeQuickWarmUp(/*Wait=*/true);
+  // A warm-up still in flight is not waited for (it can take seconds at nice 19): without its
+  // programs the edit takes the shape kernel's path, as before the quick tier.
+  mergeQuickWarmUp(/*Wait=*/false);
   std::vector<std::string> Paths, Texts;
   unsigned Missing = 0;
   for (const texcc::kernel::QuickProgram &P : K.QuickPrograms) {
@@ -299,15 +299,10 @@ bool TierManager::warmQuickPrograms() {
 }
 
 std::optional<std::pair<double, unsigned>> TierManager::quickWarmUpFinished() {
-  if (!QuickWarming.valid() ||
-      QuickWarming.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-    return std::nullopt;
-  const size_t First = Events.size();
   mergeQuickWarmUp(false);
-  if (Events.size() == First)
-    return std::nullopt;
-  return std::make_pair(Events.back().ReadySeconds - Events[First].StartSeconds,
-                        unsigned(Events.size() - First));
+  std::optional<std::pair<double, unsigned>> R = QuickWarmReport;
+  QuickWarmReport.reset();
+  return R;
 }
 
 void TierManager::mergeQuickWarmUp(bool Wait) {
@@ -315,7 +310,11 @@ void TierManager::mergeQuickWarmUp(bool Wait) {
     return;
   if (!Wait && QuickWarming.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
     return;
-  for (QuickWarmed &W : QuickWarming.get()) {
+  std::vector<QuickWarmed> Done = QuickWarming.get();
+  if (!Done.empty())
+    QuickWarmReport = std::make_pair(Done.back().ReadySeconds - Done.front().StartSeconds,
+                                     unsigned(Done.size()));
+  for (QuickWarmed &W : Done) {
     BuildEvent E;
     E.Kernel = QuickTierName;
     E.Reason = "warm-up";

@@ -92,12 +92,13 @@ public:
   /// with its quick programs when all but at most one are kept (a saved source file that changed
   /// one function): that one is built in the foreground, tier "quick", and the shape kernel and
   /// its fallback are built by the deferred build (setDeferFallbackBuilds), which switches to
-  /// the shape tier.
+  /// the shape tier. A save while the warm-up runs does not wait for it: the shape kernel's
+  /// path, as without the quick tier.
   void setQuickTier(bool On) { QuickTier = On; }
   /// Starts building, in the background, the quick programs of the layout not kept yet (none
   /// while an earlier warm-up runs); returns whether it started.
   bool warmQuickPrograms();
-  /// Once, when a warm-up started by warmQuickPrograms has ended: its wall seconds (first
+  /// Once per warm-up started by warmQuickPrograms, after it has ended: its wall seconds (first
   /// start to last end) and the programs it built; std::nullopt otherwise.
   std::optional<std::pair<double, unsigned>> quickWarmUpFinished();
   /// The node values per hit the quick tier needs in the texture scratch buffer (0 when off).
@@ -193,6 +194,7 @@ private:
     std::string Error;
   };
   std::future<std::vector<QuickWarmed>> QuickWarming;
+  std::optional<std::pair<double, unsigned>> QuickWarmReport; // for quickWarmUpFinished
 };
 
 } // namespace texrender
