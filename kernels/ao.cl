@@ -17,7 +17,7 @@ static inline bool ao_wanted(RtHit h, __global const RtTriAttr *triAttrs, __glob
 
 /* The directions of AO rays j0 .. j0 + 7 of the path p's hit at surface s (rt_surface of the
  * hit), one per lane: cosine-weighted around the shading normal as Cycles' AO node draws them.
- * This is the one definition of an AO ray's direction: ao_ray_at takes its lane j % 8, ao_rays
+ * This is the one definition of an AO ray's direction: ao_dir_at takes its lane j % 8, ao_rays
  * all 8. It makes 8 at once because this maths was 85% of ao_rays' time and PoCL runs it as
  * SIMD only written on vector types (float8: about 3x faster than 8 scalar rays, the same
  * bits; bench/cycles.md, 2026-12-04). */
@@ -56,38 +56,35 @@ static inline void ao_dirs8(RtSurface s, __global const RtPath *p, int j0, uint 
   *dz = x * t.z + y * b.z + z * n.z;
 }
 
-/* AO ray j of the path p's hit at surface s: its origin and direction (lane j % 8 of
- * ao_dirs8, offset off the surface). */
-static inline void ao_ray_at(RtSurface s, __global const RtPath *p, int j, float eps, uint seed,
-                             float3 *o, float3 *dir) {
+/* The direction of AO ray j of the path p's hit at surface s (lane j % 8 of ao_dirs8). Every
+ * AO ray starts at the hit point itself, s.p, with tmin 0, and skips the hit's own triangle
+ * (s.tri), as Cycles' AO node traces its rays (svm_ao: ray.P = sd->P, tmin 0, ray.self.prim =
+ * sd->prim): no offset off the surface. A hit at t = tmin counts (rt_bvh.h; Embree's robust
+ * test, which Cycles uses), so a face through the hit point occludes every ray. Issue 22: the
+ * atrium's gears have such faces (their teeth overlap, their flat sides in one plane), fully
+ * occluded slits in Cycles' AO that texrender's origin offset along the normal (1e-4 (1 + |p|),
+ * before) never hit: 4 blocks there 11-24% lighter than Cycles' (bench/cycles.md). */
+static inline float3 ao_dir_at(RtSurface s, __global const RtPath *p, int j, uint seed) {
   float8 dx, dy, dz;
   ao_dirs8(s, p, j & ~7, seed, &dx, &dy, &dz);
   float ax[8], ay[8], az[8];
   vstore8(dx, 0, ax), vstore8(dy, 0, ay), vstore8(dz, 0, az);
-  *dir = (float3)(ax[j & 7], ay[j & 7], az[j & 7]);
-  *o = rt_offset(s, *dir, eps);
-}
-
-/* AO ray j of the path p's hit h: its origin and direction. */
-static inline void ao_ray(__global const RtTri *tris, __global const RtTriAttr *triAttrs,
-                          __global const RtPath *p, RtHit h, int j, float eps, uint seed,
-                          float3 *o, float3 *dir) {
-  ao_ray_at(rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h), p, j, eps, seed, o, dir);
+  return (float3)(ax[j & 7], ay[j & 7], az[j & 7]);
 }
 
 /* AO ray j of the path p's hit h: 1 if it hits something within aoDistance. */
 static inline int ao_occluded(__global const RtBvh4Node *nodes, __global const RtTri *tris,
                        __global const RtTriAttr *triAttrs, __global const RtPath *p, RtHit h,
-                       int j, float aoDistance, float eps, uint seed) {
-  float3 o, dir;
-  ao_ray(tris, triAttrs, p, h, j, eps, seed, &o, &dir);
-  RtHit ah = rt_trace(nodes, tris, o, dir, 0.0f, aoDistance, 1);
-  return ah.tri >= 0 ? 1 : 0;
+                       int j, float aoDistance, uint seed) {
+  RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
+  float3 dir = ao_dir_at(s, p, j, seed);
+  return rt_trace_skip(nodes, tris, s.p, dir, 0.0f, aoDistance, 1, s.tri).tri >= 0;
 }
 
 /* The AO rays of a host trace backend (Embree, runtime/lib/TraceEmbree.cpp): ray k = ray
  * k % aoSamples of hit k / aoSamples, exactly the ray ao_trace traces, as an RtShadowRay
- * (dir.w = aoDistance, contrib.w = 1). A hit whose material does not read AO writes only its
+ * (origin.w = the bits of the triangle it skips, as_float(s.tri); dir.w = aoDistance,
+ * contrib.w = 1). A hit whose material does not read AO writes only its
  * first ray's contrib, with w = -aoSamples: the host skips its aoSamples rays (their slots
  * hold stale rays; ao_reduce does not read their results). One work-item per hit (numActive
  * of them): the surface is reconstructed once for the hit's aoSamples rays, their directions
@@ -96,7 +93,7 @@ __kernel void ao_rays(__global const RtTri *tris, __global const RtTriAttr *triA
                       __global const RtPath *paths, __global const int *active, int numActive,
                       __global const RtHit *hits, __global const RtMesh *meshes,
                       __global const RtMaterial *materials, int aoSamples, float aoDistance,
-                      float eps, uint seed, __global RtShadowRay *rays) {
+                      uint seed, __global RtShadowRay *rays) {
   int i = get_global_id(0);
   if (i >= numActive)
     return;
@@ -115,7 +112,7 @@ __kernel void ao_rays(__global const RtTri *tris, __global const RtTriAttr *triA
     vstore8(dx, 0, ax), vstore8(dy, 0, ay), vstore8(dz, 0, az);
     for (int k = 0; k < 8 && j0 + k < aoSamples; ++k) {
       float3 dir = (float3)(ax[k], ay[k], az[k]);
-      out[j0 + k].origin = (float4)(rt_offset(s, dir, eps), 0.0f);
+      out[j0 + k].origin = (float4)(s.p, as_float(s.tri));
       out[j0 + k].dir = (float4)(dir, aoDistance);
       out[j0 + k].contrib = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
     }
@@ -126,8 +123,7 @@ __kernel void ao_trace(__global const RtBvh4Node *nodes, __global const RtTri *t
                        __global const RtTriAttr *triAttrs, __global const RtPath *paths,
                        __global const int *active, int numActive, __global const RtHit *hits,
                        __global const RtMesh *meshes, __global const RtMaterial *materials,
-                       int aoSamples, float aoDistance, float eps, uint seed,
-                       __global uchar *occluded) {
+                       int aoSamples, float aoDistance, uint seed, __global uchar *occluded) {
   int k = get_global_id(0);
   if (k >= numActive * aoSamples)
     return;
@@ -139,7 +135,7 @@ __kernel void ao_trace(__global const RtBvh4Node *nodes, __global const RtTri *t
     return;
   }
   occluded[k] = (uchar)ao_occluded(nodes, tris, triAttrs, &paths[active[i]], h, j, aoDistance,
-                                   eps, seed);
+                                   seed);
 }
 
 __kernel void ao_reduce(__global const uchar *occluded, __global const RtHit *hits,
@@ -160,8 +156,8 @@ __kernel void ao_loop(__global const RtBvh4Node *nodes, __global const RtTri *tr
                       __global const RtTriAttr *triAttrs, __global const RtPath *paths,
                       __global const int *active, int numActive, __global const RtHit *hits,
                       __global const RtMesh *meshes, __global const RtMaterial *materials,
-                      int aoSamples, float aoDistance, float eps, uint seed,
-                      __global TexccHitAttrs *attrs, __global uint *counters) {
+                      int aoSamples, float aoDistance, uint seed, __global TexccHitAttrs *attrs,
+                      __global uint *counters) {
   int i = get_global_id(0);
   if (i >= numActive)
     return;
@@ -172,14 +168,14 @@ __kernel void ao_loop(__global const RtBvh4Node *nodes, __global const RtTri *tr
   __global const RtPath *p = &paths[active[i]];
   RtSurface s = rt_surface(tris, triAttrs, p->origin.xyz, p->dir.xyz, h);
   int n = 0;
-  for (int j0 = 0; j0 < aoSamples; j0 += 8) { /* the rays of ao_ray_at, 8 directions at once */
+  for (int j0 = 0; j0 < aoSamples; j0 += 8) { /* the rays of ao_occluded, 8 directions at once */
     float8 dx, dy, dz;
     ao_dirs8(s, p, j0, seed, &dx, &dy, &dz);
     float ax[8], ay[8], az[8];
     vstore8(dx, 0, ax), vstore8(dy, 0, ay), vstore8(dz, 0, az);
     for (int k = 0; k < 8 && j0 + k < aoSamples; ++k) {
       float3 dir = (float3)(ax[k], ay[k], az[k]);
-      n += rt_trace(nodes, tris, rt_offset(s, dir, eps), dir, 0.0f, aoDistance, 1).tri >= 0;
+      n += rt_trace_skip(nodes, tris, s.p, dir, 0.0f, aoDistance, 1, s.tri).tri >= 0;
     }
   }
   attrs[i].uvAO.z = 1.0f - (float)n / (float)aoSamples;

@@ -7,7 +7,9 @@
 
 
 
-/* Moeller-Trumbore; returns t in (tmin, tmax) or a negative value, with barycentrics. */
+/* Moeller-Trumbore; returns t in [tmin, tmax) or a negative value, with barycentrics. tmin
+ * itself counts, as in Embree's robust (Pluecker) test that Cycles uses: an AO ray starts on
+ * the hit point with tmin 0 (ao.cl), and a face through that point occludes it. */
 static inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3 d, float tmin,
                               float tmax, float *bu, float *bv) {
   float3 e1 = tri->e1.xyz, e2 = tri->e2.xyz;
@@ -25,7 +27,7 @@ static inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3
   if (v < 0.0f || u + v > 1.0f)
     return -1.0f;
   float t = dot(e2, q) * inv;
-  if (t <= tmin || t >= tmax)
+  if (t < tmin || t >= tmax)
     return -1.0f;
   *bu = u;
   *bv = v;
@@ -55,9 +57,11 @@ static inline float3 rt_safe_inverse(float3 d) {
 
 /* Traverses the wide BVH (RtBvh4Node: 4 children tested at once with float4 slab tests, the
  * nearest hit child next, the others stacked farthest first). anyHit: stop at the first
- * intersection (shadow and AO rays). Returns the hit (tri = -1 on a miss). */
-static inline RtHit rt_trace(__global const RtBvh4Node *nodes, __global const RtTri *tris,
-                             float3 o, float3 d, float tmin, float tmax, int anyHit) {
+ * intersection (shadow and AO rays). skip: a triangle never hit (an AO ray's own, which it
+ * starts on; -1: none). Returns the hit (tri = -1 on a miss). */
+static inline RtHit rt_trace_skip(__global const RtBvh4Node *nodes, __global const RtTri *tris,
+                                  float3 o, float3 d, float tmin, float tmax, int anyHit,
+                                  int skip) {
   RtHit hit;
   hit.t = tmax;
   hit.tri = -1;
@@ -103,9 +107,11 @@ static inline RtHit rt_trace(__global const RtBvh4Node *nodes, __global const Rt
       int v = ~ref;
       int first = v >> RT_BVH_LEAF_BITS, count = v & ((1 << RT_BVH_LEAF_BITS) - 1);
       for (int ti = first; ti < first + count; ++ti) {
+        if (ti == skip)
+          continue;
         float u, w;
         float t = rt_intersect_tri(&tris[ti], o, d, tmin, hit.t, &u, &w);
-        if (t > 0.0f) {
+        if (t >= 0.0f) {
           hit.t = t;
           hit.tri = ti;
           hit.u = u;
@@ -128,6 +134,11 @@ static inline RtHit rt_trace(__global const RtBvh4Node *nodes, __global const Rt
       break;
   }
   return hit;
+}
+
+static inline RtHit rt_trace(__global const RtBvh4Node *nodes, __global const RtTri *tris,
+                             float3 o, float3 d, float tmin, float tmax, int anyHit) {
+  return rt_trace_skip(nodes, tris, o, d, tmin, tmax, anyHit, -1);
 }
 
 #undef RT_BVH_INSERT

@@ -20,16 +20,15 @@ void Renderer::runAo(const cl::Buffer &Active, int Count, FrameStats &Stats) {
     AT.setArg(2, B["triangleAttributes"]), AT.setArg(3, B["paths"]), AT.setArg(4, Active);
     AT.setArg(5, cl_int(Count)), AT.setArg(6, B["hits"]), AT.setArg(7, B["meshes"]);
     AT.setArg(8, B["materials"]), AT.setArg(9, Samples);
-    AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_float(1e-4f));
-    AT.setArg(12, cl_uint(Settings.Seed));
-    AT.setArg(13, B["hitAttributes"]), AT.setArg(14, B["counters"]);
+    AT.setArg(10, cl_float(Settings.AoDistance)), AT.setArg(11, cl_uint(Settings.Seed));
+    AT.setArg(12, B["hitAttributes"]), AT.setArg(13, B["counters"]);
     Cl->launch(AT, size_t(Count), "ao_loop");
     Stats.AoWorkItemsPerLaunchMax = std::max<uint64_t>(Stats.AoWorkItemsPerLaunchMax, Count);
     return;
   }
   // Every AO ray of every hit at once: ao_trace (OpenCL) or one Embree stream (Trace.h).
   AoParams P;
-  P.Samples = Samples, P.Distance = Settings.AoDistance, P.Epsilon = 1e-4f;
+  P.Samples = Samples, P.Distance = Settings.AoDistance;
   P.Seed = Settings.Seed;
   Tracer->aoOccluded(Active, Count, P);
   Stats.AoWorkItemsPerLaunchMax =

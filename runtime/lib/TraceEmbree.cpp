@@ -20,6 +20,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -80,6 +81,15 @@ private:
 constexpr size_t Stream = 64;    // rays per rtcIntersect1M / rtcOccluded1M call
 constexpr size_t Chunk = 2048;   // rays per work unit of a thread
 
+/// The context filter of the AO rays: a ray never hits the triangle it starts on (its ray id;
+/// ao_rays passes it in origin.w), as Cycles' AO rays skip their own primitive (ao.cl's
+/// ao_dir_at: they start on the hit point itself, tmin 0).
+void skipOwnTriangle(const RTCFilterFunctionNArguments *A) {
+  for (unsigned I = 0; I < A->N; ++I)
+    if (A->valid[I] && RTCHitN_primID(A->hit, A->N, I) == RTCRayN_id(A->ray, A->N, I))
+      A->valid[I] = 0;
+}
+
 void embreeError(void *User, RTCError Code, const char *Message) {
   auto *Last = static_cast<std::string *>(User);
   try {
@@ -100,7 +110,14 @@ public:
     if (!Device)
       throw Error("cannot start Embree: " + std::to_string(int(rtcGetDeviceError(nullptr))));
     rtcSetDeviceErrorFunction(Device, embreeError, &LastError);
+    if (!rtcGetDeviceProperty(Device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
+      throw Error("this Embree has no filter functions (AO rays skip their own triangle)");
     Scene = rtcNewScene(Device);
+    // Robust: Embree's watertight (Pluecker) triangle test, as Cycles builds its scene; its
+    // depth test takes t = tnear, so an AO ray (which starts on the hit point, tnear 0) is
+    // occluded by a face through its origin, as in Cycles (issue 22: the gears' coinciding
+    // faces). The context filter: the AO rays' skipOwnTriangle.
+    rtcSetSceneFlags(Scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     // Medium (binned SAH), as Cycles builds its Embree BVH by default: high (spatial splits)
     // cost a third of texrender's start-up for no measured frame-time gain (bench/startup.md).
     rtcSetSceneBuildQuality(Scene, RTC_BUILD_QUALITY_MEDIUM);
@@ -225,8 +242,8 @@ public:
     AR.setArg(2, C.B.at("paths")), AR.setArg(3, Active), AR.setArg(4, cl_int(Count));
     AR.setArg(5, C.B.at("hits")), AR.setArg(6, C.B.at("meshes"));
     AR.setArg(7, C.B.at("materials")), AR.setArg(8, cl_int(Prm.Samples));
-    AR.setArg(9, cl_float(Prm.Distance)), AR.setArg(10, cl_float(Prm.Epsilon));
-    AR.setArg(11, cl_uint(Prm.Seed)), AR.setArg(12, C.B.at("aoRays"));
+    AR.setArg(9, cl_float(Prm.Distance)), AR.setArg(10, cl_uint(Prm.Seed));
+    AR.setArg(11, C.B.at("aoRays"));
     C.Cl.launch(AR, size_t(Count), "ao_rays"); // one work-item per hit, Samples rays each
     C.Cl.finish();
     double T0 = seconds();
@@ -243,6 +260,7 @@ public:
       parallelChunks(N, std::max<size_t>(1, Chunk / Run) * Run, [&](size_t Begin, size_t End) {
         RTCIntersectContext Ctx;
         rtcInitIntersectContext(&Ctx);
+        Ctx.filter = skipOwnTriangle;
         RTCRay8 X;
         alignas(32) int Valid[8];
         for (size_t H = Begin; H < End; H += Run) {
@@ -256,7 +274,8 @@ public:
               X.org_x[J] = Y.origin.s[0], X.org_y[J] = Y.origin.s[1], X.org_z[J] = Y.origin.s[2];
               X.dir_x[J] = Y.dir.s[0], X.dir_y[J] = Y.dir.s[1], X.dir_z[J] = Y.dir.s[2];
               X.tnear[J] = 0.0f, X.tfar[J] = Y.dir.s[3], X.time[J] = 0.0f;
-              X.mask[J] = ~0u, X.id[J] = unsigned(J), X.flags[J] = 0;
+              X.mask[J] = ~0u, X.flags[J] = 0;
+              std::memcpy(&X.id[J], &Y.origin.s[3], sizeof(unsigned)); // the ray's own triangle
             }
             rtcOccluded8(Valid, Scene, &Ctx, &X);
             for (size_t J = 0; J < M; ++J)

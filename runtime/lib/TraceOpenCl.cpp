@@ -72,8 +72,7 @@ public:
     AT.setArg(4, Active), AT.setArg(5, cl_int(Count)), AT.setArg(6, C.B.at("hits"));
     AT.setArg(7, C.B.at("meshes")), AT.setArg(8, C.B.at("materials"));
     AT.setArg(9, cl_int(P.Samples)), AT.setArg(10, cl_float(P.Distance));
-    AT.setArg(11, cl_float(P.Epsilon)), AT.setArg(12, cl_uint(P.Seed));
-    AT.setArg(13, C.B.at("aoOccluded"));
+    AT.setArg(11, cl_uint(P.Seed)), AT.setArg(12, C.B.at("aoOccluded"));
     C.Cl.launch(AT, size_t(Count) * size_t(P.Samples), "ao_trace");
   }
 

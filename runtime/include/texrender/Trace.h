@@ -40,7 +40,6 @@ struct TraceContext {
 struct AoParams {
   int Samples = 0;
   float Distance = 0;
-  float Epsilon = 1e-4f;
   unsigned Seed = 0;
 };
 
