@@ -17,13 +17,16 @@ the page's own messages) when aiohttp is importable, else through `texrender --w
 directly; the result says which.
 
 A source edit: in a copy of rust.cl a constant of the code (a random one: no cache has the new
-kernel) is changed and saved SETTLE seconds after the shape tier's complete frame (shape mode,
---tier=auto). Measured from the save: the first frame rendered with the new code (texcc in the
-background, then a foreground build: of the shape kernel, as neither program is cached and the
-shape program is the faster to build; the interp fallback follows in the background once a
-frame is complete), the first full-resolution frame with it, and the first frame of the shape
-tier; and texrender's own split of that first frame ("source change"
-line: texcc, the compiler priming waited for, the adoption and its program builds, the pass).
+kernel) is changed and saved SETTLE seconds after the quick tier's warm-up (shape mode,
+--tier=auto; texrender --watch builds the programs of the quick tier, one per texture function,
+in the background after the first complete frame). Measured from the save: the first frame
+rendered with the new code (texcc in the background, then the foreground build of the changed
+function's quick program only; tier quick), the first full-resolution frame with it, and the
+first frame of the shape tier (the shape kernel is built behind the quick tier at once and
+takes over when ready; its interp fallback follows once a frame is complete); texrender's own
+split of that first frame ("source change" line: texcc, the compiler priming waited for, the
+adoption and its program builds, the pass) and its own time from the change to the takeover
+("the background build is done: ... N ms after the change that needed it").
 
 usage: bench/lookdev.py [--quick] [--transport ws|control] [--build DIR] [--out FILE]
 """
@@ -298,11 +301,23 @@ def source_edit(transport, tools, textures, folder, work, wait_quick=True):
         with open(path, "w") as f:
             f.write(original)
     return {"firstFrameMs": (first["t"] - t0) * 1000, "firstFrameTier": first.get("tier"),
+            "shapeTakeoverMs": takeover_ms(log) if log else None,
             "quickWarmUp": {"programs": int(warm.group(1)), "ms": int(warm.group(2))}
             if warm else None,
             "fullFrameMs": (full["t"] - t0) * 1000,
             "shapeFrameMs": (shape["t"] - t0) * 1000, "settleSeconds": SETTLE,
             "texrenderSplit": source_split(log) if log else None}
+
+
+def takeover_ms(log_path):
+    """texrender's time from the change to the shape kernel built behind the quick tier
+    taking over (its 'the background build is done' line), or None."""
+    try:
+        with open(log_path) as f:
+            m = re.search(r"the shape kernel behind the quick tier, (\d+) ms after", f.read())
+    except OSError:
+        return None
+    return int(m.group(1)) if m else None
 
 
 def wait_log(log_path, pattern, what, ch):

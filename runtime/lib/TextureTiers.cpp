@@ -5,10 +5,12 @@
 #include "texcc_abi.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -89,8 +91,23 @@ void requireKernelsDeclared(const std::string &File, const std::string &Source,
                   "' in the texture program (layout.json names it; the source declares none)");
 }
 
+namespace {
+std::atomic<double> LastInteractiveEdit{0};
+} // namespace
+
+void noteInteractiveEdit() { LastInteractiveEdit.store(steadySeconds()); }
+
+void waitForEditPause() {
+  for (;;) {
+    const double Left = LastInteractiveEdit.load() + EditPauseSeconds - steadySeconds();
+    if (Left <= 0)
+      return;
+    std::this_thread::sleep_for(std::chrono::duration<double>(Left));
+  }
+}
+
 void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
-                   const std::string &File) {
+                   const std::string &File, bool Background) {
   // The renderer's work-group size: PoCL compiles per local size.
   cl::Buffer Dummy(Cl.context(), CL_MEM_READ_WRITE, sizeof(TexccHitAttrs) * 4);
   cl::CommandQueue Queue(Cl.context(), Cl.device());
@@ -110,7 +127,16 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
         K.setArg(Arg, cl_int(0));
       else
         K.setArg(Arg, Dummy);
+    if (Background)
+      waitForEditPause();
     Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(64), cl::NDRange(64));
+    if (Background && Args != 2) { // texcc_uniforms runs one work-item
+      Queue.finish();
+      waitForEditPause();
+      Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(LargeGridItems), cl::NDRange(64));
+    }
+    if (Background)
+      Queue.finish(); // one compile at a time, each after a pause
   }
   Queue.finish();
 }
@@ -119,8 +145,9 @@ namespace {
 
 cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Source,
                          const std::vector<std::string> &Kernels, const std::string &Options) {
+  waitForEditPause(); // PoCL's compiler holds up launches while it runs
   cl::Program P = Cl.buildProgram(Path, Source, Options, "", /*Background=*/true);
-  warmUpKernels(Cl, P, Kernels, Path);
+  warmUpKernels(Cl, P, Kernels, Path, /*Background=*/true);
   return P;
 }
 
@@ -165,14 +192,16 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
   return R;
 }
 
-BackgroundBuild::BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex)
+BackgroundBuild::BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex,
+                                 int Nice)
     : EventIndex(EventIndex) {
   std::packaged_task<TierBuildResult()> Task(std::move(Job));
   Result = Task.get_future();
-  Thread = std::thread([Task = std::move(Task)]() mutable {
-    // Frames first: on a CPU device the build competes with the renderer for the same cores
-    // (Linux: a thread's nice value is its own).
-    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), 19);
+  Thread = std::thread([Task = std::move(Task), Nice]() mutable {
+    // Nice 19: frames first (on a CPU device the build competes with the renderer for the
+    // same cores).
+    if (Nice != 0)
+      setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), Nice);
     Task();
   });
 }

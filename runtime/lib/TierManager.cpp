@@ -159,17 +159,18 @@ void TierManager::buildShapeTiers(const char *Reason) {
   const bool ShapeCached = Cl.isCached(ShapeText, ProgramOptions);
   const bool FallbackCached = Cl.isCached(FallbackText, ProgramOptions + FallbackHeadroom);
   const TierBuildPlan Plan = planTierBuilds(Policy, ShapeCached, FallbackCached);
-  // Neither cached (a changed function): the quick tier, when it needs at most one build; the
-  // shape kernel and its fallback are built behind it (held back like the fallback below).
+  // Neither cached (a changed function): the quick tier, when it needs at most one build. The
+  // shape kernel is built behind it at once, at the renderer's own priority, and takes over
+  // when it is ready; its fallback is held back like the fallback below.
   if (Policy == TierPolicy::Auto && !ShapeCached && !FallbackCached && buildQuickTier(Reason)) {
     Layout Same = Lay;
-    QueuedBuild B{[Same] { return Same; },
-                  TierJob{/*SameLayout=*/true, true, true, ShapeText, FallbackText}, nullptr,
-                  Reason};
+    TierJob Shape{/*SameLayout=*/true, /*Shape=*/true, /*Interp=*/false, ShapeText, {}, 0};
+    TierJob Fallback{/*SameLayout=*/true, /*Shape=*/false, /*Interp=*/true, {}, FallbackText};
+    startBackgroundBuild([Same] { return Same; }, Shape, nullptr, Reason);
     if (DeferFallback)
-      Deferred = std::move(B);
+      Deferred = QueuedBuild{[Same] { return Same; }, Fallback, nullptr, Reason};
     else
-      startBackgroundBuild(std::move(B.MakeLayout), B.Job, nullptr, Reason);
+      Queued = QueuedBuild{[Same] { return Same; }, Fallback, nullptr, Reason};
     return;
   }
   if (Plan.ShapeNow)
@@ -181,7 +182,7 @@ void TierManager::buildShapeTiers(const char *Reason) {
   if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
     TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater,
-                ShapeText, FallbackText};
+                ShapeText, FallbackText, 19};
     if (DeferFallback && !Plan.ShapeLater)
       Deferred = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
     else
@@ -284,8 +285,9 @@ bool TierManager::warmQuickPrograms() {
       W.Source = T.Source;
       W.StartSeconds = steadySeconds() - Start;
       try {
+        waitForEditPause(); // PoCL's compiler holds up launches while it runs
         W.Program = Ctx->buildProgram(T.Path, T.Source, Options, "", /*Background=*/true);
-        warmUpKernels(*Ctx, W.Program, T.Kernels, T.Path);
+        warmUpKernels(*Ctx, W.Program, T.Kernels, T.Path, /*Background=*/true);
       } catch (const std::exception &E) {
         W.Program = cl::Program();
         W.Error = E.what();
@@ -344,8 +346,8 @@ void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
   HasTextureWork = HasWork;
   if (HasTextureWork && !ActiveFallback)
     activate(InterpProgram, true);
-  startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true}, std::move(Reencode),
-                       "shape change");
+  startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true, {}, {}, 19},
+                       std::move(Reencode), "shape change");
 }
 
 void TierManager::startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
@@ -375,7 +377,7 @@ void TierManager::launchQueued() {
       [Ctx, MakeLayout = std::move(Queued->MakeLayout), Job = Queued->Job, Options, Start] {
         return buildShapeTier(*Ctx, MakeLayout, Job, Options, Start);
       },
-      Events.size() - 1);
+      Events.size() - 1, Queued->Job.Nice);
   PendingReencode = std::move(Queued->Reencode);
   PendingSwitches = Queued->Job.Shape || !Queued->Job.SameLayout;
   Queued.reset();

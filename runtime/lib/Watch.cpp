@@ -116,6 +116,14 @@ WatchResult Session::run() {
   return {Frames, Ok};
 }
 
+void Session::noteQuickTier(double Since) {
+  QuickSince = 0;
+  if (R->activeTier() != QuickTierName || !R->backgroundBuildPending())
+    return;
+  QuickSince = Since;
+  say("the shape kernel builds in the background now; the quick tier renders until it is ready");
+}
+
 void Session::primeCompiler() {
   if (Primed)
     return;
@@ -212,6 +220,7 @@ void Session::handleCommand(const Command &C) {
     return refuse("edit '" + Ed.Text + "': " + P->Message);
   unsigned Builds = R->cl().foregroundBuilds();
   double T0 = nowSeconds();
+  noteInteractiveEdit(); // background compiles wait for a pause (TextureTiers.h)
   try {
     Editor->apply(Ed, *R);
   } catch (const Error &X) {
@@ -227,6 +236,8 @@ void Session::handleCommand(const Command &C) {
   say("applied '" + Ed.Text + "' (id " + std::to_string(*Id) + ") in " + ms(Took) + ", " +
       std::to_string(Built) + " kernel build(s)");
   event({{"event", "applied"}, {"id", *Id}, {"ms", eventMs(Took)}, {"builds", Built}});
+  if (Built > 0) // a rewiring regenerated the kernel
+    noteQuickTier(C.ReadAt);
 }
 
 void Session::applyChanges() {
@@ -341,6 +352,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
   }
   unsigned Builds = R->cl().foregroundBuilds();
   double T0 = nowSeconds();
+  noteInteractiveEdit();
   std::string Text;
   try {
     for (const Edit &E : Edits) {
@@ -355,8 +367,11 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
   Graph = New;
   Dirty = true;
   ChangeAt = Noticed;
-  say("applied '" + Text + "' in " + ms(nowSeconds() - T0) + ", " +
-      std::to_string(R->cl().foregroundBuilds() - Builds) + " kernel build(s)");
+  const unsigned Built = R->cl().foregroundBuilds() - Builds;
+  say("applied '" + Text + "' in " + ms(nowSeconds() - T0) + ", " + std::to_string(Built) +
+      " kernel build(s)");
+  if (Built > 0) // a rewiring regenerated the kernel
+    noteQuickTier(Noticed);
 }
 
 void Session::startJob(const json &New, const std::string &What, bool KeepEdits) {
@@ -435,6 +450,7 @@ void Session::adoptJob() {
       Source.BuildMs += (Events[I].ReadySeconds - Events[I].StartSeconds) * 1000;
   say("new kernel from texcc after " + ms(nowSeconds() - J->Started) + ", " +
       std::to_string(Source.Builds) + " kernel build(s) waited for");
+  noteQuickTier(J->Started);
 }
 
 } // namespace watch

@@ -191,7 +191,12 @@ void Session::renderFrame() {
   ++Accumulation;
   if (TierSwitch) {
     TierSwitch = false;
-    say("the background build is done: accumulation restarts with its kernel");
+    std::string After;
+    if (QuickSince > 0) // adopted by the pass below
+      After = " (the shape kernel behind the quick tier, " + ms(nowSeconds() - QuickSince) +
+              " after the change that needed it)";
+    QuickSince = 0;
+    say("the background build is done: accumulation restarts with its kernel" + After);
   }
   PassStart = PassResume = nowSeconds();
   Cuttable = true;
@@ -211,13 +216,10 @@ void Session::renderFrame() {
       "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
   primeCompiler();
   // The interp fallback of a regenerated shape kernel, held back while its first frames
-  // rendered (TierManager::setDeferFallbackBuilds).
-  const bool Quick = R->activeTier() == QuickTierName;
+  // rendered (TierManager::setDeferFallbackBuilds; after the quick tier, until the shape kernel
+  // built behind it has taken over).
   if (R->startDeferredBuild())
-    say(Quick ? "the shape kernel and its interp fallback build in the background now (held "
-                "back until a complete frame)"
-              : "the interp fallback builds in the background now (held back until a complete "
-                "frame)");
+    say("the interp fallback builds in the background now (held back until a complete frame)");
   // Shape mode's quick tier: the programs of the layout's functions, built once in the
   // background so that a saved source file rebuilds only the changed function's.
   else if (R->warmQuickPrograms())

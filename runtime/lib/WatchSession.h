@@ -204,6 +204,9 @@ private:
   /// Before a regenerated kernel is built: the priming still running is waited for (the build
   /// would otherwise load the compiler itself); says how it went, for the "source change" line.
   std::string waitForPrime();
+  /// After a change that regenerated the kernel (noticed at Since): if the quick tier renders
+  /// it, says that the shape kernel builds behind it, and the takeover is timed from Since.
+  void noteQuickTier(double Since);
   /// Renders with all the samples (stopped early by work()), writing progress images.
   void renderFrame();
   /// R->render(Stats), then Restore() (the settings or state the pass changed), whether the
@@ -283,6 +286,9 @@ private:
     std::string Primed; // waitForPrime's account
   };
   SourceSplit Source;
+  // When the change that the quick tier renders was noticed, until the shape kernel built
+  // behind it takes over (0: none; noteQuickTier).
+  double QuickSince = 0;
   // What is rendered changed since the last complete frame (an edit, a reload, a new kernel).
   bool Dirty = true;
   // Accumulations started (one per render()) and the last one written, with its samples: a

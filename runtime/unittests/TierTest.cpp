@@ -13,6 +13,10 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <optional>
+#include <sys/resource.h>
+#include <sys/syscall.h>
 #include <thread>
 #include <unistd.h>
 
@@ -82,6 +86,49 @@ TEST(Tier, BackgroundBuildHandsOverItsResult) {
   EXPECT_TRUE(OtherThread);
   EXPECT_EQ(R.L.Mode, "shape");
   EXPECT_EQ(R.Error, "none");
+}
+
+// A background build's thread runs at the nice value asked for: 19 by default (frames first),
+// the renderer's own with 0 (the shape kernel behind the quick tier, docs/live.md).
+TEST(Tier, BackgroundBuildRunsAtItsNiceValue) {
+  auto NiceOf = [](std::optional<int> Nice) {
+    int Seen = -100;
+    auto Job = [&] {
+      Seen = getpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)));
+      return TierBuildResult();
+    };
+    std::unique_ptr<BackgroundBuild> B =
+        Nice ? std::make_unique<BackgroundBuild>(Job, 0, *Nice)
+             : std::make_unique<BackgroundBuild>(Job, 0);
+    B->wait();
+    B->take();
+    return Seen;
+  };
+  const int Own = getpriority(PRIO_PROCESS, 0);
+  EXPECT_EQ(NiceOf(std::nullopt), 19);
+  EXPECT_EQ(NiceOf(19), 19);
+  EXPECT_EQ(NiceOf(0), Own);
+}
+
+// Background compiles wait for a pause in interactive edits (PoCL holds up every launch while
+// it compiles): waitForEditPause returns EditPauseSeconds after the last noteInteractiveEdit,
+// not before, and at once when that is past.
+TEST(Tier, BackgroundCompilesWaitForAPauseInEdits) {
+  noteInteractiveEdit();
+  const double T0 = steadySeconds();
+  std::thread Editor([] {
+    for (int I = 0; I < 3; ++I) { // a slider dragged: an edit every 0.1 s for 0.3 s
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      noteInteractiveEdit();
+    }
+  });
+  waitForEditPause();
+  const double Waited = steadySeconds() - T0;
+  Editor.join();
+  EXPECT_GE(Waited, 0.3 + EditPauseSeconds - 0.01);
+  const double T1 = steadySeconds();
+  waitForEditPause();
+  EXPECT_LT(steadySeconds() - T1, 0.05);
 }
 
 // planTierBuilds, every (policy, shape cached, fallback cached): what is built before the

@@ -75,6 +75,10 @@ struct TierJob {
   // The programs' texts when read already (non-empty): a live edit's regenerated layout lives
   // in a temporary folder that is gone by the time a deferred build runs.
   std::string ShapeText, FallbackText;
+  // The build thread's nice value: 19 (frames first), or 0 for the shape kernel that takes over
+  // from the quick tier (TierManager::buildShapeTiers: at nice 19 it waited a minute behind a
+  // loaded machine).
+  int Nice = 19;
 };
 
 /// Builds the programs Job names for the layout MakeLayout gives (run first, on the calling
@@ -87,9 +91,24 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
 
 /// Launches each of Kernels of P once over one work-group whose items all return at once
 /// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here.
-/// A kernel the program lacks: Error "File: no kernel 'NAME' in the texture program".
+/// Background (a background build's warm-up): the texture kernels also once over
+/// LargeGridItems work-items (PoCL compiles another work-group function for grids that large:
+/// bench/lookdev.md), which a frame's first full-resolution launch would otherwise compile on
+/// the render thread, and each launch first waits for a pause in interactive edits
+/// (waitForEditPause). A kernel the program lacks: Error "File: no kernel 'NAME' in the
+/// texture program".
 void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
-                   const std::string &File);
+                   const std::string &File, bool Background = false);
+constexpr size_t LargeGridItems = 65536;
+
+/// PoCL compiles a kernel's work-group function at its first launch, and while it does every
+/// launch on the device waits (an edit's first frame waited 0.2-1.1 s behind a background
+/// build's warm-up; bench/lookdev.md). texrender --watch calls noteInteractiveEdit() for every
+/// edit it applies; waitForEditPause() returns once none has come for EditPauseSeconds (at
+/// once when there never was one), so that background compiles wait while a slider is dragged.
+constexpr double EditPauseSeconds = 0.5;
+void noteInteractiveEdit();
+void waitForEditPause();
 
 /// Checks, before any build, that Source (the text of File) declares each of Kernels as
 /// `kernel void NAME(` (with or without the `__`): a layout.json naming a kernel the program
@@ -98,12 +117,12 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
 void requireKernelsDeclared(const std::string &File, const std::string &Source,
                             const std::vector<std::string> &Kernels);
 
-/// A job on its own std::thread. The thread owns every OpenCL object it creates; only the
-/// programs cross over (kernels are created from them on the main thread, so no cl_kernel is
-/// ever shared for clSetKernelArg).
+/// A job on its own std::thread at nice value Nice (Linux: a thread's nice value is its own).
+/// The thread owns every OpenCL object it creates; only the programs cross over (kernels are
+/// created from them on the main thread, so no cl_kernel is ever shared for clSetKernelArg).
 class BackgroundBuild {
 public:
-  BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex);
+  BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex, int Nice = 19);
   ~BackgroundBuild();
   BackgroundBuild(const BackgroundBuild &) = delete;
   BackgroundBuild &operator=(const BackgroundBuild &) = delete;

@@ -72,15 +72,17 @@ public:
   double waitForBackgroundBuild();
   /// A background build is queued or running; one that makes a kernel to switch to (the shape
   /// kernel, or a new layout) no longer counts once it is done, so that an idle session notices
-  /// it (the next frame adopts it).
-  bool backgroundBuildPending() const {
+  /// it (the next frame adopts it). A build queued behind a superseded one that has ended
+  /// starts here, so that it does not wait for the next frame (an idle session renders none).
+  bool backgroundBuildPending() {
+    launchQueued();
     return Queued || (Pending && (!PendingSwitches || !Pending->ready()));
   }
   /// On: a background build that makes only the interp fallback of a layout whose own kernel
-  /// renders (tier auto, the shape kernel built in the foreground) waits for
-  /// startDeferredBuild() instead of starting with the layout. texrender --watch starts it once
-  /// the frame is complete: built at once, its compile competes for the cores (and PoCL's
-  /// device) with the first frames of new code (docs/live.md).
+  /// renders (tier auto: the shape kernel built in the foreground, or built behind the quick
+  /// tier) waits for startDeferredBuild() instead of starting with the layout. texrender
+  /// --watch starts it once the frame is complete: built at once, its compile competes for the
+  /// cores (and PoCL's device) with the first frames of new code (docs/live.md).
   void setDeferFallbackBuilds(bool On) { DeferFallback = On; }
   /// Starts the deferred build, if there is one and no other build is pending; returns whether
   /// it started.
@@ -90,10 +92,11 @@ public:
   /// warmQuickPrograms() builds the layout's quick programs on a thread of their own and keeps
   /// them; a regenerated layout whose shape kernel and fallback are both uncached then renders
   /// with its quick programs when all but at most one are kept (a saved source file that changed
-  /// one function): that one is built in the foreground, tier "quick", and the shape kernel and
-  /// its fallback are built by the deferred build (setDeferFallbackBuilds), which switches to
-  /// the shape tier. A save while the warm-up runs does not wait for it: the shape kernel's
-  /// path, as without the quick tier.
+  /// one function): that one is built in the foreground, tier "quick", the shape kernel is built
+  /// behind it at once at the renderer's own priority (TierJob::Nice 0: at nice 19 it waited a
+  /// minute behind a loaded machine) and takes over when it is ready, and its fallback is left
+  /// to the deferred build (setDeferFallbackBuilds). A save while the warm-up runs does not wait
+  /// for it: the shape kernel's path, as without the quick tier.
   void setQuickTier(bool On) { QuickTier = On; }
   /// Starts building, in the background, the quick programs of the layout not kept yet (none
   /// while an earlier warm-up runs); returns whether it started.
