@@ -7,9 +7,7 @@
 
 
 
-/* Moeller-Trumbore; returns t in [tmin, tmax) or a negative value, with barycentrics. tmin
- * itself counts, as in Embree's robust (Pluecker) test that Cycles uses: an AO ray starts on
- * the hit point with tmin 0 (ao.cl), and a face through that point occludes it. */
+/* Moeller-Trumbore; returns t in (tmin, tmax) or a negative value, with barycentrics. */
 static inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3 d, float tmin,
                               float tmax, float *bu, float *bv) {
   float3 e1 = tri->e1.xyz, e2 = tri->e2.xyz;
@@ -27,7 +25,7 @@ static inline float rt_intersect_tri(__global const RtTri *tri, float3 o, float3
   if (v < 0.0f || u + v > 1.0f)
     return -1.0f;
   float t = dot(e2, q) * inv;
-  if (t < tmin || t >= tmax)
+  if (t <= tmin || t >= tmax)
     return -1.0f;
   *bu = u;
   *bv = v;
@@ -111,7 +109,7 @@ static inline RtHit rt_trace_skip(__global const RtBvh4Node *nodes, __global con
           continue;
         float u, w;
         float t = rt_intersect_tri(&tris[ti], o, d, tmin, hit.t, &u, &w);
-        if (t >= 0.0f) {
+        if (t > 0.0f) {
           hit.t = t;
           hit.tri = ti;
           hit.u = u;

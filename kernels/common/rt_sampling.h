@@ -93,26 +93,15 @@ static inline float rt_sobol1d(uint index, uint seed) {
   return rt_unit(rt_owen(rt_reverse_bits(rt_owen(index, seed)), rt_hash(seed ^ 0x68bc21ebu)));
 }
 
-/* rt_sobol2 of 8 indices at once: lane k is rt_sobol2(index.sk, seed) bit for bit (the same
- * integer maths on uint8; DeviceTest's Sobol8MatchesScalar). For a caller that wants 8 points
- * of one pattern (a hit's AO rays, ao.cl): PoCL vectorizes neither the scalar loop nor across
- * work-items there, but compiles uint8 / float8 maths to SIMD instructions. */
+/* 8 lanes of the integer maths above (lane k: the same bits as the scalar function of lane k);
+ * PoCL vectorizes neither a scalar loop over 8 points nor across work-items, but compiles
+ * uint8 / float8 maths to SIMD instructions (a hit's AO rays, ao.cl). */
 static inline uint8 rt_reverse_bits8(uint8 x) {
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
   x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
   return (x >> 16) | (x << 16);
-}
-
-static inline uint8 rt_owen8(uint8 x, uint seed) {
-  x = rt_reverse_bits8(x);
-  x += seed;
-  x ^= x * 0x6c50b47cu;
-  x ^= x * 0xb82f1e52u;
-  x ^= x * 0xc7afe638u;
-  x ^= x * 0x8d22f6e6u;
-  return rt_reverse_bits8(x);
 }
 
 static inline uint8 rt_sobol1_8(uint8 index) {
@@ -125,12 +114,42 @@ static inline uint8 rt_sobol1_8(uint8 index) {
   return rt_reverse_bits8(y);
 }
 
+static inline uint8 rt_hash8(uint8 v) {
+  uint8 state = v * 747796405u + 2891336453u;
+  uint8 word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
 static inline float8 rt_unit8(uint8 x) { return convert_float8(x >> 8) * (1.0f / 16777216.0f); }
 
-static inline void rt_sobol2_8(uint8 index, uint seed, float8 *u1, float8 *u2) {
-  uint8 i = rt_owen8(index, seed);
-  *u1 = rt_unit8(rt_owen8(rt_reverse_bits8(i), rt_hash(seed ^ 0x68bc21ebu)));
-  *u2 = rt_unit8(rt_owen8(rt_sobol1_8(i), rt_hash(seed ^ 0x02e5be93u)));
+/* A full Owen scramble of 32-bit fixed-point values v (8 lanes) whose top `levels` bits tell
+ * them apart (the first 2^levels points of a Sobol dimension): the top bits by the scramble's
+ * tree, one random flip per node (level k, the bits above k), each flip its own bit of a hash
+ * of seed; every bit below them random per point (a hash of seed and the point's top bits).
+ * rt_owen's hashed permutation (Laine-Karras with Burley's constants) is not distributed so:
+ * on 8 points its flips are correlated, and an estimate from them (the 8 AO rays) spreads up
+ * to 25% less or 10% more than from Owen-scrambled points, by the integrand's orientation
+ * (issue 22: Cycles' tabulated Sobol points are Owen-scrambled; bench/cycles.md, session 9). */
+static inline uint8 rt_owen_top8(uint8 v, uint levels, uint seed) {
+  uint h = rt_hash(seed);
+  uint8 out = (uint8)0u, node = (uint8)1u; /* node: the tree node's heap index, 1 = root */
+  for (uint k = 0; k < levels; ++k) {
+    uint8 bit = (v >> (31u - k)) & 1u;
+    uint8 flips = levels <= 5u ? (uint8)h : rt_hash8(h + (node >> 5u) * 0x9e3779b9u);
+    out |= (bit ^ ((flips >> (node & 31u)) & 1u)) << (31u - k);
+    node = (node << 1u) | bit;
+  }
+  return out | (rt_hash8(node ^ rt_hash(seed ^ 0x5bd1e995u)) >> levels);
+}
+
+/* Points index.s0 .. index.s7 of a 2D pattern of 2^levels points (indices below 2^levels),
+ * in [0, 1)^2: Sobol's first two dimensions, fully Owen-scrambled (rt_owen_top8), each
+ * dimension with its own seed. Any 2^m aligned points of them are stratified as a (0, m, 2)
+ * net; a hit's AO rays (ao.cl), distributed as the AO node's rays of Cycles' default pattern
+ * (aligned blocks of its tabulated, stochastically Owen-scrambled Sobol sequences). */
+static inline void rt_owen_net2_8(uint8 index, uint levels, uint seed, float8 *u1, float8 *u2) {
+  *u1 = rt_unit8(rt_owen_top8(rt_reverse_bits8(index), levels, rt_hash(seed ^ 0x68bc21ebu)));
+  *u2 = rt_unit8(rt_owen_top8(rt_sobol1_8(index), levels, rt_hash(seed ^ 0x02e5be93u)));
 }
 
 /* Bench-only: with RT_SAMPLER_PCG defined, every pattern is independent PCG numbers from the

@@ -83,7 +83,7 @@ constexpr size_t Chunk = 2048;   // rays per work unit of a thread
 
 /// The context filter of the AO rays: a ray never hits the triangle it starts on (its ray id;
 /// ao_rays passes it in origin.w), as Cycles' AO rays skip their own primitive (ao.cl's
-/// ao_dir_at: they start on the hit point itself, tmin 0).
+/// ao_origin: they start on the hit point).
 void skipOwnTriangle(const RTCFilterFunctionNArguments *A) {
   for (unsigned I = 0; I < A->N; ++I)
     if (A->valid[I] && RTCHitN_primID(A->hit, A->N, I) == RTCRayN_id(A->ray, A->N, I))
@@ -113,11 +113,9 @@ public:
     if (!rtcGetDeviceProperty(Device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
       throw Error("this Embree has no filter functions (AO rays skip their own triangle)");
     Scene = rtcNewScene(Device);
-    // Robust: Embree's watertight (Pluecker) triangle test, as Cycles builds its scene; its
-    // depth test takes t = tnear, so an AO ray (which starts on the hit point, tnear 0) is
-    // occluded by a face through its origin, as in Cycles (issue 22: the gears' coinciding
-    // faces). The context filter: the AO rays' skipOwnTriangle.
-    rtcSetSceneFlags(Scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    // The AO rays' filter (skipOwnTriangle). Not robust: ao.cl's AO rays start a little behind
+    // the hit point, so the fast test finds a face through it as Cycles' robust one does.
+    rtcSetSceneFlags(Scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     // Medium (binned SAH), as Cycles builds its Embree BVH by default: high (spatial splits)
     // cost a third of texrender's start-up for no measured frame-time gain (bench/startup.md).
     rtcSetSceneBuildQuality(Scene, RTC_BUILD_QUALITY_MEDIUM);

@@ -207,39 +207,106 @@ TEST(Device, NewLayoutMapsMeshMaterialsByName) {
   fs::remove_all(Dir);
 }
 
-// rt_sobol2_8 (the 8 points of a pattern at once, as ao_dirs8 makes a hit's AO rays) is
-// rt_sobol2 lane by lane, bit for bit: 4096 pattern seeds x indices 0-31 and 1000-1007.
-TEST(Device, Sobol8MatchesScalar) {
+// rt_owen_net2_8 (a hit's AO rays, ao.cl) is a fully Owen-scrambled (0, 3, 2) net of Sobol's
+// first two dimensions, as the AO node's points in Cycles' tabulated pattern are (issue 22):
+// every trial's 8 points are stratified in all elementary intervals of area 1/8, and the
+// estimate of the 8 rays through the concentric map for half-planes of the disk has the mean
+// and the variance of a reference Owen scramble (std::mt19937_64: one random flip per node of
+// the top 3 levels, random bits below per point), within 4%. rt_sobol2's hashed scramble on
+// the same points: variance ratios 0.75-0.85 on the half-planes through the centre
+// (bench/cycles.md, session 9).
+TEST(Device, AoNetIsOwenScrambled) {
   if (!haveDevice())
     GTEST_SKIP() << "no OpenCL device";
   const char *Env = std::getenv("TEXRENDER_KERNELS");
   const std::string Common = (fs::path(Env && *Env ? Env : TEXRENDER_KERNEL_DIR) / "common").string();
   ClContext Cl(0, "");
-  cl::Program P = Cl.buildProgram("sobol8-test.cl", R"(
+  cl::Program P = Cl.buildProgram("aonet-test.cl", R"(
 #include "rt_sampling.h"
-__kernel void sobol8(uint n, __global uint *bad) {
+__kernel void aonet(uint n, __global float *out) {
   uint g = get_global_id(0);
   if (g >= n)
     return;
-  uint seed = rt_hash(g >> 3), j0 = (g & 7) < 4 ? (g & 7) * 8 : 1000u;
   float8 u1, u2;
-  rt_sobol2_8(j0 + (uint8)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u), seed, &u1, &u2);
-  float a1[8], a2[8];
-  vstore8(u1, 0, a1), vstore8(u2, 0, a2);
-  for (uint k = 0; k < 8; ++k) {
-    float2 u = rt_sobol2(j0 + k, seed);
-    if (as_uint(u.x) != as_uint(a1[k]) || as_uint(u.y) != as_uint(a2[k]))
-      atomic_inc(bad);
-  }
+  rt_owen_net2_8((uint8)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u), 3u, rt_hash(g ^ 0x2545f491u), &u1, &u2);
+  vstore8(u1, 0, out + 16 * g), vstore8(u2, 1, out + 16 * g);
 }
 )", "-cl-std=CL1.2 -I " + Common);
-  const cl_uint N = 4096 * 8;
-  cl_uint Zero = 0, Bad = 1;
-  cl::Buffer B = Cl.allocateWith("bad", &Zero, sizeof Zero, CL_MEM_READ_WRITE);
-  cl::Kernel K(P, "sobol8");
+  const cl_uint N = 1u << 17;
+  std::vector<float> Dev(size_t(N) * 16);
+  cl::Buffer B = Cl.allocate("aonet", Dev.size() * sizeof(float), CL_MEM_WRITE_ONLY);
+  cl::Kernel K(P, "aonet");
   K.setArg(0, N), K.setArg(1, B);
-  Cl.launch(K, N, "sobol8");
+  Cl.launch(K, N, "aonet");
   Cl.finish();
-  Cl.read(B, &Bad, sizeof Bad);
-  EXPECT_EQ(Bad, 0u);
+  Cl.read(B, Dev.data(), Dev.size() * sizeof(float));
+
+  // The reference: Sobol's dimensions 0 and 1 of points 0-7 (3-bit fixed point), each
+  // dimension scrambled by 7 independent node flips, the bits below uniform per point.
+  const unsigned Sobol[2][8] = {{0, 4, 2, 6, 1, 5, 3, 7}, {0, 4, 6, 2, 5, 1, 3, 7}};
+  std::mt19937_64 Rng(12345);
+  std::uniform_real_distribution<double> Uni(0.0, 1.0);
+  std::vector<double> Ref(size_t(N) * 16);
+  for (cl_uint T = 0; T < N; ++T)
+    for (int D = 0; D < 2; ++D) {
+      const uint64_t Flips = Rng();
+      for (int J = 0; J < 8; ++J) {
+        unsigned V = Sobol[D][J], Out = 0, Node = 1;
+        for (int Kb = 2; Kb >= 0; --Kb) {
+          const unsigned Bit = (V >> Kb) & 1u;
+          Out |= (Bit ^ unsigned((Flips >> Node) & 1u)) << Kb;
+          Node = Node * 2 + Bit;
+        }
+        Ref[size_t(T) * 16 + size_t(D) * 8 + size_t(J)] = (Out + Uni(Rng)) / 8.0;
+      }
+    }
+
+  // Stratification of every trial: one point per elementary interval (8 x 1 ... 1 x 8).
+  int Unstratified = 0;
+  for (cl_uint T = 0; T < N; ++T)
+    for (int Bx = 0; Bx <= 3; ++Bx) {
+      unsigned Seen = 0;
+      for (int J = 0; J < 8; ++J) {
+        const double X = Dev[size_t(T) * 16 + size_t(J)], Y = Dev[size_t(T) * 16 + 8 + size_t(J)];
+        Seen |= 1u << ((int(X * (1 << Bx)) << (3 - Bx)) | int(Y * (1 << (3 - Bx))));
+      }
+      Unstratified += Seen != 0xffu;
+    }
+  EXPECT_EQ(Unstratified, 0);
+
+  // The 8-ray estimate of half-planes of the disk (Cycles' concentric map).
+  auto Disk = [](double U1, double U2, double &X, double &Y) {
+    const double A = 2 * U1 - 1, Bv = 2 * U2 - 1;
+    double R = 0, Phi = 0;
+    if (A * A > Bv * Bv)
+      R = A, Phi = M_PI / 4 * (Bv / A);
+    else if (Bv != 0)
+      R = Bv, Phi = M_PI / 2 - M_PI / 4 * (A / Bv);
+    X = R * std::cos(Phi), Y = R * std::sin(Phi);
+  };
+  for (double Theta : {0.26, 0.52, 0.79, 1.1})
+    for (double C : {-0.5, 0.0, 0.3}) {
+      double Moments[2][2] = {{0, 0}, {0, 0}};
+      for (int Which = 0; Which < 2; ++Which)
+        for (cl_uint T = 0; T < N; ++T) {
+          int Hits = 0;
+          for (int J = 0; J < 8; ++J) {
+            const size_t I = size_t(T) * 16 + size_t(J);
+            double X, Y;
+            if (Which == 0)
+              Disk(Dev[I], Dev[I + 8], X, Y);
+            else
+              Disk(Ref[I], Ref[I + 8], X, Y);
+            Hits += X * std::cos(Theta) + Y * std::sin(Theta) > C;
+          }
+          Moments[Which][0] += Hits / 8.0, Moments[Which][1] += (Hits / 8.0) * (Hits / 8.0);
+        }
+      double Mean[2], Var[2];
+      for (int W = 0; W < 2; ++W)
+        Mean[W] = Moments[W][0] / N, Var[W] = Moments[W][1] / N - Mean[W] * Mean[W];
+      EXPECT_NEAR(Mean[0], Mean[1], 4 * std::sqrt(2 * Var[1] / N))
+          << "theta " << Theta << ", c " << C;
+      EXPECT_NEAR(Var[0] / Var[1], 1.0, 0.04) << "theta " << Theta << ", c " << C << ": variance "
+                                              << Var[0] << " against " << Var[1];
+    }
 }
