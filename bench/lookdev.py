@@ -165,6 +165,7 @@ class WebSocket:
     def copy_log(self):
         for line in self.proc.stderr:
             self.log.write(line)
+            self.log.flush()  # wait_log reads the file while the session runs
 
     async def run(self):
         import aiohttp

@@ -102,7 +102,7 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
 constexpr size_t LargeGridItems = 65536;
 
 /// PoCL compiles a kernel's work-group function at its first launch, and while it does every
-/// launch on the device waits (an edit's first frame waited 0.2-1.1 s behind a background
+/// launch on the device waits (an edit's first frame waited 0.2-1.7 s behind a background
 /// build's warm-up; bench/lookdev.md). texrender --watch calls noteInteractiveEdit() for every
 /// edit it applies; waitForEditPause() returns once none has come for EditPauseSeconds (at
 /// once when there never was one), so that background compiles wait while a slider is dragged.
