@@ -19,7 +19,12 @@ cmake --build --preset asan ${targets[@]:+--target "${targets[@]}"}
 # LeakSanitizer stays on for our code; scripts/lsan.supp lists the leaks that belong to the
 # OpenCL stack (PoCL, the ICD loader, the LLVM inside PoCL) and why.
 # strict_string_checks: the C strings we pass to libc are checked up to their terminator.
-export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+# use_sigaltstack=0: ASan unmaps a thread's alternate signal stack when the thread ends, taking
+# whatever stack is installed for its own; texrender's background build threads end after the
+# OpenCL stack has installed a heap-allocated one there (73728 bytes, not page-aligned; most
+# likely the LLVM inside PoCL, whose signal handling mallocs one), and
+# ASan then aborts with "unable to unmap" (live/watch-source-quick*.test, 2026-12-05).
+export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:use_sigaltstack=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 exec "$root/.venv/bin/lit" -s "$build/testsuite" "$build/testsuite/Unit" "$@"
