@@ -122,7 +122,10 @@ def worker():
         return {}
 
     def analyze(req):
-        a, b = read_exr(req["a"]), read_exr(req["b"])
+        """a = Cycles, b = texrender: an image each, or a list of images at different seeds and
+        equal spp, whose mean (the image at their summed spp) is compared."""
+        a, b = (np.mean([read_exr(p) for p in ([x] if isinstance(x, str) else x)], axis=0)
+                for x in (req["a"], req["b"]))
         m = read_exr(req["mask"])[:, :, 0]
         regions = {"model": m >= 0.999, "rest": m <= 0.001, "all": np.ones_like(m, bool)}
         out = {"regions": {}}
@@ -204,14 +207,16 @@ def worker():
         return out
 
     def noise(req):
-        """Noise against bias per 8x8 block (issue 22, rust's texture-only view): a1/a2 = Cycles
-        at two seeds, b1/b2 = texrender at two seeds, same spp. Per block wholly on the model
-        and smooth in all four images (as blocks()): the difference of the two renderers'
-        seed-averaged means, d = (b1 + b2) / (a1 + a2) - 1, and its noise from the seed-to-seed
-        spreads, e = sqrt((a1 - a2)^2 + (b1 - b2)^2) / (a1 + a2) (one standard deviation of d
-        for Gaussian noise, estimated from one pair each); per channel, the block's figure its
-        largest |d| channel. Also each renderer's seed-to-seed |x1 / x2 - 1|."""
-        imgs = {k: read_exr(req[k]) for k in ("a1", "a2", "b1", "b2")}
+        """Noise against bias per 8x8 block (issue 22, rust's texture-only view): a = Cycles'
+        images and b = texrender's at the same N >= 2 seeds (a[i] and b[i] one seed), same spp.
+        Per block wholly on the model and smooth in every image (as blocks()): the difference of
+        the two renderers' seed-pooled means, d = mean(b) / mean(a) - 1, and its standard error
+        se, the spread of the per-seed differences b[i] / a[i] - 1 (ddof 1) over sqrt(N); per
+        channel, the block's figure its largest |d| channel. Also each renderer's seed-to-seed
+        spread |x[0] / x[1] - 1| (first two seeds)."""
+        imgs = {r: [read_exr(p) for p in req[r]] for r in ("a", "b")}
+        if len(imgs["a"]) != len(imgs["b"]) or len(imgs["a"]) < 2:
+            raise ValueError("noise: a and b need the same number of images, at least 2")
         m = read_exr(req["mask"])[:, :, 0]
         n = req["block"]
         h, w = (m.shape[0] // n) * n, (m.shape[1] // n) * n
@@ -220,25 +225,26 @@ def worker():
             return x[:h, :w].reshape(h // n, n, w // n, n, -1).swapaxes(1, 2).reshape(
                 h // n, w // n, n * n, -1)
 
-        t = {k: tiles(v[:, :, :3]) for k, v in imgs.items()}
+        t = {r: [tiles(v[:, :, :3]) for v in xs] for r, xs in imgs.items()}
         on_model = (tiles(m[:, :, None])[..., 0] >= 0.999).all(axis=2)
         weights = np.array([0.2126, 0.7152, 0.0722])
         edge = np.zeros_like(on_model)
-        for x in t.values():
+        for x in t["a"] + t["b"]:
             lum = x @ weights
             edge |= (lum.max(axis=2) - lum.min(axis=2)) > req["edgeRange"] * np.maximum(
                 lum.mean(axis=2), 1e-6)
-        mm = {k: x.mean(axis=2) for k, x in t.items()}
-        sa, sb = np.maximum(mm["a1"] + mm["a2"], 1e-9), mm["b1"] + mm["b2"]
-        d = sb / sa - 1
-        e = np.sqrt((mm["a1"] - mm["a2"]) ** 2 + (mm["b1"] - mm["b2"]) ** 2) / sa
+        mm = {r: np.stack([x.mean(axis=2) for x in xs]) for r, xs in t.items()}
+        ma = np.maximum(mm["a"], 1e-9)
+        d = mm["b"].mean(axis=0) / ma.mean(axis=0) - 1
+        per_seed = mm["b"] / ma - 1
+        e = per_seed.std(axis=0, ddof=1) / np.sqrt(len(per_seed))
         ch = np.abs(d).argmax(axis=2)
         pick = (lambda x: np.take_along_axis(x, ch[..., None], axis=2)[..., 0])
         dd, ee = pick(d), pick(e)
-        out = {"blockPixels": n, "edgeRange": req["edgeRange"]}
+        out = {"blockPixels": n, "edgeRange": req["edgeRange"], "seedCount": len(per_seed)}
         for name, sel in (("model", on_model), ("smooth", on_model & ~edge)):
             ad, ae = np.abs(dd[sel]), ee[sel]
-            seed = {r: np.abs(mm[r + "1"] / np.maximum(mm[r + "2"], 1e-9) - 1).max(axis=2)[sel]
+            seed = {r: np.abs(mm[r][0] / np.maximum(mm[r][1], 1e-9) - 1).max(axis=2)[sel]
                     for r in ("a", "b")}
             rows = np.argwhere(sel)
             worst = np.argsort(-ad)[:12]
@@ -260,7 +266,8 @@ def worker():
                 "worst": [{"block": [int(rows[i][0]), int(rows[i][1])],
                            "diffPercent": float(100 * dd[sel][i]),
                            "noisePercent": float(100 * ae[i]),
-                           "cyclesMean": mm["a1"][tuple(rows[i])].tolist()} for i in worst]}
+                           "cyclesMean": mm["a"].mean(axis=0)[tuple(rows[i])].tolist()}
+                          for i in worst]}
         return out
 
     ops = {"render": render, "mask": mask, "analyze": analyze, "seeds": seeds, "blocks": blocks,
@@ -417,6 +424,7 @@ def summarize(runs, fixed):
                        "overheadPercent": 100 * (common.median(
                            [t / b for t, b in zip(times, base)]) - 1)}
                 if r == "cycles":
+                    row["fixedSeconds"] = fixed[v]
                     row["medianWithoutFixed"] = row["median"] - fixed[v]
                 else:
                     samples = cfgs["%s/%s" % (v, r)]
@@ -448,28 +456,38 @@ def exported(tools, blend, name):
     return os.path.join(out, "scene.json"), out + "-tex"
 
 
-def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",)):
+def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",), seeds=(1,)):
     """which: variants; diffuse uses texrender's own scene, the others the scene and graph the
-    exporter (scripts/blender_export.py) makes from the same .blend Cycles renders."""
+    exporter (scripts/blender_export.py) makes from the same .blend Cycles renders. seeds: each
+    renderer renders each seed at spp, and the mean of its images is compared (a converged image
+    at len(seeds) x spp, made of independent runs)."""
     w, h = (int(x) for x in size.split("x"))
     mask = os.path.join(tools.work, "agree-mask.exr")
     cyc.call(op="mask", blend=blends["diffuse"], size=[w, h], spp=16, exr=mask)
     out = {}
     for v in which:
-        cexr = os.path.join(tools.work, "agree-cycles-%s.exr" % v)
-        t = cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, exr=cexr)["seconds"]
-        own = dict(inputs)
+        ca, tb, ct, tt = [], [], [], []
         try:
+            own = dict(inputs)
             if v != "diffuse":
                 own[v] = exported(tools, blends[v], v)
-            r, texr = texrender_once(tools, own, v, "auto", size, spp, "agree-" + v, exr=True)
+            for seed in seeds:
+                ca.append(os.path.join(tools.work, "agree-cycles-%s-%d.exr" % (v, seed)))
+                ct.append(cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp,
+                                   seed=seed, exr=ca[-1])["seconds"])
+                r, texr = texrender_once(tools, own, v, "auto", size, spp,
+                                         "agree-%s-%d" % (v, seed), exr=True, seed=seed)
+                tb.append(texr)
+                tt.append(r["frame"])
+                common.log("agreement %s: seed %d done" % (v, seed))
         except common.BenchError as e:  # e.g. a node texcc does not have yet: say so, go on
             out[v] = {"error": str(e).strip().splitlines()[-1][-300:]}
             common.log("agreement %s: %s" % (v, out[v]["error"]))
             continue
-        res = cyc.call(op="analyze", a=cexr, b=texr, mask=mask)
-        res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"], "size": size,
-                    "spp": spp, "texrenderInput": "texrender's own scene" if v == "diffuse"
+        res = cyc.call(op="analyze", a=ca, b=tb, mask=mask)
+        res.update({"cyclesSeconds": sum(ct), "texrenderSeconds": sum(tt), "size": size,
+                    "spp": spp * len(seeds), "seeds": list(seeds),
+                    "texrenderInput": "texrender's own scene" if v == "diffuse"
                     else "exported by scripts/blender_export.py"})
         out[v] = res
     return out
@@ -478,12 +496,22 @@ def agreement(tools, cyc, blends, inputs, size, spp, which=("diffuse",)):
 TEXTURE_ONLY_VARIANTS = ("rust-model", "scratches-model")
 
 
+def seed_list(text):
+    """--noise-seed's value: "2", "2,3,4" or "2-16"."""
+    out = []
+    for part in text.split(","):
+        lo, _, hi = part.partition("-")
+        out += range(int(lo), int(hi or lo) + 1)
+    return out
+
+
 def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge_range=0.5,
-                 seed=1, noise_seed=None, probe=None, pattern=None):
+                 seed=1, noise_seeds=(), probe=None, pattern=None):
     """Issue 22: the model's material colour through Emission, no lights (make_scene.py
     --texture-only), rendered by Cycles and by texrender from the exporter's output of the same
-    .blend; per-block agreement (the worker's blocks()). noise_seed: both renderers again at
-    that seed, and the worker's noise() (the difference against its seed-to-seed noise).
+    .blend; per-block agreement (the worker's blocks()). noise_seeds: both renderers again at
+    each of those seeds, and the worker's noise() over all the seeds (the seed-pooled
+    difference against its standard error).
     probe: make_scene.py's --texture-probe (rust: "ao", the AO node's output alone;
     "constant-ao", AO replaced by 0.5). pattern: Cycles' sampling pattern (e.g. BLUE_NOISE)."""
     w, h = (int(x) for x in size.split("x"))
@@ -506,17 +534,19 @@ def texture_only(tools, size, spp, variants=TEXTURE_ONLY_VARIANTS, block=8, edge
                            edgeRange=edge_range, dump=os.path.join(tools.work, "to-%s.npz" % v))
             res.update({"cyclesSeconds": t, "texrenderSeconds": r["frame"],
                         "images": {"cycles": cexr, "texrender": texr, "mask": mask}})
-            if noise_seed is not None:
-                cexr2 = os.path.join(tools.work, "to-cycles-%s-%d.exr" % (v, noise_seed))
-                cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, seed=noise_seed,
-                         exr=cexr2, pattern=pattern)
-                _, texr2 = texrender_once(tools, own, v, "auto", size, spp,
-                                          "to-%s-%d" % (v, noise_seed), exr=True,
-                                          seed=noise_seed)
-                res["noise"] = cyc.call(op="noise", a1=cexr, a2=cexr2, b1=texr, b2=texr2,
-                                        mask=mask, block=block, edgeRange=edge_range)
-                res["noise"]["seeds"] = [seed, noise_seed]
-                res["images"].update({"cycles2": cexr2, "texrender2": texr2})
+            if noise_seeds:
+                ca, tb = [cexr], [texr]
+                for ns in noise_seeds:
+                    ca.append(os.path.join(tools.work, "to-cycles-%s-%d.exr" % (v, ns)))
+                    cyc.call(op="render", blend=blends[v], size=[w, h], spp=spp, seed=ns,
+                             exr=ca[-1], pattern=pattern)
+                    tb.append(texrender_once(tools, own, v, "auto", size, spp,
+                                             "to-%s-%d" % (v, ns), exr=True, seed=ns)[1])
+                    common.log("texture-only %s: seed %d done" % (v, ns))
+                res["noise"] = cyc.call(op="noise", a=ca, b=tb, mask=mask, block=block,
+                                        edgeRange=edge_range)
+                res["noise"]["seeds"] = [seed] + list(noise_seeds)
+                res["images"].update({"cyclesSeeds": ca, "texrenderSeeds": tb})
             out["results"][v] = res
             common.log("texture-only %s: smooth blocks %s" % (v, res.get("smooth")))
     finally:
@@ -553,7 +583,7 @@ CHECKPOINTS = True  # bench.py passes a checkpoint callback
 
 def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size=None,
             agree_spp=None, agree=True, variants=VARIANTS, renderers=RENDERERS,
-            agree_variants=("diffuse",), seeds=None):
+            agree_variants=("diffuse",), seeds=None, agree_seeds=(1,)):
     """save(data) is called after every repetition with what is measured so far."""
     ensure_bpy()
     size = size or ("128x128" if quick else "512x512")
@@ -571,7 +601,7 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
             aspp = agree_spp or (16 if quick else 256)
             data["agreement"] = {"size": asize, "spp": aspp, "loadAverage": os.getloadavg(),
                                  "results": agreement(tools, cyc, blends, inputs, asize, aspp,
-                                                      agree_variants)}
+                                                      agree_variants, agree_seeds)}
 
         def checkpoint(runs, fixed, loads):
             data.update({"cyclesFixedSeconds": fixed, "rows": summarize(runs, fixed),
@@ -606,6 +636,9 @@ def main():
     ap.add_argument("--no-agree", action="store_true")
     ap.add_argument("--seeds", help="SIZE,SPP,N: also the seed-to-seed spread of the diffuse "
                     "atrium (issue 26), e.g. 256x256,64,4; --reps 0 skips the frame times")
+    ap.add_argument("--agree-seeds", type=seed_list, default=[1],
+                    help="the image agreement at these seeds (N,M,... or N-M), each at "
+                    "--agree-spp: each renderer's mean image is compared (default 1)")
     ap.add_argument("--agree-variants", default="diffuse",
                     help="variants of the image agreement; other than diffuse, texrender renders "
                     "what scripts/blender_export.py exports from the same .blend")
@@ -613,8 +646,9 @@ def main():
                     help="subset of %s (diffuse is needed for the overheads)" % ",".join(VARIANTS))
     ap.add_argument("--renderers", default=",".join(RENDERERS))
     ap.add_argument("--merge", action="store_true",
-                    help="add these rows to bench/results/cycles.json (replacing rows of the "
-                    "same spp), e.g. a second run at another spp with a subset")
+                    help="add these rows to bench/results/cycles.json (replacing its rows of the "
+                    "same spp, variant and renderer), e.g. a second run at another spp with a "
+                    "subset")
     ap.add_argument("--out", help="result file (default bench/results/cycles.json)")
     ap.add_argument("--texture-only", action="store_true",
                     help="only issue 22's texture-only check (rust-model and scratches-model: "
@@ -624,10 +658,10 @@ def main():
                     "results in bench/results/cycles_texture_only.json")
     ap.add_argument("--seed", type=int, default=1,
                     help="with --texture-only: both renderers' seed (default 1)")
-    ap.add_argument("--noise-seed", type=int,
-                    help="with --texture-only: both renderers also at this seed; per block, "
-                    "the renderers' difference against their seed-to-seed noise (results' "
-                    "\"noise\")")
+    ap.add_argument("--noise-seed", type=seed_list, default=(),
+                    help="with --texture-only: both renderers also at these seeds (N, N,M,... "
+                    "or N-M); per block, the renderers' seed-pooled difference against its "
+                    "standard error from the seed-to-seed spread (results' \"noise\")")
     ap.add_argument("--cycles-pattern", choices=("TABULATED_SOBOL", "BLUE_NOISE"),
                     help="with --texture-only: Cycles' sampling pattern (default: the .blend's, "
                     "Tabulated Sobol)")
@@ -636,6 +670,8 @@ def main():
                     "square (ao-squared) or the colour with AO replaced by a constant 0.5 (constant-ao); bisects issue 22's "
                     "rust blocks (make_scene.py --texture-probe)")
     args = ap.parse_args()
+    if args.seed in args.noise_seed:
+        ap.error("--noise-seed must not repeat --seed (%d)" % args.seed)
     variants, renderers = args.variants.split(","), args.renderers.split(",")
     if "diffuse" not in variants or not set(variants) <= set(VARIANTS) or \
             not set(renderers) <= set(RENDERERS):
@@ -647,7 +683,7 @@ def main():
         which = [v for v in args.agree_variants.split(",") if v != "diffuse"] or \
             list(TEXTURE_ONLY_VARIANTS)
         data = texture_only(tools, args.agree_size or "256x256", args.agree_spp or 128, which,
-                            seed=args.seed, noise_seed=args.noise_seed,
+                            seed=args.seed, noise_seeds=args.noise_seed,
                             probe=args.texture_probe, pattern=args.cycles_pattern)
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
@@ -667,36 +703,40 @@ def main():
     base = common.load("cycles") if args.merge else None
 
     def save(data, complete=False):
+        """Every row carries the run that measured it ("run"); with --merge, this run's rows
+        replace only the base's rows of the same spp, variant and renderer."""
+        run = {"command": "python3 bench/cycles.py " + " ".join(sys.argv[1:]),
+               "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+               "git": common.git_head(), "complete": complete}
+        run.update({k: data.get(k) for k in ("size", "repetitions", "loadAverage1min")})
+        for r in data.get("rows", []):
+            r["run"] = run
+        for r in (data.get("agreement") or {}).get("results", {}).values():
+            r["run"] = {k: run[k] for k in ("command", "date", "git")}
         if base:
-            spps = {r["spp"] for r in data.get("rows", [])}
-            part = {k: data.get(k) for k in ("size", "spps", "repetitions", "cyclesFixedSeconds",
-                                              "loadAverage1min", "loadAverageBefore")}
-            part.update({"command": "python3 bench/cycles.py " + " ".join(sys.argv[1:]),
-                         "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-                         "complete": complete})
+            key = (lambda r: (r["spp"], r["variant"], r["renderer"]))
+            new = {key(r) for r in data.get("rows", [])}
             merged = dict(base)
-            merged["rows"] = [r for r in base["rows"] if r["spp"] not in spps] + data.get("rows", [])
-            merged["runs"] = dict(base["runs"], **data.get("runs", {}))
+            merged["rows"] = [r for r in base["rows"] if key(r) not in new] + data.get("rows", [])
+            br, dr = base.get("runs", {}), data.get("runs", {})
+            merged["runs"] = {spp: dict(br.get(spp, {}), **dr.get(spp, {}))
+                              for spp in set(br) | set(dr)}
             if data.get("agreement"):
                 ag = dict(base.get("agreement") or {"results": {}})
                 ag["results"] = dict(ag["results"], **data["agreement"]["results"])
                 merged["agreement"] = ag
-            if data.get("rows"):
-                merged["parts"] = [p for p in base.get("parts", [])
-                                   if p["command"] != part["command"]] + [part]
             if data.get("seedSpread"):
-                merged["seedSpread"] = dict(data["seedSpread"], command=part["command"],
-                                            date=part["date"])
+                merged["seedSpread"] = dict(data["seedSpread"], command=run["command"],
+                                            date=run["date"])
             merged["spps"] = sorted({r["spp"] for r in merged["rows"]})
+            merged.pop("parts", None)  # the rows' "run" says it now
             common.save("cycles", merged, args.out)
             return
         data.update({"complete": complete, "quick": args.quick,
-                     "seconds": time.perf_counter() - t0,
-                     "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-                     "machine": common.machine(), "git": common.git_head(),
+                     "seconds": time.perf_counter() - t0, "date": run["date"],
+                     "machine": common.machine(), "git": run["git"],
                      "loadAverage": os.getloadavg()[1], "build": os.path.relpath(
-                         tools.build, common.ROOT),
-                     "command": "python3 bench/cycles.py " + " ".join(sys.argv[1:])})
+                         tools.build, common.ROOT), "command": run["command"]})
         common.save("cycles", data, args.out)
 
     data = measure(tools, args.quick, save, args.size,
@@ -704,7 +744,7 @@ def main():
                    args.agree_size, args.agree_spp, not args.no_agree, variants, renderers,
                    args.agree_variants.split(","),
                    (lambda a: (a[0], int(a[1]), int(a[2])))(args.seeds.split(","))
-                   if args.seeds else None)
+                   if args.seeds else None, args.agree_seeds)
     save(data, True)
 
 

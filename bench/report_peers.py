@@ -14,7 +14,8 @@ def cycles_overheads():
     for v in ("rust-model", "scratches-model"):
         r = rows.get(("cycles", 1, v))
         if r and base:
-            f, fb = d["cyclesFixedSeconds"][v], d["cyclesFixedSeconds"]["diffuse"]
+            f, fb = (x.get("fixedSeconds", d["cyclesFixedSeconds"][x["variant"]])
+                     for x in (r, base))
             out[v.split("-")[0]] = 100 * (common.median(
                 [(t - f) / (b - fb) for t, b in zip(r["raw"], base["raw"])]) - 1)
     return out
@@ -27,28 +28,32 @@ def cycles_section(d):
         return lines + ["Not measured yet: run `python3 bench/cycles.py` (or `bench/run --only "
                         "cycles`); how to run it and what it measures: "
                         "[bench/cycles.md](bench/cycles.md).", ""]
-    loads = d.get("loadAverage1min") or [0.0]
-    lines += ["`%s`, %s, Cycles %s (bpy, CPU, both threads), %s, max depth %d (Cycles "
-              "max_bounces %d), %d repetitions interleaved (every renderer and variant in each, "
-              "rotating order), medians; 1-minute load average %.1f-%.1f on 2 cores%s. Cycles: "
-              "`render.render()` in one warm process, which includes Cycles' scene sync and BVH "
-              "build (a 16x16 1-spp render of the same file, median %.2f-%.2f s, is that fixed "
+    runs = {}  # the runs that measured the rows, oldest first (rows before session 10: d's)
+    for r in d["rows"]:
+        run = r.get("run") or {k: d.get(k) for k in ("command", "date", "size", "repetitions",
+                                                     "loadAverage1min", "complete")}
+        runs.setdefault((run["date"], run["command"]), (run, []))[1].append(r)
+    lines += ["Cycles %s (bpy, CPU, both threads), max depth %d (Cycles max_bounces %d), "
+              "repetitions interleaved (every renderer and variant in each, rotating order), "
+              "medians. Cycles: `render.render()` in one warm process, which includes Cycles' "
+              "scene sync and BVH build (a 16x16 1-spp render of the same file is that fixed "
               "part; \"Cycles less fixed\" subtracts it). texrender: `renderSeconds` (the frame, "
               "without BVH and kernel builds), default mode; rust and scratches are the examples' "
               "texcc graphs, not the Blender node trees, so their rows compare work, not pixels. "
               "Method and caveats: [bench/cycles.md](bench/cycles.md)." % (
-                  d["command"], d["date"], d.get("cyclesVersion", "?"), d["size"], d["maxDepth"],
-                  d["cyclesMaxBounces"], d["repetitions"], min(loads), max(loads),
-                  "" if d.get("complete", True) else " (run cut short: only the rows below)",
-                  min(d["cyclesFixedSeconds"].values()), max(d["cyclesFixedSeconds"].values())),
-              ""]
-    for part in d.get("parts", []):
-        pl = part.get("loadAverage1min") or [0.0]
-        lines += ["Added by `%s` (%s, %s, %d repetitions, 1-minute load %.1f-%.1f%s): its rows "
-                  "replace the first run's at %s spp." % (
-                      part["command"], part["date"], part["size"], part["repetitions"], min(pl),
-                      max(pl), "" if part.get("complete") else ", cut short",
-                      ", ".join(str(x) for x in part["spps"])), ""]
+                  d.get("cyclesVersion", "?"), d["maxDepth"], d["cyclesMaxBounces"]), "",
+              "Measured by:", ""]
+    for (date, command), (run, rows) in sorted(runs.items()):
+        loads = run.get("loadAverage1min") or [0.0]
+        fixed = [r["fixedSeconds"] for r in rows if "fixedSeconds" in r]
+        lines.append("- `%s`, %s, %s, %d repetitions, 1-minute load average %.1f-%.1f on 2 "
+                     "cores%s%s: %s" % (
+                         command, date, run["size"], run["repetitions"], min(loads), max(loads),
+                         "" if run.get("complete", True) else " (cut short)",
+                         ", Cycles' fixed part %.2f-%.2f s" % (min(fixed), max(fixed))
+                         if fixed else "",
+                         ", ".join(sorted({"%d spp" % r["spp"] for r in rows}))))
+    lines.append("")
     lines += ["| spp | variant | Cycles | Cycles less fixed | texrender auto (Embree) | "
               "texrender opencl | auto / Cycles | auto / Cycles less fixed | overhead over diffuse: "
               "Cycles | auto | opencl |", "|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -95,11 +100,17 @@ def cycles_section(d):
                     v, res["error"].replace("|", "/")))
                 continue
             for name, g in res["regions"].items():
-                lines.append("| %s | %s, %d | %s | %d | %s | %s | %s | %s |" % (
-                    v, res.get("size", ag.get("size")), res.get("spp", ag.get("spp")), name,
+                n = len(res.get("seeds", [1]))
+                lines.append("| %s | %s, %d%s | %s | %d | %s | %s | %s | %s |" % (
+                    v, res.get("size", ag.get("size")), res.get("spp", ag.get("spp")),
+                    " (%d seeds)" % n if n > 1 else "", name,
                     g["pixels"], ", ".join("%.4f" % x for x in g["a"]),
                     ", ".join("%.4f" % x for x in g["b"]),
                     ", ".join(pct(x) for x in g["relDiffPercent"]), fmt(res.get("flip"))))
+        by = sorted({(r["run"]["date"], r["run"]["command"], v) for v, r in ag["results"].items()
+                     if "run" in r})
+        if by:
+            lines += [""] + ["%s: `%s`, %s." % (v, c, t) for t, c, v in by]
     return lines + [""]
 
 
