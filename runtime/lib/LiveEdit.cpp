@@ -429,7 +429,7 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
       });
 }
 
-EditAction LiveEditor::plan(const Edit &E, bool Structural, const Renderer &R) {
+EditAction LiveEditor::plan(const Edit &E, bool Structural, Renderer &R) {
   if (!Lay.Caps.ReEncodes)
     return planEdit({}, Lay.Caps, {});
   texcc::graph::DiagnosticSink Diags;

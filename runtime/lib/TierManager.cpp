@@ -379,7 +379,7 @@ void TierManager::launchQueued() {
       },
       Events.size() - 1, Queued->Job.Nice);
   PendingReencode = std::move(Queued->Reencode);
-  PendingSwitches = Queued->Job.Shape || !Queued->Job.SameLayout;
+  PendingSwitches = switches(Queued->Job);
   Queued.reset();
 }
 
@@ -410,6 +410,17 @@ const std::string &TierManager::beginFrame() {
   adoptReadyBuild(); // a background shape build that finished since the last frame
   ++FramesRendered;
   return ActiveTier;
+}
+
+std::optional<double> TierManager::adoptFinishedFallback() {
+  if (!Pending || PendingSwitches || !Pending->ready())
+    return std::nullopt;
+  const size_t Index = Pending->eventIndex();
+  adoptReadyBuild();
+  const BuildEvent &E = Events[Index];
+  if (!E.Error.empty())
+    return std::nullopt;
+  return E.ReadySeconds - E.StartSeconds;
 }
 
 void TierManager::adoptReadyBuild() {

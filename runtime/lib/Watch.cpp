@@ -57,6 +57,10 @@ void Session::idle(double Until) {
   if (auto Warm = R->quickWarmUpFinished())
     say("the quick tier's programs are built (" + std::to_string(Warm->second) + " in " +
         ms(Warm->first) + ")");
+  // Adopted now, not at the next frame: a rewiring to a new shape needs it.
+  if (auto Took = R->adoptFinishedFallback())
+    say("the interp fallback is built (" + ms(*Took) + "); a rewiring to a new shape renders "
+        "with it at once");
   if (nowSeconds() - LastPoll >= 0.1)
     poll();
 }

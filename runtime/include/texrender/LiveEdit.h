@@ -103,7 +103,7 @@ private:
     std::string Graph, Out, Log;
   };
   /// Applies E to the graph editor and plans it (planEdit, with the layout's capabilities).
-  EditAction plan(const Edit &E, bool Structural, const Renderer &R);
+  EditAction plan(const Edit &E, bool Structural, Renderer &R);
   void regenerate(Renderer &R);
   void regenerateInBackground(Renderer &R);
   Regeneration writeEditedGraph();

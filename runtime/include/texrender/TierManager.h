@@ -3,10 +3,10 @@
 
 // The texture kernels of a Renderer (docs/runtime.md, "Tiers"): which program renders the next
 // frame, the foreground builds frames wait for, the background builds (one thread at a time,
-// superseded ones finished and dropped), their adoption at a frame boundary, and the build
-// events stats.json reports. The Renderer keeps path tracing and launches the kernels this
-// class hands it; the building blocks (BackgroundBuild, buildShapeTier, the value-stack
-// headroom) are in TextureTiers.h.
+// superseded ones finished and dropped), their adoption at a frame boundary (the interp
+// fallback alone: as soon as it is done), and the build events stats.json reports. The
+// Renderer keeps path tracing and launches the kernels this class hands it; the building
+// blocks (BackgroundBuild, buildShapeTier, the value-stack headroom) are in TextureTiers.h.
 
 #include "texrender/ClContext.h"
 #include "texrender/Layout.h"
@@ -57,8 +57,9 @@ public:
   /// foreground and, tier auto, the other tier on the background thread. HasTextureWork false:
   /// no texture kernel at all.
   void build(bool HasTextureWork);
-  /// Whether switchShapes can run: a shape-mode layout whose interp fallback is built.
-  bool canSwitchShapes() const { return Lay.Caps.InterpFallback && InterpProgram(); }
+  /// Whether switchShapes can run: a shape-mode layout whose interp fallback is built (one
+  /// finished on the background thread is adopted here: adoptFinishedFallback).
+  bool canSwitchShapes() { return Lay.Caps.InterpFallback && fallbackBuilt(); }
   /// Renderer::switchShapes: the interp fallback renders at once, MakeLayout's layout is built
   /// on the background thread and Reencode fills it at adoption (TextureTiers.h). The renderer
   /// has uploaded the re-encoded arguments before.
@@ -70,14 +71,21 @@ public:
   /// Waits for the background build in flight, if any, and switches to its kernels. Returns
   /// the seconds waited.
   double waitForBackgroundBuild();
-  /// A background build is queued or running; one that makes a kernel to switch to (the shape
-  /// kernel, or a new layout) no longer counts once it is done, so that an idle session notices
-  /// it (the next frame adopts it). A build queued behind a superseded one that has ended
-  /// starts here, so that it does not wait for the next frame (an idle session renders none).
+  /// A background build that makes a kernel to switch to (the shape kernel, or a new layout)
+  /// is queued or running; it no longer counts once it is done, so that an idle session notices
+  /// it (the next frame adopts it). A build of the interp fallback alone never counts: no frame
+  /// changes when it is adopted (adoptFinishedFallback). A build queued behind a superseded one
+  /// that has ended starts here, so that it does not wait for the next frame (an idle session
+  /// renders none).
   bool backgroundBuildPending() {
     launchQueued();
-    return Queued || (Pending && (!PendingSwitches || !Pending->ready()));
+    return (Queued && switches(Queued->Job)) || (Pending && PendingSwitches && !Pending->ready());
   }
+  /// Adopts a finished background build that made only the interp fallback (the layout's own
+  /// kernel renders meanwhile), now rather than at the next frame: an idle session renders none,
+  /// and a rewiring to a new shape needs the fallback (canSwitchShapes, fallbackStackSlots ask
+  /// here first). Returns the build's wall seconds when one was adopted by this call.
+  std::optional<double> adoptFinishedFallback();
   /// On: a background build that makes only the interp fallback of a layout whose own kernel
   /// renders (tier auto: the shape kernel built in the foreground, or built behind the quick
   /// tier) waits for startDeferredBuild() instead of starting with the layout. texrender
@@ -118,8 +126,9 @@ public:
 
   TierPolicy policy() const { return Policy; }
   const std::string &activeTier() const { return ActiveTier; }
-  /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none.
-  unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
+  /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none. A
+  /// fallback finished on the background thread is adopted first (adoptFinishedFallback).
+  unsigned fallbackStackSlots() { return fallbackBuilt() ? FallbackSlots : 0; }
   /// interp mode: the value-stack slots the built kernel holds.
   unsigned interpStackSlots() const { return InterpModeSlots; }
   const std::vector<BuildEvent> &buildEvents() const { return Events; }
@@ -127,6 +136,12 @@ public:
   double foregroundBuildSeconds() const;
 
 private:
+  bool fallbackBuilt() {
+    adoptFinishedFallback();
+    return bool(InterpProgram());
+  }
+  /// The job makes a kernel frames switch to (the shape kernel, or a new layout).
+  static bool switches(const TierJob &J) { return J.Shape || !J.SameLayout; }
   void buildShapeTiers(const char *Reason);
   /// The quick tier for this layout, if its programs are kept but at most one (built here).
   bool buildQuickTier(const char *Reason);
