@@ -88,7 +88,7 @@ def table1_section(d):
              "texture kernel | AO kernels | other kernels | Cycles 5.0, measured (paper's "
              "Cycles-sim) | paper: RTX | paper: texcc |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
-    measured = cycles_overheads()
+    measured, measured_spp = cycles_overheads()
     for r in d["rows"]:
         p = r["paper"]
         other = r["kernelIncreasePercent"] - r["textureKernelPercent"] - r["aoKernelPercent"]
@@ -101,8 +101,8 @@ def table1_section(d):
     lines += ["", "Cycles, measured: the same scene rebuilt in Blender (examples/blender/make_scene.py) "
               "with Blender node-tree versions of rust and scratches on the model, Cycles' "
               "`render.render()` time less its fixed part (scene sync and BVH build, measured as a "
-              "16x16 render) over the diffuse scene's at 1 spp, median of per-repetition ratios (bench/cycles.py, section \"Side by side with Cycles\"); in brackets the "
-              "paper's simulated Cycles figure, which it replaces.", "",
+              "16x16 render) over the diffuse scene's at %s spp, median of per-repetition ratios (bench/cycles.py, section \"Side by side with Cycles\"); in brackets the "
+              "paper's simulated Cycles figure, which it replaces." % measured_spp, "",
               "Texture kernel, AO kernels: their device time as a share of the baseline's "
               "kernel time; other kernels: the rest of the kernel-time increase (tracing, "
               "shading, hit attributes: the textured material changes the paths, e.g. the "
