@@ -22,8 +22,9 @@ kernel) is changed and saved SETTLE seconds after the quick tier's warm-up (shap
 in the background after the first complete frame). Measured from the save: the first frame
 rendered with the new code (texcc in the background, then the foreground build of the changed
 function's quick program only; tier quick), the first full-resolution frame with it, and the
-first frame of the shape tier (the shape kernel is built behind the quick tier at once and
-takes over when ready; its interp fallback follows once a frame is complete); texrender's own
+first frame of the shape tier (the shape kernel is built behind the quick tier once its first
+full-resolution pass is done and takes over when ready; its interp fallback follows once a frame
+is complete); texrender's own
 split of that first frame ("source change" line: texcc, the compiler priming waited for, the
 adoption and its program builds, the pass) and its own time from the change to the takeover
 ("the background build is done: ... N ms after the change that needed it").

@@ -124,6 +124,7 @@ void TierManager::build(bool HasWork) {
   HasTextureWork = HasWork;
   supersedePending();
   Deferred.reset();
+  HeldShape.reset();
   TextureKernels.clear();
   ShapeProgram = InterpProgram = cl::Program();
   ActiveTier.clear();
@@ -160,17 +161,15 @@ void TierManager::buildShapeTiers(const char *Reason) {
   const bool FallbackCached = Cl.isCached(FallbackText, ProgramOptions + FallbackHeadroom);
   const TierBuildPlan Plan = planTierBuilds(Policy, ShapeCached, FallbackCached);
   // Neither cached (a changed function): the quick tier, when it needs at most one build. The
-  // shape kernel is built behind it at once, at the renderer's own priority, and takes over
-  // when it is ready; its fallback is held back like the fallback below.
+  // shape kernel is built behind it once its first full-resolution pass is done (fullPassDone),
+  // at the renderer's own priority, and takes over when it is ready; its fallback waits for
+  // startDeferredBuild (setQuickTier: the caller drives both).
   if (Policy == TierPolicy::Auto && !ShapeCached && !FallbackCached && buildQuickTier(Reason)) {
     Layout Same = Lay;
     TierJob Shape{/*SameLayout=*/true, /*Shape=*/true, /*Interp=*/false, ShapeText, {}, 0};
     TierJob Fallback{/*SameLayout=*/true, /*Shape=*/false, /*Interp=*/true, {}, FallbackText};
-    startBackgroundBuild([Same] { return Same; }, Shape, nullptr, Reason);
-    if (DeferFallback)
-      Deferred = QueuedBuild{[Same] { return Same; }, Fallback, nullptr, Reason};
-    else
-      Queued = QueuedBuild{[Same] { return Same; }, Fallback, nullptr, Reason};
+    HeldShape = QueuedBuild{[Same] { return Same; }, Shape, nullptr, Reason};
+    Deferred = QueuedBuild{[Same] { return Same; }, Fallback, nullptr, Reason};
     return;
   }
   if (Plan.ShapeNow)
@@ -330,8 +329,17 @@ void TierManager::mergeQuickWarmUp(bool Wait) {
   }
 }
 
+bool TierManager::fullPassDone() {
+  if (!HeldShape)
+    return false;
+  QueuedBuild B = std::move(*HeldShape);
+  HeldShape.reset();
+  startBackgroundBuild(std::move(B.MakeLayout), B.Job, std::move(B.Reencode), B.Reason);
+  return true;
+}
+
 bool TierManager::startDeferredBuild() {
-  if (!Deferred || Pending || Queued)
+  if (!Deferred || Pending || Queued || HeldShape)
     return false;
   QueuedBuild B = std::move(*Deferred);
   Deferred.reset();
@@ -467,6 +475,7 @@ void TierManager::adopt(TierBuildResult &R) {
 double TierManager::waitForBackgroundBuild() {
   double T0 = steadySeconds();
   mergeQuickWarmUp(/*Wait=*/true);
+  fullPassDone(); // a shape kernel held behind the quick tier: it is what is waited for
   while (Pending || Queued || !Retired.empty()) {
     reapRetired(/*Wait=*/true);
     launchQueued();

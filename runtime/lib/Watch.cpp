@@ -125,7 +125,8 @@ void Session::noteQuickTier(double Since) {
   if (R->activeTier() != QuickTierName || !R->backgroundBuildPending())
     return;
   QuickSince = Since;
-  say("the shape kernel builds in the background now; the quick tier renders until it is ready");
+  say("the shape kernel builds in the background after the quick tier's first full-resolution "
+      "pass; the quick tier renders until it is ready");
 }
 
 void Session::primeCompiler() {

@@ -180,10 +180,19 @@ bool Session::afterPass(const PassProgress &P) {
   // The first image after a change is written at once; the others at most 4 times a second.
   if (Now - LastWrite >= 0.25 || ChangeAt > 0 || EditAt > 0)
     writeProgress(P.Image(), P.SamplesDone);
+  fullPassDone();
   if (Now - LastPoll >= 0.1)
     poll();
   PassResume = nowSeconds();
   return !stopping() && !work();
+}
+
+void Session::fullPassDone() {
+  // The shape kernel held behind the quick tier (TierManager::setQuickTier): started with the
+  // new kernel, its compile slowed this pass.
+  if (R->fullPassDone())
+    say("the shape kernel builds in the background now (the quick tier's first full-resolution "
+        "pass is done)");
 }
 
 void Session::renderFrame() {
@@ -203,6 +212,8 @@ void Session::renderFrame() {
   std::vector<float> Image = renderThen(F, [this] { Cuttable = false; });
   if ((!F.Interrupted || stopping()) && F.SamplesDone > 0)
     writeProgress(Image, F.SamplesDone);
+  if (F.SamplesDone > 0)
+    fullPassDone();
   if (F.PassCut)
     say("pass " + std::to_string(F.SamplesDone + 1) + " cut short after " +
         ms(nowSeconds() - PassResume) + " for a change (" + std::to_string(++PassesCut) +

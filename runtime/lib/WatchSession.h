@@ -207,6 +207,8 @@ private:
   /// After a change that regenerated the kernel (noticed at Since): if the quick tier renders
   /// it, says that the shape kernel builds behind it, and the takeover is timed from Since.
   void noteQuickTier(double Since);
+  /// After a full-resolution pass: starts the shape kernel held behind the quick tier.
+  void fullPassDone();
   /// Renders with all the samples (stopped early by work()), writing progress images.
   void renderFrame();
   /// R->render(Stats), then Restore() (the settings or state the pass changed), whether the

@@ -134,6 +134,7 @@ public:
   bool startDeferredBuild() { return Tiers->startDeferredBuild(); }
   /// TierManager::setQuickTier and warmQuickPrograms (texrender --watch).
   void setQuickTier(bool On) { Tiers->setQuickTier(On); }
+  bool fullPassDone() { return Tiers->fullPassDone(); }
   bool warmQuickPrograms() { return Tiers->warmQuickPrograms(); }
   std::optional<std::pair<double, unsigned>> quickWarmUpFinished() {
     return Tiers->quickWarmUpFinished();

@@ -79,7 +79,8 @@ public:
   /// renders none).
   bool backgroundBuildPending() {
     launchQueued();
-    return (Queued && switches(Queued->Job)) || (Pending && PendingSwitches && !Pending->ready());
+    return HeldShape || (Queued && switches(Queued->Job)) ||
+           (Pending && PendingSwitches && !Pending->ready());
   }
   /// Adopts a finished background build that made only the interp fallback (the layout's own
   /// kernel renders meanwhile), now rather than at the next frame: an idle session renders none,
@@ -101,11 +102,16 @@ public:
   /// them; a regenerated layout whose shape kernel and fallback are both uncached then renders
   /// with its quick programs when all but at most one are kept (a saved source file that changed
   /// one function): that one is built in the foreground, tier "quick", the shape kernel is built
-  /// behind it at once at the renderer's own priority (TierJob::Nice 0: at nice 19 it waited a
-  /// minute behind a loaded machine) and takes over when it is ready, and its fallback is left
-  /// to the deferred build (setDeferFallbackBuilds). A save while the warm-up runs does not wait
+  /// behind it once the quick tier's first full-resolution pass is done (the caller calls
+  /// fullPassDone; started at the adoption, its compile slowed that pass, bench/lookdev.md), at
+  /// the renderer's own priority (TierJob::Nice 0: at nice 19 it waited a minute behind a loaded
+  /// machine), and takes over when it is ready; its fallback waits for startDeferredBuild
+  /// (whether or not setDeferFallbackBuilds is on). A save while the warm-up runs does not wait
   /// for it: the shape kernel's path, as without the quick tier.
   void setQuickTier(bool On) { QuickTier = On; }
+  /// A full-resolution pass is done (texrender --watch, after each): starts the shape kernel's
+  /// build held behind the quick tier, if there is one; returns whether it started.
+  bool fullPassDone();
   /// Starts building, in the background, the quick programs of the layout not kept yet (none
   /// while an earlier warm-up runs); returns whether it started.
   bool warmQuickPrograms();
@@ -200,6 +206,7 @@ private:
   std::optional<QueuedBuild> Queued;
   bool DeferFallback = false;
   std::optional<QueuedBuild> Deferred; // setDeferFallbackBuilds's build, until started
+  std::optional<QueuedBuild> HeldShape; // the quick tier's shape kernel, until fullPassDone
   std::vector<BuildEvent> Events;
   unsigned FramesRendered = 0;
   bool QuickTier = false;
