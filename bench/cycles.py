@@ -501,7 +501,11 @@ def seed_list(text):
     out = []
     for part in text.split(","):
         lo, _, hi = part.partition("-")
+        if int(hi or lo) < int(lo):
+            raise ValueError("empty range %s" % part)
         out += range(int(lo), int(hi or lo) + 1)
+    if len(set(out)) != len(out):
+        raise ValueError("a seed twice in %s" % text)
     return out
 
 
