@@ -19,7 +19,9 @@ Ray comes from PyPI (scripts/requirements-farm.txt) and is installed into the re
 import argparse
 import hashlib
 import json
+import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -41,9 +43,9 @@ def run_in_venv():
 
 if __name__ == "__main__":
     run_in_venv()
-sys.path.insert(0, os.path.join(REPO, "scripts"))
 
 import texexr  # noqa: E402
+from atomic_write import AtomicWriteError, write_bytes  # noqa: E402
 
 REQUIREMENTS = os.path.join(REPO, "scripts", "requirements-farm.txt")
 # texrender options that farm.py sets per task (or that make no sense per tile).
@@ -57,6 +59,11 @@ VALUE_OPTIONS = {"--spp", "--size", "--max-depth", "--ao-samples", "--ao-distanc
 
 class FarmError(Exception):
     pass
+
+
+def first_line(error):
+    text = str(error).strip()
+    return text.splitlines()[0] if text else type(error).__name__
 
 
 def fail(message):
@@ -180,18 +187,40 @@ def render_tile(texrender, files, digest, options, frame, region, sweep, crash_m
 
 # --- options ----------------------------------------------------------------------------------
 
+# Bounds checked before anything is allocated or started: texrender's --frame is a 32-bit int,
+# and every (frame, tile) task is submitted at once (a longer run is split into several).
+MAX_FRAME = 2 ** 31 - 1
+MAX_TASKS = 1000000
+MAX_SWEEP = 10000
+MAX_RETRIES = 100
+FRAME_PART = re.compile(r"(\d+)(?:-(\d+))?$")
+
+
 def parse_frames(text):
-    frames = []
+    """N, A-B or a comma list of them, each frame once, in the order given; the count is
+    checked before the list is built."""
+    ranges, count = [], 0
     for part in text.split(","):
-        a, _, b = part.partition("-")
-        try:
-            lo, hi = int(a), int(b or a)
-        except ValueError:
-            raise FarmError("--frames: expected N, A-B or a list of them, got '%s'" % text)
+        m = FRAME_PART.match(part)
+        if not m:
+            raise FarmError("--frames: expected N, A-B or a comma list of them, got '%s'" % text)
+        lo, hi = int(m.group(1)), int(m.group(2) or m.group(1))
         if hi < lo:
             raise FarmError("--frames %s: %d-%d is empty" % (text, lo, hi))
-        frames.extend(range(lo, hi + 1))
-    return frames
+        if hi > MAX_FRAME:
+            raise FarmError("--frames %s: frame %d is past texrender's last frame %d"
+                            % (text, hi, MAX_FRAME))
+        count += hi - lo + 1
+        if count > MAX_TASKS:
+            raise FarmError("--frames %s: more than %d frames in one run; split it into several "
+                            "runs" % (text, MAX_TASKS))
+        ranges.append((lo, hi))
+    seen = sorted(ranges)
+    for (a_lo, a_hi), (b_lo, b_hi) in zip(seen, seen[1:]):
+        if b_lo <= a_hi:
+            raise FarmError("--frames %s: frame %d is listed twice; list each frame once"
+                            % (text, b_lo))
+    return [f for lo, hi in ranges for f in range(lo, hi + 1)]
 
 
 def parse_pair(option, text, sep):
@@ -214,6 +243,10 @@ def parse_sweep(text):
             raise ValueError
     except (ValueError, IndexError):
         raise FarmError("--sweep: expected NODE.ARG=A:B:N, got '%s'" % text)
+    if not (math.isfinite(a) and math.isfinite(b)) or max(abs(a), abs(b)) > 3.4e38:
+        raise FarmError("--sweep %s: A and B must be finite 32-bit floats" % text)
+    if n > MAX_SWEEP:
+        raise FarmError("--sweep %s: at most %d values" % (text, MAX_SWEEP))
     values = [a + (b - a) * k / (n - 1) if n > 1 else a for k in range(n)]
     # Integer ends and steps stay integers (an int parameter refuses "2.0").
     if all(v == int(v) for v in values) and "." not in parts[0] + parts[1]:
@@ -223,7 +256,7 @@ def parse_sweep(text):
 
 def tiles_of(width, height, nx, ny):
     """(x, y, w, h) of an nx x ny grid over the film; edge tiles take the remainder."""
-    if nx > width or ny > height:
+    if nx > width or ny > height or nx * ny > MAX_TASKS:
         raise FarmError("--tiles %dx%d: more tiles than pixels (%dx%d)" % (nx, ny, width, height))
     xs = [width * i // nx for i in range(nx + 1)]
     ys = [height * j // ny for j in range(ny + 1)]
@@ -231,7 +264,9 @@ def tiles_of(width, height, nx, ny):
             for j in range(ny) for i in range(nx)]
 
 
-def film_size(scene_path, options):
+def film_size(scene, options):
+    """The film's size as texrender will use it (--size, else the scene's film); a value
+    texrender refuses is refused by the validation run, this only has to not crash."""
     size = None
     for k, opt in enumerate(options):
         if opt == "--size" and k + 1 < len(options):
@@ -240,8 +275,12 @@ def film_size(scene_path, options):
             size = opt.split("=", 1)[1]
     if size:
         return parse_pair("--size", size, "x")
-    film = json.loads(read_bytes(scene_path)).get("film", {})
-    return film.get("width", 256), film.get("height", 256)
+    film = scene.get("film", {})
+    width, height = (film.get("width", 256), film.get("height", 256)) \
+        if isinstance(film, dict) else (256, 256)
+    if not all(isinstance(v, int) and v >= 1 for v in (width, height)):
+        return 256, 256  # texrender's validation run names the problem
+    return width, height
 
 
 def check_passthrough(options):
@@ -271,18 +310,6 @@ def output_name(pattern, frame, sweep_index):
         stem, ext = os.path.splitext(name)
         name = "%s.v%d%s" % (stem, sweep_index, ext)
     return name
-
-
-def write_atomically(path, data):
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(path) + ".")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
 
 
 def find_texrender(given):
@@ -342,17 +369,44 @@ class Progress:
         sys.stderr.flush()
 
 
+def check_cluster_options(args):
+    """--workers, --retries and --address, before Ray starts: Ray's own checks are a
+    traceback (--workers -3) or none at all (--workers 0 schedules nothing and waits forever)."""
+    if args.address is not None and args.workers is not None:
+        raise FarmError("--workers: applies to the local cluster farm.py starts; with --address "
+                        "each node's `ray start --num-cpus` sets its CPUs")
+    if args.workers is not None and not 1 <= args.workers <= 4096:
+        raise FarmError("--workers %d: expected 1 to 4096 CPUs" % args.workers)
+    if not 0 <= args.retries <= MAX_RETRIES:
+        raise FarmError("--retries %d: expected 0 to %d" % (args.retries, MAX_RETRIES))
+
+
+def read_scene(path):
+    try:
+        scene = json.loads(read_bytes(path))
+    except ValueError as e:
+        raise FarmError("%s: not JSON: %s" % (path, e))
+    if not isinstance(scene, dict):
+        raise FarmError("%s: expected a JSON object (docs/scene.md)" % path)
+    return scene
+
+
 def render(args, options):
-    frames = parse_frames(args.frames)
-    nx, ny = parse_pair("--tiles", args.tiles, "x")
-    width, height = film_size(args.scene, options)
-    tiles = tiles_of(width, height, nx, ny)
-    sweep = parse_sweep(args.sweep) if args.sweep else None
+    check_cluster_options(args)
     check_passthrough(options)
+    frames = parse_frames(args.frames)
+    sweep = parse_sweep(args.sweep) if args.sweep else None
+    nx, ny = parse_pair("--tiles", args.tiles, "x")
+    if len(frames) * nx * ny > MAX_TASKS:
+        raise FarmError("--frames %s --tiles %s: %d tasks, more than %d in one run; split it "
+                        "into several runs" % (args.frames, args.tiles, len(frames) * nx * ny,
+                                               MAX_TASKS))
+    scene = read_scene(args.scene)
+    width, height = film_size(scene, options)
+    tiles = tiles_of(width, height, nx, ny)
     texrender = find_texrender(args.texrender)
     textures = args.textures or os.path.join(
-        os.path.dirname(os.path.abspath(args.scene)),
-        json.loads(read_bytes(args.scene)).get("textures", ""))
+        os.path.dirname(os.path.abspath(args.scene)), str(scene.get("textures", "")))
     if not os.path.isfile(os.path.join(textures, "layout.json")):
         raise FarmError("%s: not a texcc output folder (no layout.json)" % textures)
     for f in frames:
@@ -376,11 +430,15 @@ def render(args, options):
     # a traceback at exit ("Unhandled error").
     os.environ.setdefault("RAY_IGNORE_UNHANDLED_ERRORS", "1")
     ray = import_ray()
-    if args.address:
-        ray.init(address=args.address, logging_level="ERROR", log_to_driver=False)
-    else:
-        ray.init(num_cpus=args.workers, logging_level="ERROR", log_to_driver=False,
-                 include_dashboard=False)
+    try:
+        if args.address:
+            ray.init(address=args.address, logging_level="ERROR", log_to_driver=False)
+        else:
+            ray.init(num_cpus=args.workers or os.cpu_count(), logging_level="ERROR",
+                     log_to_driver=False, include_dashboard=False)
+    except Exception as e:  # Ray's own errors (a wrong --address, a node that cannot start)
+        raise FarmError("Ray did not start%s: %s" % (
+            " at --address " + args.address if args.address else "", first_line(e)))
     task = ray.remote(num_cpus=1, max_retries=args.retries)(render_tile)
     files_ref = ray.put(files)
     crash = os.environ.get("FARM_TEST_CRASH_ONCE", "")
@@ -403,9 +461,8 @@ def render(args, options):
                 cause = e.cause if getattr(e, "cause", None) else e
                 raise FarmError("frame %d, tile %s: %s" % (f, "%d,%d,%d,%d" % t, cause))
             except ray.exceptions.RayError as e:  # a worker or node lost more times than retried
-                first = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
                 raise FarmError("frame %d, tile %s: %s (after %d retries)"
-                                % (f, "%d,%d,%d,%d" % t, first, args.retries))
+                                % (f, "%d,%d,%d,%d" % t, first_line(e), args.retries))
             got[f][t] = images
             tasks_done += 1
             if len(got[f]) == len(tiles):
@@ -422,7 +479,7 @@ def write_frame(pattern, frame, width, height, tiles, sweep):
         image = np.zeros((height, width, 3), dtype=np.float32)
         for (x, y, w, h), images in tiles.items():
             image[y:y + h, x:x + w] = texexr.read_exr(images[k])
-        write_atomically(output_name(pattern, frame, k if sweep else None), texexr.write_exr(image))
+        write_bytes(output_name(pattern, frame, k if sweep else None), texexr.write_exr(image))
 
 
 # --- stitch -----------------------------------------------------------------------------------
@@ -434,14 +491,19 @@ def stitch(args):
     image = np.zeros((height, width, 3), dtype=np.float32)
     for spec in args.tiles:
         path, _, at = spec.rpartition("@")
-        x, y = (int(v) for v in at.split(","))
+        try:
+            x, y = (int(v) for v in at.split(","))
+            if not path or x < 0 or y < 0:
+                raise ValueError
+        except ValueError:
+            raise FarmError("expected TILE.exr@X,Y with X, Y at least 0, got '%s'" % spec)
         tile = texexr.read_exr(read_bytes(path))
         h, w, _ = tile.shape
         if x + w > width or y + h > height:
             raise FarmError("%s: a %dx%d tile at %d,%d is outside %dx%d" % (path, w, h, x, y,
                                                                            width, height))
         image[y:y + h, x:x + w] = tile
-    write_atomically(args.output, texexr.write_exr(image))
+    write_bytes(args.output, texexr.write_exr(image))
 
 
 def main(argv):
@@ -456,9 +518,9 @@ def main(argv):
     r.add_argument("--tiles", default="1x1", help="tiles per frame, NXxNY (default 1x1)")
     r.add_argument("-o", "--output", required=True, help="frame file name with #### (EXR)")
     r.add_argument("--address", help="an existing Ray cluster (default: start a local one)")
-    r.add_argument("--workers", type=int, default=os.cpu_count(),
-                   help="CPUs of the local cluster (default: all)")
-    r.add_argument("--retries", type=int, default=3, help="retries of a task whose worker dies")
+    r.add_argument("--workers", type=int,
+                   help="CPUs of the local cluster, 1 to 4096 (default: all)")
+    r.add_argument("--retries", type=int, default=3, help="retries of a task whose worker dies, 0 to %d (default 3)" % MAX_RETRIES)
     r.add_argument("--sweep", help="NODE.ARG=A:B:N: one image per value (live edits)")
     r.add_argument("--texrender", help="texrender on every node (default: PATH, then build/bin)")
     s = sub.add_parser("stitch", help="place texrender --region tiles into one EXR")
@@ -473,8 +535,16 @@ def main(argv):
             stitch(args)
         else:
             render(args, rest)
-    except (FarmError, texexr.ExrError, OSError) as e:
+    except (FarmError, texexr.ExrError, AtomicWriteError) as e:
         fail(str(e))
+    except OSError as e:
+        fail("%s: %s" % (e.filename, e.strerror) if e.filename and e.strerror else str(e))
+    except KeyboardInterrupt:
+        fail("interrupted (frames written so far are complete; no partial file is left)")
+    except MemoryError:
+        fail("out of memory")
+    except Exception as e:  # a bug of farm.py: still one line, never a traceback
+        fail("internal error: %s: %s" % (type(e).__name__, first_line(e)))
     return 0
 
 
