@@ -142,8 +142,10 @@ static ImageRGBA readExr(const std::string &Path) {
 void writeAtomically(const std::string &Path,
                      const std::function<void(const std::string &)> &Write) {
   std::filesystem::path Target(Path);
-  texcc::removeStaleTemporaries(Target.parent_path().string(), {Target.filename().string()});
   std::string Why;
+  if (!texcc::checkReplaceable(Path, Why)) // before anything is written next to it (/dev/full)
+    throw Error(Path + ": cannot write: " + Why);
+  texcc::removeStaleTemporaries(Target.parent_path().string(), {Target.filename().string()});
   if (!texcc::writeAtomicallyWith(
           Path, [&](const std::string &Temp, std::string &) { Write(Temp); return true; }, Why))
     throw Error(Path + ": cannot write: " + Why);
@@ -158,35 +160,87 @@ std::string readWholeFile(const std::string &Path, const std::string &What) {
 
 void writeTextFile(const std::string &Path, const std::string &Text) {
   writeAtomically(Path, [&](const std::string &Temp) {
-    std::ofstream Out(Temp, std::ios::binary);
-    Out << Text;
-    Out.close();
-    if (!Out)
-      throw Error(Path + ": cannot write: " + std::strerror(errno));
+    std::string Why;
+    if (!texcc::writeWholeFile(Temp, Text.data(), Text.size(), Why))
+      throw Error(Path + ": cannot write: " + Why);
   });
+}
+
+/// The EXR file's bytes, as tinyexr's SaveEXR makes them (3 float channels stored B, G, R; ZIP
+/// compression, none below 16x16), in memory: SaveEXR's own file writing ignored fclose()'s
+/// result, so on a full disk the last buffered block was lost and the file torn with success.
+using MallocBytes = std::unique_ptr<unsigned char, void (*)(void *)>;
+
+static MallocBytes encodeExr(const std::string &Path, int Width, int Height,
+                             const std::vector<float> &RGB, size_t &Size) {
+  const size_t Pixels = size_t(Width) * size_t(Height);
+  std::vector<float> Planes[3];
+  for (int C = 0; C < 3; ++C) {
+    Planes[C].resize(Pixels);
+    for (size_t I = 0; I < Pixels; ++I)
+      Planes[C][I] = RGB[3 * I + size_t(C)];
+  }
+  EXRHeader Header;
+  InitEXRHeader(&Header);
+  Header.compression_type =
+      Width < 16 && Height < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+  EXRChannelInfo Channels[3] = {};
+  int PixelTypes[3], Requested[3];
+  const char *Names[3] = {"B", "G", "R"};
+  float *ImagePtr[3] = {Planes[2].data(), Planes[1].data(), Planes[0].data()};
+  for (int C = 0; C < 3; ++C) {
+    std::strncpy(Channels[C].name, Names[C], sizeof Channels[C].name - 1);
+    PixelTypes[C] = Requested[C] = TINYEXR_PIXELTYPE_FLOAT;
+  }
+  Header.num_channels = 3;
+  Header.channels = Channels;
+  Header.pixel_types = PixelTypes;
+  Header.requested_pixel_types = Requested;
+  EXRImage Image;
+  InitEXRImage(&Image);
+  Image.num_channels = 3;
+  Image.images = reinterpret_cast<unsigned char **>(ImagePtr);
+  Image.width = Width;
+  Image.height = Height;
+  unsigned char *Mem = nullptr;
+  const char *Err = nullptr;
+  Size = SaveEXRImageToMemory(&Image, &Header, &Mem, &Err);
+  if (Size == 0 || !Mem) {
+    std::string Why = Err ? Err : "unknown error";
+    if (Err)
+      FreeEXRErrorMessage(Err);
+    std::free(Mem);
+    throw Error(Path + ": cannot write EXR: " + Why);
+  }
+  return MallocBytes(Mem, std::free);
+}
+
+/// Bytes to Temp (writeWholeFile: every write and the close checked); a failure names Path.
+static void writeBytes(const std::string &Path, const std::string &Temp, const void *Data,
+                       size_t Size) {
+  std::string Why;
+  if (!texcc::writeWholeFile(Temp, Data, Size, Why))
+    throw Error(Path + ": cannot write: " + Why);
 }
 
 static void writeExr(const std::string &Path, const std::string &Temp, int Width, int Height,
                      const std::vector<float> &RGB) {
-  // tinyexr's SaveEXR copies the pixels into four float planes, compresses them into blocks and
-  // then mallocs the whole file without checking the result (a write through the null pointer,
-  // SIGSEGV, when it fails). So first reserve its worst case, as ClContext::allocate does for
-  // PoCL's buffers (reserved and released at once, nothing touched): the planes (16 bytes a
-  // pixel), the blocks and the file (each at most the 12 bytes a pixel of the data, and zlib's
-  // bound on top).
+  // tinyexr copies the pixels into float planes (here: encodeExr's three), compresses them into
+  // blocks and then mallocs the whole file without checking the result (a write through the
+  // null pointer, SIGSEGV, when it fails). So first reserve the worst case, as
+  // ClContext::allocate does for PoCL's buffers (reserved and released at once, nothing
+  // touched): the planes (16 bytes a pixel), the blocks and the file (each at most the 12 bytes
+  // a pixel of the data, and zlib's bound on top).
   const size_t Pixels = size_t(Width) * size_t(Height);
-  const size_t Data = 12 * Pixels, Worst = 16 * Pixels + 2 * (compressBound(uLong(Data)) + (1u << 20));
+  const size_t Data = 12 * Pixels,
+               Worst = 16 * Pixels + 2 * (compressBound(uLong(Data)) + (1u << 20));
   void *Probe = std::malloc(Worst);
   if (!Probe)
     throw std::bad_alloc(); // named by writeImage's step
   std::free(Probe);
-  const char *Err = nullptr;
-  if (SaveEXR(RGB.data(), Width, Height, 3, 0, Temp.c_str(), &Err) != TINYEXR_SUCCESS) {
-    std::string Why = Err ? Err : "unknown error";
-    if (Err)
-      FreeEXRErrorMessage(Err);
-    throw Error(Path + ": cannot write EXR: " + Why);
-  }
+  size_t Size = 0;
+  const MallocBytes File = encodeExr(Path, Width, Height, RGB, Size);
+  writeBytes(Path, Temp, File.get(), Size);
 }
 
 static void writePng(const std::string &Path, const std::string &Temp, int Width, int Height,
@@ -199,18 +253,14 @@ static void writePng(const std::string &Path, const std::string &Temp, int Width
   for (size_t I = 0; I < RGB.size(); ++I)
     Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
   // In memory first: stbi_write_png returns 0 both when an allocation fails and when the file
-  // cannot be opened, and does not check its fwrite.
+  // cannot be opened, and does not check its fwrite or fclose.
   int Len = 0;
-  std::unique_ptr<unsigned char, void (*)(void *)> Png(
+  MallocBytes Png(
       stbi_write_png_to_mem(Bytes.data(), Width * 3, Width, Height, 3, &Len), std::free);
   if (!Png)
     throw std::bad_alloc(); // its only failure: an allocation (named by writeImage's step)
   Bytes = {};
-  std::ofstream Out(Temp, std::ios::binary);
-  Out.write(reinterpret_cast<const char *>(Png.get()), Len);
-  Out.close();
-  if (!Out)
-    throw Error(Path + ": cannot write: " + std::strerror(errno));
+  writeBytes(Path, Temp, Png.get(), size_t(Len));
 }
 
 /// The last guard of "no Inf or NaN in an image": NaN becomes 0 and +-Inf +-FLT_MAX (the

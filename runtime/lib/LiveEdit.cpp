@@ -7,6 +7,7 @@
 #include "texcc/Graph/Graph.h"
 #include "texcc/Kernel/Manifest.h"
 #include "texcc/OutOfMemory.h"
+#include "texcc/Support/AtomicWrite.h"
 
 #include <algorithm>
 #include <chrono>
@@ -373,7 +374,9 @@ LiveEditor::Regeneration LiveEditor::writeEditedGraph() {
   auto Folder = std::make_shared<const TempFolder>(Work.string());
   Regeneration R{Folder, (Work / fs::path(Lay.GraphPath).filename()).string(),
                  (Work / "out").string(), (Work / "texcc.log").string()};
-  std::ofstream(R.Graph) << graphJson(absoluteGraph()).dump(2);
+  std::string Why;
+  if (!texcc::writeFileAtomically(R.Graph, graphJson(absoluteGraph()).dump(2), Why))
+    throw Error("cannot write the edited graph for texcc to '" + R.Graph + "': " + Why);
   return R;
 }
 

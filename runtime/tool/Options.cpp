@@ -2,6 +2,7 @@
 
 #include "Options.h"
 
+#include "texcc/Support/AtomicWrite.h"
 #include "texcc/Version.h"
 #include "texrender/Error.h"
 
@@ -128,8 +129,9 @@ void checkOutputPath(const std::string &Path) {
   fs::path Dir = fs::path(Path).parent_path();
   if (!Dir.empty() && !fs::is_directory(Dir))
     throw Error(Path + ": cannot write: '" + Dir.string() + "' is not a folder");
-  if (fs::is_directory(Path))
-    throw Error(Path + ": cannot write: it is a folder");
+  std::string Why;
+  if (!texcc::checkReplaceable(Path, Why)) // a folder, a device (/dev/full), a FIFO
+    throw Error(Path + ": cannot write: " + Why);
 }
 
 } // namespace

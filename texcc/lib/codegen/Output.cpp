@@ -2,11 +2,11 @@
 // are they renamed into place, so an error leaves the previous outputs as they were.
 #include "texcc/Codegen/Codegen.h"
 #include "texcc/StaleTemporaries.h"
+#include "texcc/Support/AtomicWrite.h"
 
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -27,11 +27,13 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
     Error = "cannot create output folder '" + Dir + "': " + EC.message();
     return false;
   }
-  for (const OutputFile &F : Files)
-    if (fs::is_directory(fs::path(Dir) / F.Name)) {
-      Error = "cannot write '" + (fs::path(Dir) / F.Name).string() + "': it is a folder";
+  for (const OutputFile &F : Files) {
+    std::string Why;
+    if (!texcc::checkReplaceable((fs::path(Dir) / F.Name).string(), Why)) {
+      Error = "cannot write '" + (fs::path(Dir) / F.Name).string() + "': " + Why;
       return false;
     }
+  }
   std::vector<std::string> Names;
   for (const OutputFile &F : Files)
     Names.push_back(F.Name);
@@ -41,11 +43,10 @@ bool writeOutputsAtomically(const std::string &Dir, const std::vector<OutputFile
   for (const OutputFile &F : Files) {
     fs::path Temp = fs::path(Dir) / ("." + F.Name + Suffix);
     Temps.push_back(Temp);
-    std::ofstream OS(Temp, std::ios::binary | std::ios::trunc);
-    OS.write(F.Contents.data(), static_cast<std::streamsize>(F.Contents.size()));
-    OS.close();
-    if (!OS) {
-      Error = "cannot write '" + Temp.string() + "': " + std::strerror(errno);
+    std::string Why;
+    if (!texcc::writeWholeFile(Temp.string(), F.Contents.data(), F.Contents.size(), Why)) {
+      // Named by the output it was for: the temporary is gone.
+      Error = "cannot write '" + (fs::path(Dir) / F.Name).string() + "': " + Why;
       removeAll(Temps);
       return false;
     }
