@@ -15,7 +15,7 @@ import os
 import tempfile
 
 __all__ = ["AtomicWriteError", "atomic_open", "write_bytes", "write_text", "new_file_mode",
-           "make_dir"]
+           "new_dir_mode", "make_dir"]
 
 
 class AtomicWriteError(Exception):
@@ -32,17 +32,26 @@ def _cause(error):
     return str(error) or type(error).__name__
 
 
-_MODE = None
+_UMASK = None
+
+
+def _umask():
+    """The process's umask (read once; os.umask can only be read by setting it)."""
+    global _UMASK
+    if _UMASK is None:
+        _UMASK = os.umask(0o022)
+        os.umask(_UMASK)
+    return _UMASK
 
 
 def new_file_mode():
-    """0666 less the process's umask (read once; os.umask can only be read by setting it)."""
-    global _MODE
-    if _MODE is None:
-        mask = os.umask(0o022)
-        os.umask(mask)
-        _MODE = 0o666 & ~mask
-    return _MODE
+    """0666 less the umask: what open() gives a new file."""
+    return 0o666 & ~_umask()
+
+
+def new_dir_mode():
+    """0777 less the umask: what mkdir gives a new folder (mkdtemp's is 0700)."""
+    return 0o777 & ~_umask()
 
 
 def make_dir(path, label=None):

@@ -29,11 +29,15 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-# The node table, the library signatures (blender_nodes.py) and the material translation.
+# The node table, the library signatures (blender_nodes.py), the material translation and the
+# render settings. Inside Blender (--python) this folder is not on sys.path by itself.
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from atomic_write import AtomicWriteError, atomic_open, make_dir, new_dir_mode  # noqa: E402
 from bpy_env import ensure_bpy  # noqa: E402
 from blender_nodes import DEFAULT_SURFACE, LIBRARY, check_table, library_signatures  # noqa: E402
-from blender_materials import ExportError, MaterialTranslator, Problems, sanitize_id  # noqa: E402
+from blender_materials import (  # noqa: E402
+    ExportError, MaterialTranslator, Problems, ProblemsFound, finite, sanitize_id)
+from blender_settings import check_render_settings  # noqa: E402
 
 
 # --- The scene ------------------------------------------------------------------------------
@@ -58,6 +62,76 @@ class Export:
         self.files = set()
         self._principled = None
         self._constants = {}
+        self._socket_defaults = {}
+        # graph.json ids: {id: owner} and {owner: id}; names that sanitise alike get a suffix.
+        self._ids = {"material": ({}, {}), "node": ({}, {})}
+        self.renamed = []  # (kind, name as in Blender, id), for the export's log
+
+    def unique_id(self, kind, owner, name, label=None):
+        """The graph.json id of `owner` (a material, or a node of a material): `name` with the
+        characters graph.json cannot hold replaced, and '~2', '~3' ... added when another owner
+        has that id already (7 materials named alike were 4 merged ones, silently)."""
+        by_id, by_owner = self._ids[kind]
+        if owner in by_owner:
+            return by_owner[owner]
+        base = sanitize_id(name)
+        ident, n = base, 1
+        while ident in by_id:
+            n += 1
+            ident = "%s~%d" % (base, n)
+        by_id[ident], by_owner[owner] = owner, ident
+        if ident != name:
+            self.renamed.append((label or "%s '%s'" % (kind, printable(name)), ident))
+        return ident
+
+    def material_id(self, material, obj=None):
+        if obj is None:
+            return self.unique_id("material", (material.name,), material.name)
+        return self.unique_id("material", (material.name, obj.name),
+                              "%s@%s" % (material.name, obj.name),
+                              "material '%s' on object '%s'" % (printable(material.name),
+                                                                printable(obj.name)))
+
+    def node_id(self, material_id, key, owner=None):
+        label = None
+        if isinstance(owner, tuple) and isinstance(owner[0], tuple):  # (node path, output...)
+            label = "node %s of material '%s', output '%s'%s" % (
+                " > ".join("'%s'" % printable(n) for n in owner[0]), material_id, owner[1],
+                "".join(" %s" % extra for extra in owner[2:]))
+        return self.unique_id("node", (material_id, owner or key), "%s/%s" % (material_id, key),
+                              label)
+
+    def socket_default(self, socket):
+        """Blender's default of `socket` for its node type (a new node's), as a float or a
+        list; zeros where there is none (a group's socket)."""
+        node = socket.node
+        key = (node.bl_idname, socket.is_output, socket.identifier)
+        if key not in self._socket_defaults:
+            value = None
+            tree = self.bpy.data.node_groups.new("blender_export_defaults", "ShaderNodeTree")
+            try:
+                fresh = tree.nodes.new(node.bl_idname)
+                sockets = fresh.outputs if socket.is_output else fresh.inputs
+                match = next((s for s in sockets if s.identifier == socket.identifier), None)
+                value = getattr(match, "default_value", None)
+            except RuntimeError:  # a node type that cannot be created alone
+                pass
+            finally:
+                self.bpy.data.node_groups.remove(tree)
+            current = socket.default_value
+            if value is None or not finite(_numbers(value)):
+                value = 0.0 if isinstance(current, (int, float)) else [0.0] * len(current)
+            self._socket_defaults[key] = _numbers(value)
+        return self._socket_defaults[key]
+
+    def check_finite(self, where, what, value, fallback):
+        """False (and a problem, with `fallback` in lenient mode) if `value` has a NaN or an
+        infinity: graph.json and scene.json are strict JSON."""
+        if finite(value):
+            return True
+        self.problems.refuse("%s: %s has a NaN or infinite value; supported: finite values"
+                             % (where, what), fallback)
+        return False
 
     # Settings that only an object gives (Generated's bounds, Normal's axes).
     def object_constants(self, obj):
@@ -115,10 +189,11 @@ class Export:
         first use. A material whose translation depends on the object (Generated bounds, Normal
         axes) and differs between objects gets one graph material per object, 'NAME@OBJECT'."""
         if material is None:
-            self.materials.setdefault("__default", {"bsdf": dict(DEFAULT_SURFACE),
-                                                    "emission": None, "nodes": []})
-            return "__default", None
-        base = sanitize_id(material.name)
+            name = self.unique_id("material", ("__default",), "__default")
+            self.materials.setdefault(name, {"bsdf": dict(DEFAULT_SURFACE), "emission": None,
+                                             "nodes": []})
+            return name, None
+        base = self.material_id(material)
         candidates = self.material_names.setdefault(material.name, [])
         result = self.translate(material, base, obj)
         for name in candidates:
@@ -127,7 +202,7 @@ class Export:
                 return name, result["emission"]
         name = base
         if candidates:
-            name = sanitize_id("%s@%s" % (material.name, obj.name))
+            name = self.material_id(material, obj)
             result = self.translate(material, name, obj)
         candidates.append(name)
         self.materials[name] = result
@@ -226,7 +301,8 @@ class Export:
                 face = "f " + " ".join(["/".join(["%d"] * 3) if uv is not None
                                         else "%d//%d"] * 3) + "\n"
                 name = self.unique_file("%s.%d" % (file_name(obj_eval.name), slot), ".obj")
-                with open(os.path.join(directory, name), "w") as f:
+                with atomic_open(os.path.join(directory, name), "w",
+                                 os.path.join(self.final_dir, "meshes", name)) as f:
                     f.write("# %s, material slot %d (blender_export.py)\n" % (obj_eval.name,
                                                                             slot))
                     f.write("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in co[verts].tolist()))
@@ -276,6 +352,11 @@ class Export:
         pos = [float(m[k][3]) for k in range(3)]
         forward = [-float(m[k][2]) for k in range(3)]
         up = [float(m[k][1]) for k in range(3)]
+        if data.dof.use_dof:
+            self.problems.refuse("%s: Depth of Field is on; supported: off (texrender's camera "
+                                 "is a pinhole)" % where, "rendering everything in focus")
+        if not finite([pos, forward, up, fov]):
+            raise ExportError("%s: its transform or lens has a NaN or infinite value" % where)
         norm = math.sqrt(sum(v * v for v in forward))
         return ({"position": pos, "target": [pos[k] + forward[k] / norm for k in range(3)],
                  "up": up, "fov": fov, "fovAxis": axis}, {"width": width, "height": height})
@@ -304,6 +385,10 @@ class Export:
         scale = strength / (2.0 * math.pi * (1.0 - math.cos(radius)))
         m = obj.matrix_world
         direction = [float(m[k][2]) for k in range(3)]  # the sun shines along its -Z
+        if not self.check_finite(where, "its strength, colour, angle or rotation",
+                                 [scale, radius, direction, [float(c) for c in light.color]],
+                                 "leaving it out"):
+            return None
         return {"type": "sun", "direction": direction,
                 "radiance": [float(c) * scale for c in light.color],
                 "angularRadius": math.degrees(radius)}
@@ -339,6 +424,8 @@ class Export:
                             "using its unlinked value")
                 strength = float(node.inputs["Strength"].default_value)
                 color = [float(c) * strength for c in node.inputs["Color"].default_value[:3]]
+        if not self.check_finite(where, "its colour or strength", color, "no sky light"):
+            return None
         if max(color) <= 0.0:
             return None
         return {"type": "sky", "radiance": color}
@@ -357,6 +444,8 @@ class Export:
                     modifier.levels = modifier.render_levels
 
     def run(self, scene, staging, final_dir):
+        self.final_dir = final_dir
+        check_render_settings(scene, self.problems.refuse)
         self.use_render_settings(scene)
         view_layer = next((v for v in scene.view_layers if v.use), scene.view_layers[0])
         # A scene other than the context's has no depsgraph until one is asked for in its context.
@@ -370,19 +459,24 @@ class Export:
         if sky:
             lights.append(sky)
         mesh_dir = os.path.join(staging, "meshes")
-        os.makedirs(mesh_dir)
+        make_dir(mesh_dir, os.path.join(final_dir, "meshes"))
         geometry = {"MESH", "CURVE", "SURFACE", "FONT", "META"}
         for inst in depsgraph.object_instances:
             obj = inst.object
             if obj.type == "LIGHT":
                 if obj.data.type == "SUN":
-                    lights.append(self.sun(obj))
+                    sun = self.sun(obj)
+                    if sun is not None:
+                        lights.append(sun)
                 else:
                     self.problems.refuse("light '%s': type '%s' is not supported; supported: "
                                          "SUN (area lights: meshes with an Emission material)"
                                          % (obj.name, obj.data.type), "leaving it out")
                 continue
             if obj.type not in geometry:
+                continue
+            if not self.check_finite("object '%s'" % obj.name, "its transform",
+                                     rows(inst.matrix_world), "leaving it out"):
                 continue
             key = obj.original.name
             if key not in written:
@@ -410,8 +504,12 @@ class Export:
                       "meshes": meshes}
         if render:
             scene_json["render"] = render
-        self.write_json(os.path.join(staging, "scene.json"), scene_json)
-        self.write_json(os.path.join(staging, "graph.json"), self.graph_json(final_dir))
+        if self.problems.errors:
+            raise ProblemsFound()
+        self.write_json(os.path.join(staging, "scene.json"), scene_json,
+                        os.path.join(final_dir, "scene.json"))
+        self.write_json(os.path.join(staging, "graph.json"), self.graph_json(final_dir),
+                        os.path.join(final_dir, "graph.json"))
 
     def graph_json(self, final_dir):
         files = sorted(set(self.signatures[f][0] for f in self.functions
@@ -430,14 +528,29 @@ class Export:
                 "materials": materials}
 
     @staticmethod
-    def write_json(path, value):
+    def write_json(path, value, label):
         import json
-        with open(path, "w") as f:
-            text = json.dumps(short_floats(value), indent=1)
+        try:
+            text = json.dumps(short_floats(value), indent=1, allow_nan=False)
+        except ValueError:  # a value no check above caught: never write invalid JSON
+            raise ExportError("%s: a value is NaN or infinite; nothing written" % label)
+        with atomic_open(path, "w", label) as f:
             # Arrays of numbers on one line each.
             text = re.sub(r"\[\s+([-+0-9.eE,\s]+?)\s+\]", lambda m: "[%s]" % ", ".join(
                 x.strip() for x in m.group(1).split(",")), text)
             f.write(text + "\n")
+
+
+def _numbers(value):
+    if isinstance(value, (int, float)):
+        return float(value)
+    return [float(v) for v in value]
+
+
+def printable(text):
+    """A Blender name as the log shows it: control characters escaped (\\x01)."""
+    return "".join(c if c.isprintable() else "\\x%02x" % ord(c) if ord(c) < 256
+                   else "\\u%04x" % ord(c) for c in text)
 
 
 def to_f32(value):
@@ -511,7 +624,7 @@ def main():
     options = parse_args(argv, inside_blender)
     final_dir = os.path.abspath(options.outdir)
     parent = os.path.dirname(final_dir)
-    staging = None
+    staging = export = None
     try:
         if options.blend or not inside_blender:
             check_blend(options.blend)
@@ -533,16 +646,27 @@ def main():
             if scene is None:
                 raise ExportError("no scene named '%s'; scenes: %s" % (
                     options.scene, ", ".join(s.name for s in bpy.data.scenes)))
-        staging = tempfile.mkdtemp(prefix=".%s.tmp-" % os.path.basename(final_dir), dir=parent)
+        try:
+            staging = tempfile.mkdtemp(prefix=".%s.tmp-" % os.path.basename(final_dir),
+                                       dir=parent)
+            # mkdtemp's 0700 would become OUTDIR's mode: a folder's mode from the umask.
+            os.chmod(staging, new_dir_mode())
+        except OSError as e:
+            raise ExportError("%s: cannot write: %s" % (final_dir, e.strerror))
         export = Export(bpy, options)
         export.run(scene, staging, final_dir)
         replace_dir(staging, final_dir)
         staging = None
+        for label, ident in export.renamed:
+            print("blender_export: %s is '%s' in graph.json" % (label, ident))
         print("blender_export: %s: %d meshes, %d materials, %d graph nodes -> %s" % (
             options.blend or bpy.data.filepath, len(os.listdir(os.path.join(final_dir, "meshes"))),
             len(export.materials), len(export.graph_nodes), options.outdir))
-    except ExportError as e:
-        sys.stderr.write("blender_export: error: %s\n" % e)
+    except (ExportError, AtomicWriteError) as e:
+        for problem in export.problems.errors if export else []:
+            sys.stderr.write("blender_export: error: %s\n" % problem)
+        if not isinstance(e, ProblemsFound):
+            sys.stderr.write("blender_export: error: %s\n" % e)
         sys.exit(1)
     finally:
         if staging and os.path.isdir(staging):

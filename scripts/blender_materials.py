@@ -4,6 +4,7 @@ is the table of which library function and which arguments each Blender node bec
 walks the tree with it. Used by scripts/blender_export.py."""
 
 import contextlib
+import math
 import os
 import sys
 
@@ -14,19 +15,55 @@ from blender_nodes import (  # noqa: E402
 
 
 class ExportError(Exception):
-    """One problem, one line: what and where."""
+    """One problem, one line: what and where. Raised for a problem with no fallback (a node
+    loop, no camera): the export stops there."""
+
+
+class ProblemsFound(ExportError):
+    """Raised once a strict export has found its problems (Problems.errors, printed one a
+    line): nothing is written."""
 
 
 class Problems:
-    """Strict: a problem is an error. Lenient: a warning, and the caller's fallback is used."""
+    """A problem with a fallback. Lenient: a warning, and the caller's fallback is used.
+    Strict: an error, collected, and the caller's fallback is used too so that the export goes
+    on to find the next one: the export lists every problem of the file at once and writes
+    nothing (Export.run raises at the end while `errors` is not empty)."""
 
     def __init__(self, lenient):
         self.lenient = lenient
+        self.errors = []
 
     def refuse(self, message, fallback_text):
-        if not self.lenient:
-            raise ExportError(message)
-        sys.stderr.write("blender_export: warning: %s; %s\n" % (message, fallback_text))
+        if self.lenient:
+            sys.stderr.write("blender_export: warning: %s; %s\n" % (message, fallback_text))
+        else:
+            self.errors.append("%s (--lenient makes this a warning: %s)" % (message,
+                                                                            fallback_text))
+
+
+# Mix Shaders nest BSDFs in graph.json; texcc reads JSON nested up to 256 levels.
+MAX_SHADER_DEPTH = 100
+OBJECT_PARAMS = ("bboxMin", "bboxMax", "axisX", "axisY", "axisZ")
+
+
+def finite(value):
+    """Whether every number in `value` (a number or nested lists) is finite."""
+    if isinstance(value, (list, tuple)):
+        return all(finite(v) for v in value)
+    return not isinstance(value, float) or math.isfinite(value)
+
+
+def replace_non_finite(value, default=0.0):
+    if isinstance(value, (list, tuple)):
+        return [replace_non_finite(v, default) for v in value]
+    return default if isinstance(value, float) and not math.isfinite(value) else value
+
+
+def number_text(value):
+    if isinstance(value, (list, tuple)):
+        return "(%s)" % ", ".join(number_text(v) for v in value)
+    return "%g" % value
 
 
 # --- Material translation -------------------------------------------------------------------
@@ -57,11 +94,18 @@ class MaterialTranslator:
         self.export, self.material, self.name, self.obj = export, material, name, obj
         self.nodes, self.done, self.done_fn, self.stack, self.ids = nodes, {}, {}, [], set()
         self.path = []
+        self.shader_depth = 0
+        self._correction_noted = False
+        self._links = {}
         self.where = "material '%s'" % material.name
 
     def qual(self, node):
-        """The node's name, with the groups it sits in."""
+        """The node's name, with the groups it sits in (for messages and graph ids: a node
+        named 'G/N' and node 'N' in group 'G' read alike; node_key tells them apart)."""
         return "/".join([g.name for g in self.path] + [node.name])
+
+    def node_key(self, node):
+        return tuple(g.name for g in self.path) + (node.name,)
 
     @contextlib.contextmanager
     def inside(self, path):
@@ -77,13 +121,28 @@ class MaterialTranslator:
     def refuse(self, message, fallback_text):
         self.export.problems.refuse(message, fallback_text)
 
-    def add_node(self, key, fn, args):
-        node_id = sanitize_id("%s/%s" % (self.name, key))
+    def add_node(self, key, fn, args, owner=None):
+        """The graph node `key` (its id's text) of this material; `owner` (default `key`)
+        identifies it: another owner whose id reads the same gets a suffixed one."""
+        node_id = self.export.node_id(self.name, key, owner)
         if node_id not in self.ids:
             self.ids.add(node_id)
             self.nodes.append({"id": node_id, "fn": fn, "args": args})
             self.export.functions.add(fn)
         return node_id
+
+    def links_to(self, socket):
+        """The unmuted links into `socket`. bpy's socket.links scans every link of the tree
+        (a 1,500-node chain took 13 s); each tree's links are indexed once per translation
+        (the trees do not change during one)."""
+        tree = socket.id_data
+        index = self._links.get(tree.as_pointer())
+        if index is None:
+            index = self._links[tree.as_pointer()] = {}
+            for link in tree.links:
+                if not link.is_muted:
+                    index.setdefault(link.to_socket.as_pointer(), []).append(link)
+        return index.get(socket.as_pointer(), [])
 
     # A value is ("const", number or list) or ("node", id, "float" | "float3").
     def link_source(self, socket):
@@ -91,7 +150,7 @@ class MaterialTranslator:
         out of node groups; None if unlinked."""
         path, crossed = list(self.path), False
         while True:
-            links = [l for l in socket.links if not l.is_muted]
+            links = self.links_to(socket)
             if not links:
                 return Source(None, socket, path) if crossed else None
             node, out = links[0].from_node, links[0].from_socket
@@ -119,8 +178,10 @@ class MaterialTranslator:
         if source is None:
             return self.socket_value_unlinked(socket)
         if source.node is None:  # an unlinked socket of a group: its value
-            return self.convert(self.socket_value_unlinked(source.out), source.out.type, want,
-                                None, None)
+            with self.inside(source.path[:-1] if source.path else []):
+                value = self.socket_value_unlinked(source.out)
+            return self.convert(value, source.out.type, want, None, None)
+        self.prepare(source)
         with self.inside(source.path):
             value = self.output_value(source.node, source.out, node, socket)
             if value is None:  # --lenient fallback: the socket's own value
@@ -130,8 +191,24 @@ class MaterialTranslator:
     def socket_value_unlinked(self, socket):
         value = socket.default_value
         if isinstance(value, (int, float)):
-            return ("const", float(value))
-        return ("const", [float(v) for v in value][:3])
+            value = float(value)
+        else:
+            value = [float(v) for v in value][:3]
+        return ("const", self.checked(socket, "input", value))
+
+    def checked(self, socket, kind, value):
+        """`value` of `socket` if finite; else a problem, and the socket's default (Blender's
+        for this node type) as the fallback. graph.json is strict JSON: no NaN or Infinity."""
+        if finite(value):
+            return value
+        default = self.export.socket_default(socket) if not socket.is_output else \
+            (0.0 if isinstance(value, float) else [0.0] * len(value))
+        if isinstance(value, list):
+            default = list(default)[:len(value)]
+        self.refuse("%s: %s '%s' is %s; supported: finite values" % (
+            self.node_where(socket.node), kind, socket.name, number_text(value)),
+            "using its default %s" % number_text(default))
+        return default
 
     def convert(self, value, from_type, want, from_node, out):
         """Blender's implicit socket conversions: colour -> float is luminance, vector -> float
@@ -146,13 +223,14 @@ class MaterialTranslator:
         if value[2] == "float":
             return value
         key = "%s.%s>float" % (self.qual(from_node), out.identifier)
+        owner = (self.node_key(from_node), out.identifier, ">float")
         if from_type == "RGBA":
-            return ("node", self.add_node(key, "blRgbToBw", {"color": {"node": value[1]}}),
-                    "float")
+            return ("node", self.add_node(key, "blRgbToBw", {"color": {"node": value[1]}},
+                                          owner), "float")
         third = 1.0 / 3.0
         return ("node", self.add_node(key, "blVectorMathValue", {
             "a": {"node": value[1]}, "b": [third, third, third], "c": [0.0, 0.0, 0.0],
-            "scale": 1.0, "operation": VECTOR_MATH_OPS.index("DOT_PRODUCT")}), "float")
+            "scale": 1.0, "operation": VECTOR_MATH_OPS.index("DOT_PRODUCT")}, owner), "float")
 
     def output_value(self, node, out, user, user_socket):
         """The value of `node`'s output socket `out`; None for a --lenient fallback."""
@@ -161,9 +239,10 @@ class MaterialTranslator:
                         "using input '%s''s own value" % user_socket.name)
             return None
         if node.bl_idname == "ShaderNodeValue":
-            return ("const", float(out.default_value))
+            return ("const", self.checked(out, "output", float(out.default_value)))
         if node.bl_idname == "ShaderNodeRGB":
-            return ("const", [float(v) for v in out.default_value][:3])
+            return ("const", self.checked(out, "output",
+                                          [float(v) for v in out.default_value][:3]))
         spec = NODES.get(node.bl_idname)
         if spec is None:
             self.refuse("%s is not supported (it feeds '%s' of '%s'); supported nodes: %s"
@@ -177,40 +256,113 @@ class MaterialTranslator:
                         % (self.node_where(node), out.name, ", ".join(spec["fn"])),
                         "using input '%s''s own value" % user_socket.name)
             return None
-        key = (self.qual(node), out.identifier)
+        key = (self.node_key(node), out.identifier)
         if key in self.done:
             return ("node", self.done[key], self.export.signatures[self.done_fn[key]][1])
         self.enter(node)
         fn = fn(node) if callable(fn) else fn
         args = self.node_args(node, spec, fn)
         self.stack.pop()
-        node_id = self.add_node("%s.%s" % (self.qual(node), out.identifier), fn, args)
+        node_id = self.add_node("%s.%s" % (self.qual(node), out.identifier), fn, args, key)
         self.done[key] = node_id
         self.done_fn[key] = fn
         return ("node", node_id, self.export.signatures[fn][1])
 
+    def translatable(self, source):
+        """(spec, function) of a Source that output_value translates into a graph node without
+        a problem of its own; None for the rest (constants, muted, unsupported: leaves)."""
+        node = source.node
+        if node is None or node.mute:
+            return None
+        spec = NODES.get(node.bl_idname)
+        fn = spec["fn"].get(source.out.identifier) if spec else None
+        if fn is None:
+            return None
+        return spec, (fn(node) if callable(fn) else fn)
+
+    def param_socket(self, node, spec, param):
+        """The input socket feeding `param`; None for a setting or an object constant."""
+        if param in spec.get("props", {}) or (spec.get("object_props")
+                                              and param in OBJECT_PARAMS):
+            return None
+        ident = spec["sockets"][param]
+        ident = ident(node) if callable(ident) else ident
+        return next(s for s in node.inputs if s.identifier == ident)
+
+    def prepare(self, first):
+        """Translates every translatable node feeding the Source `first`, and `first`, inputs
+        before their users, walking with an explicit stack: the recursive translation
+        (output_value -> node_args -> socket_value) then finds each input translated and stays
+        one level deep however long the chain (1,500 chained Math nodes were a RecursionError).
+        A node reached again on the current path is a loop."""
+        def entry(source):
+            with self.inside(source.path):
+                found = self.translatable(source)
+                if found is None:
+                    return None
+                node_key = self.node_key(source.node)
+                key = (node_key, source.out.identifier)
+                if key in self.done:
+                    return None
+                spec, fn = found
+                children = []
+                for _, param in self.export.signatures[fn][2]:
+                    socket = self.param_socket(source.node, spec, param)
+                    child = self.link_source(socket) if socket is not None else None
+                    if child is not None and child.node is not None:
+                        children.append(child)
+                return [source, key, node_key, children, 0]
+
+        top = entry(first)
+        if top is None:
+            return
+        stack, on_path = [top], [top[2]]
+        while stack:
+            item = stack[-1]
+            source, key, node_key, children, k = item
+            if k < len(children):
+                item[4] += 1
+                child = entry(children[k])
+                if child is None:
+                    continue
+                if child[2] in on_path:
+                    loop = on_path[on_path.index(child[2]):] + [child[2]]
+                    raise ExportError("%s: node loop: %s" % (self.where, " -> ".join(
+                        "'%s'" % "/".join(n) for n in loop)))
+                stack.append(child)
+                on_path.append(child[2])
+                continue
+            stack.pop()
+            on_path.pop()
+            if key not in self.done:
+                with self.inside(source.path):
+                    self.output_value(source.node, source.out, None, None)
+
     def enter(self, node):
         """Pushes `node` on the path being translated; a node already on it is a loop."""
-        name = self.qual(node)
-        if name in self.stack:
+        key = self.node_key(node)
+        if key in self.stack:
             raise ExportError("%s: node loop: %s" % (self.where, " -> ".join(
-                "'%s'" % n for n in self.stack[self.stack.index(name):] + [name])))
-        self.stack.append(name)
+                "'%s'" % "/".join(n) for n in self.stack[self.stack.index(key):] + [key])))
+        self.stack.append(key)
 
     def node_args(self, node, spec, fn):
         self.node_checks(node)
         args = {}
         for ptype, param in self.export.signatures[fn][2]:
             if param in spec.get("props", {}):
-                args[param] = spec["props"][param](node)
+                value = spec["props"][param](node)
+                if not finite(value):
+                    self.refuse("%s: setting '%s' is %s; supported: finite values"
+                                % (self.node_where(node), param, number_text(value)),
+                                "using 0 for its NaN and infinite numbers")
+                    value = replace_non_finite(value)
+                args[param] = value
                 continue
-            if spec.get("object_props") and param in ("bboxMin", "bboxMax", "axisX", "axisY",
-                                                       "axisZ"):
+            socket = self.param_socket(node, spec, param)
+            if socket is None:
                 args[param] = self.export.object_constants(self.obj)[param]
                 continue
-            ident = spec["sockets"][param]
-            ident = ident(node) if callable(ident) else ident
-            socket = next(s for s in node.inputs if s.identifier == ident)
             if spec.get("texture") and param == "vector" and self.link_source(socket) is None:
                 # Cycles: an unlinked Vector of a texture node is the Generated coordinates.
                 value = ("node", self.add_node("Generated", "blTexCoordGenerated", dict(
@@ -246,8 +398,14 @@ class MaterialTranslator:
                             "Glossy BSDF, Emission, Mix Shader, Principled BSDF"
                             % self.node_where(node), "using a grey diffuse (0.8)")
                 return dict(DEFAULT_SURFACE)
+            if self.shader_depth >= MAX_SHADER_DEPTH:
+                raise ExportError("%s: shaders nested more than %d deep (Mix Shaders in Mix "
+                                  "Shaders); graph.json nests BSDFs, and texcc reads JSON up to "
+                                  "256 levels deep" % (self.node_where(node), MAX_SHADER_DEPTH))
             self.enter(node)
+            self.shader_depth += 1
             bsdf = getattr(self, "shader_" + kind)(node)
+            self.shader_depth -= 1
             self.stack.pop()
             return bsdf
 
@@ -271,34 +429,79 @@ class MaterialTranslator:
             bsdf["normal"] = {"node": self.bump(source.node)}
 
     def bump(self, node):
-        key = (self.qual(node), "Normal")
-        if key in self.done:
-            return self.done[key]
+        """The graph id of `node`'s bump, and of the Bump nodes chained into its Normal, the
+        innermost first (a loop, not recursion: a chain may be long)."""
+        chain, path, names, fed = [], list(self.path), set(), None
+        inner_id = None
+        while True:
+            with self.inside(path):
+                key = (self.node_key(node), "Normal")
+                if key in self.done:
+                    inner_id = self.done[key]
+                    break
+                if key[0] in names or key[0] in self.stack:
+                    raise ExportError("%s: node loop through the Normal inputs of Bump '%s'"
+                                      % (self.where, self.qual(node)))
+                names.add(key[0])
+                chain.append((node, path))
+                inner = self.link_source(next(s for s in node.inputs
+                                              if s.identifier == "Normal"))
+            if inner is not None and inner.node is not None and \
+                    inner.node.bl_idname == "ShaderNodeBump":
+                node, path = inner.node, inner.path
+                continue
+            if inner is not None:
+                fed = inner.node or inner.out.node
+            break
+        for k, (node, path) in enumerate(reversed(chain)):
+            with self.inside(path):
+                inner_id = self.bump_one(node, inner_id, fed if k == 0 else None)
+        return inner_id
+
+    def bump_one(self, node, inner_id, fed):
+        """One Bump node's graph node; `inner_id`: the Bump feeding its Normal, `fed`: the
+        node that feeds it instead (refused: the surface's normal is used)."""
         self.enter(node)
+        self.bump_checks(node)
         distance = self.input(node, "Distance", "float")
         if node.invert:  # Cycles negates the distance (into the surface instead of out)
             distance = -distance if not isinstance(distance, dict) else {"node": self.add_node(
                 "%s.Distance>inverted" % self.qual(node), "blMath",
                 {"a": distance, "b": -1.0, "c": 0.0, "operation": MATH_OPS.index("MULTIPLY"),
-                 "useClamp": 0})}
+                 "useClamp": 0}, (self.node_key(node), "Distance>inverted"))}
         args = {"height": self.input(node, "Height", "float"),
                 "strength": self.input(node, "Strength", "float"),
                 "distance": distance, "normal": {"attr": "Normal"}}
-        inner = self.link_source(next(s for s in node.inputs if s.identifier == "Normal"))
-        if inner is not None and inner.node is not None and \
-                inner.node.bl_idname == "ShaderNodeBump":
-            with self.inside(inner.path):
-                args["normal"] = {"node": self.bump(inner.node)}
-        elif inner is not None:
-            fed = inner.node or inner.out.node
+        if inner_id is not None:
+            args["normal"] = {"node": inner_id}
+        elif fed is not None:
             self.refuse("%s: input 'Normal' is fed by '%s' (%s); supported: a Bump node"
                         % (self.node_where(node), fed.name, fed.bl_idname),
                         "using the surface's normal")
         self.stack.pop()
-        node_id = sanitize_id("%s/%s.Normal" % (self.name, self.qual(node)))
+        key = (self.node_key(node), "Normal")
+        node_id = self.export.node_id(self.name, "%s.Normal" % self.qual(node), key)
         self.nodes.append({"id": node_id, "fn": "bump", "args": args})
         self.done[key] = node_id
         return node_id
+
+    def bump_checks(self, node):
+        """What texrender's bump does not read: another Filter Width than Cycles' default 0.1
+        (the offsets are 0.1 of the ray footprint, graph.md "The step"), and a material whose
+        Bump Map Correction is off (texrender always shadows bumped diffuse as Cycles' on)."""
+        width = next((s for s in node.inputs if s.identifier == "Filter Width"), None)
+        if width is not None and (self.link_source(width) is not None
+                                  or abs(float(width.default_value) - 0.1) > 1e-6):
+            self.refuse("%s: Filter Width is %s; supported: 0.1 (Cycles' default), unlinked"
+                        % (self.node_where(node), "linked" if self.link_source(width)
+                           else "%g" % width.default_value), "using 0.1")
+        correction = getattr(getattr(self.material, "cycles", None), "use_bump_map_correction",
+                             True)
+        if not correction and not self._correction_noted:
+            self._correction_noted = True
+            self.refuse("%s: Bump Map Correction (material settings) is off; supported: on "
+                        "(texrender always shadows bumped diffuse as Cycles does with it on)"
+                        % self.where, "rendering with it on")
 
     def shader_diffuse(self, node):
         rough = next(s for s in node.inputs if s.identifier == "Roughness")

@@ -142,6 +142,17 @@ def group_noise_ramp(tree, ramp):
     return node
 
 
+def reproducible(scene):
+    """The render settings texrender reproduces (docs/blender.md, "Render settings"): the
+    exporter refuses the others (Blender's defaults include several)."""
+    scene.view_settings.view_transform = "Standard"
+    c = scene.cycles
+    c.use_denoising = c.use_adaptive_sampling = c.use_light_tree = False
+    c.pixel_filter_type, c.filter_width = "BOX", 1.0
+    c.sample_clamp_direct = c.sample_clamp_indirect = c.blur_glossy = 0.0
+    c.diffuse_bounces = c.glossy_bounces = c.max_bounces
+
+
 def main():
     out = sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else sys.argv[1]
     args = sys.argv[sys.argv.index(out) + 1:]
@@ -153,6 +164,7 @@ def main():
     scene.render.resolution_percentage = 100
     scene.cycles.samples = 16
     scene.cycles.max_bounces = 6
+    reproducible(scene)
     world = bpy.data.worlds.new("World")
     world.use_nodes = True
     world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.2, 0.25, 0.3, 1.0)
@@ -252,6 +264,7 @@ def main():
         for obj in (side, sun, scene.objects["Ground"]):
             other.collection.objects.link(obj)
         other.camera = side
+        reproducible(other)
     if case == "instances":
         props = bpy.data.collections.new("Props")
         props.objects.link(cube)
@@ -307,4 +320,5 @@ def main():
     bpy.ops.wm.save_as_mainfile(filepath=out)
 
 
-main()
+if __name__ == "__main__":
+    main()
