@@ -225,6 +225,15 @@ std::string jsonReason(const json::exception &E) {
 
 } // namespace
 
+std::string tooManyPixels(long long Width, long long Height) {
+  const long long Pixels = Width * Height; // both at most 2^31 - 1: no overflow
+  if (Pixels <= std::numeric_limits<int>::max())
+    return "";
+  return std::to_string(Width) + "x" + std::to_string(Height) + " is " + std::to_string(Pixels) +
+         " pixels; texrender renders at most 2147483647 (2^31 - 1: the kernels count pixels in "
+         "32-bit integers)";
+}
+
 static Scene readScene(const std::string &Path);
 
 Scene loadScene(const std::string &Path) {
@@ -268,6 +277,8 @@ static Scene readScene(const std::string &Path) {
     if (J["film"].contains("height")) S.Render.Height = R.integer(J["film"]["height"], "/film/height");
     if (S.Render.Width < 1 || S.Render.Height < 1)
       R.fail("/film", "width and height must be at least 1");
+    if (std::string Why = tooManyPixels(S.Render.Width, S.Render.Height); !Why.empty())
+      R.fail("/film", Why);
   }
   if (J.contains("render"))
     parseRender(R, J["render"], S.Render);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 namespace texrender {
@@ -158,8 +159,26 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
     };
     Grow(G.P, TM.Positions.size()), Grow(G.N, TM.Positions.size());
     Grow(G.UV, TM.Positions.size()), Grow(G.Mesh, TM.triangleCount());
+    const bool HasTransform = Mi.Transform != std::array<float, 16>{1, 0, 0, 0, 0, 1, 0, 0,
+                                                                     0, 0, 1, 0, 0, 0, 0, 1};
     for (size_t K = 0; K < TM.Positions.size(); ++K) {
       G.P.push_back(transformPoint(Mi.Transform, TM.Positions[K]));
+      const Vec3 &W = G.P.back();
+      if (!(std::fabs(W[0]) <= MaxWorldCoordinate && std::fabs(W[1]) <= MaxWorldCoordinate &&
+            std::fabs(W[2]) <= MaxWorldCoordinate)) {
+        // In double, so that the message shows the value an overflow made Inf.
+        double D[3];
+        for (int I = 0; I < 3; ++I)
+          D[I] = double(Mi.Transform[4 * I]) * TM.Positions[K][0] +
+                 double(Mi.Transform[4 * I + 1]) * TM.Positions[K][1] +
+                 double(Mi.Transform[4 * I + 2]) * TM.Positions[K][2] + Mi.Transform[4 * I + 3];
+        char Where[160];
+        std::snprintf(Where, sizeof Where, "(%g, %g, %g)", D[0], D[1], D[2]);
+        throw Error(S.Path + ": " + Mi.JsonPath + (HasTransform ? "/transform" : "/obj") +
+                    ": a vertex of '" + Mi.ObjPath + "' is at " +
+                    Where + " in world space, past +-1e18, the largest coordinate texrender "
+                    "renders (products of two coordinates must be finite floats)");
+      }
       // Normals transform with the inverse transpose.
       const Vec3 &N = TM.Normals[K];
       G.N.push_back(normalize({float(Inv[0][0] * N[0] + Inv[1][0] * N[1] + Inv[2][0] * N[2]),

@@ -3,9 +3,14 @@
 #include "Options.h"
 
 #include "texcc/Support/AtomicWrite.h"
+#include "texcc/Support/Numbers.h"
+#include "texcc/Support/Text.h"
 #include "texcc/Version.h"
 #include "texrender/Error.h"
+#include "texrender/Scene.h"
 
+#include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -82,26 +87,43 @@ const char *Usage =
     "--stats) of the samples done is written whole, then exit 128 + the signal (130, 143);\n"
     "a second signal ends texrender at once.\n";
 
+/// An option's value as quoted in a message: at most 60 characters of it (an option can be a
+/// whole file's worth of text: texcc::boundedExcerpt).
+std::string quoted(const std::string &V) { return "'" + texcc::boundedExcerpt(V, 60) + "'"; }
+
 int toInt(const std::string &Opt, const std::string &V) {
   try {
     size_t Pos = 0;
-    int N = std::stoi(V, &Pos);
-    if (Pos == V.size())
-      return N;
+    long long N = std::stoll(V, &Pos);
+    if (Pos == V.size() && !V.empty() && !std::isspace((unsigned char)V[0])) {
+      if (N < INT_MIN || N > INT_MAX)
+        throw Error(Opt + ": " + quoted(V) + " is outside the 32-bit int range");
+      return int(N);
+    }
+  } catch (const Error &) {
+    throw;
+  } catch (const std::out_of_range &) {
+    throw Error(Opt + ": " + quoted(V) + " is outside the 32-bit int range");
   } catch (...) {
   }
-  throw Error(Opt + ": expected an integer, got '" + V + "'");
+  throw Error(Opt + ": expected an integer, got " + quoted(V));
 }
 
+/// A finite number that fits a float (FLT_MAX as printed does): 1e39, inf and nan are refused
+/// with the option named (std::stof took inf and nan, and 1e39 was "expected a number").
 float toFloat(const std::string &Opt, const std::string &V) {
-  try {
-    size_t Pos = 0;
-    float F = std::stof(V, &Pos);
-    if (Pos == V.size())
-      return F;
-  } catch (...) {
-  }
-  throw Error(Opt + ": expected a number, got '" + V + "'");
+  if (V.empty() || std::isspace((unsigned char)V[0]))
+    throw Error(Opt + ": expected a number, got " + quoted(V));
+  errno = 0;
+  char *End = nullptr;
+  const double D = std::strtod(V.c_str(), &End);
+  if (End == V.c_str() || *End)
+    throw Error(Opt + ": expected a number, got " + quoted(V));
+  if (std::isnan(D) || (std::isinf(D) && errno != ERANGE))
+    throw Error(Opt + ": expected a finite number, got " + quoted(V));
+  if (!texcc::fitsInFloat(D))
+    throw Error(Opt + ": " + quoted(V) + " is out of range for a float (at most 3.4028235e38)");
+  return float(D);
 }
 
 /// --region X,Y,W,H: four integers, X and Y at least 0, W and H at least 1 (the film's size is
@@ -181,6 +203,8 @@ Options parseArgs(int Argc, char **Argv) {
       O.Height = toInt(A, S.substr(X + 1));
       if (*O.Width < 1 || *O.Height < 1)
         throw Error("--size: width and height must be at least 1");
+      if (std::string Why = tooManyPixels(*O.Width, *O.Height); !Why.empty())
+        throw Error("--size " + S + ": " + Why);
     } else if (A == "--max-depth") {
       O.MaxDepth = toInt(A, Next());
     } else if (A == "--ao-samples") {
@@ -283,6 +307,13 @@ Options parseArgs(int Argc, char **Argv) {
   }
   if (O.ListDevices)
     return O;
+  // readSetting("Time") is a float: a frame time past its range was Inf (a black texture).
+  if (const double Time = double(O.Frame) / O.Fps; !texcc::fitsInFloat(Time)) {
+    std::ostringstream M;
+    M << "--frame " << O.Frame << " --fps " << O.Fps << ": the frame's time, " << Time
+      << " s, is out of range for a float (readSetting(\"Time\"); at most 3.4028235e38)";
+    throw Error(M.str());
+  }
   if (O.Scene.empty())
     throw Error("no scene file given (usage: texrender scene.json -o image.png)");
   if (O.Serve) {

@@ -89,6 +89,16 @@ struct Scene {
   std::vector<MeshInstance> Meshes;
 };
 
+/// Why a Width x Height film cannot be rendered ("" when it can): the kernels number pixels and
+/// paths with 32-bit ints, so at most 2^31 - 1 pixels (a 2147483647x2147483647 film asked for
+/// 18446743730112168016 bytes of paths: the count had wrapped).
+std::string tooManyPixels(long long Width, long long Height);
+
+/// The largest coordinate a vertex may have in world space (after its mesh's transform):
+/// rendering multiplies two coordinates (edges' cross products, the scene radius squared), which
+/// must stay finite floats. A mesh scaled by 1e38 used to vanish silently.
+constexpr double MaxWorldCoordinate = 1e18;
+
 /// Parses scene.json; paths in it become relative to its folder. Does not load the OBJs.
 Scene loadScene(const std::string &Path);
 
