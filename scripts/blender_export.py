@@ -316,6 +316,22 @@ class Export:
             obj_eval.to_mesh_clear()
 
     # --- Camera, lights, world ---
+    def object_visibility(self, obj):
+        """Cycles' per-object ray visibility, holdout and shadow catcher: texrender's objects
+        are seen by every ray, never held out, and catch no shadow on their own."""
+        for attr, label in (("visible_camera", "Camera"), ("visible_diffuse", "Diffuse"),
+                            ("visible_glossy", "Glossy"), ("visible_shadow", "Shadow"),
+                            ("visible_transmission", "Transmission"),
+                            ("visible_volume_scatter", "Volume Scatter")):
+            if not getattr(obj, attr, True):
+                self.problems.refuse("object '%s': Visibility > Ray Visibility > %s is off; "
+                                     "supported: on (texrender's objects are visible to every "
+                                     "ray)" % (obj.name, label), "visible to every ray")
+        for attr, label in (("is_holdout", "Holdout"), ("is_shadow_catcher", "Shadow Catcher")):
+            if getattr(obj, attr, False):
+                self.problems.refuse("object '%s': Visibility > %s is on; supported: off"
+                                     % (obj.name, label), "rendering it as an object")
+
     def camera(self, scene, depsgraph):
         cam = scene.camera
         if self.options.camera:
@@ -479,6 +495,8 @@ class Export:
                                      rows(inst.matrix_world), "leaving it out"):
                 continue
             key = obj.original.name
+            if key not in written:
+                self.object_visibility(obj.original)
             if key not in written:
                 written[key] = self.write_mesh(obj, mesh_dir)
             slots = obj.material_slots

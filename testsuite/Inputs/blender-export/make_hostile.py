@@ -12,7 +12,8 @@ clamps an infinity to the float range itself).
 "Defaults": Blender's factory render settings (AgX, denoiser, adaptive sampling, Blackman-Harris
 1.5 px, indirect clamp 10, light tree, Filter Glossy 1, Diffuse/Glossy bounces 4 of 12), a
 Bump whose Filter Width is 0.5 in a material whose Bump Map Correction is off, a Sky Texture
-feeding a colour, and a point light: every problem at once.
+feeding a colour, an object that casts no shadow (ray visibility) and a point light: every
+problem at once.
 """
 import sys
 
@@ -170,7 +171,7 @@ def defaults():
     sky = tree.nodes.new("ShaderNodeTexSky")
     sky.name = "Sky"
     tree.links.new(sky.outputs["Color"], bsdf.inputs["Color"])
-    plane(scene, "PlaneDefaults", m, 0.0)
+    plane(scene, "PlaneDefaults", m, 0.0).visible_shadow = False
     lamp = bpy.data.objects.new("Lamp", bpy.data.lights.new("Lamp", "POINT"))
     scene.collection.objects.link(lamp)
 
