@@ -168,7 +168,8 @@ class Export:
         if node.inside or node.only_local:
             translator.refuse("%s: 'Inside' and 'Only Local' are not supported"
                               % translator.node_where(node), "tracing outside, all objects")
-        setting = (int(node.samples), float(distance.default_value))
+        setting = (int(node.samples),
+                   translator.checked(distance, "input", float(distance.default_value)))
         if self.ao is not None and self.ao[0] != setting:
             raise ExportError("%s: Ambient Occlusion with %d samples, distance %g, but %s has %d "
                               "samples, distance %g; texrender has one AO setting per scene"
@@ -685,6 +686,10 @@ def main():
             sys.stderr.write("blender_export: error: %s\n" % problem)
         if not isinstance(e, ProblemsFound):
             sys.stderr.write("blender_export: error: %s\n" % e)
+        sys.exit(1)
+    except OSError as e:  # moving the finished export into place
+        sys.stderr.write("blender_export: error: %s: %s\n" % (e.filename or final_dir,
+                                                             e.strerror or e))
         sys.exit(1)
     finally:
         if staging and os.path.isdir(staging):
