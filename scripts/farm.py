@@ -409,10 +409,12 @@ def render(args, options):
         os.path.dirname(os.path.abspath(args.scene)), str(scene.get("textures", "")))
     if not os.path.isfile(os.path.join(textures, "layout.json")):
         raise FarmError("%s: not a texcc output folder (no layout.json)" % textures)
-    for f in frames:
-        out_dir = os.path.dirname(os.path.abspath(output_name(args.output, f, None)))
+    for out_dir in sorted({os.path.dirname(os.path.abspath(output_name(args.output, f, None)))
+                           for f in frames}):
         if not os.path.isdir(out_dir):
             raise FarmError("-o %s: '%s' is not a folder" % (args.output, out_dir))
+        if not os.access(out_dir, os.W_OK | os.X_OK):
+            raise FarmError("-o %s: cannot write into '%s'" % (args.output, out_dir))
     validate(texrender, args.scene, textures, options, frames[0])
     files = make_bundle(args.scene, textures)
     digest = bundle_digest(files)
