@@ -1,7 +1,8 @@
 // The live-edit planner (EditPlan.h) without a device: every row of docs/modes.md's "What an
 // edit costs" for every kind of kernel texrender runs, from capabilities as the backends write
-// them into layout.json (hand-written here, one struct per column of the table) and the facts
+// them into layout.json (asked of the backends, one per column of the table) and the facts
 // the graph library reports about the edited graph. No mode names: the planner never sees one.
+#include "texcc/Codegen/Backend.h"
 #include "texrender/EditPlan.h"
 #include "texrender/Error.h"
 #include "texrender/Layout.h"
@@ -21,22 +22,18 @@ enum class Kernel { Interp, Inline, Wavefront, Shape };
 constexpr Kernel Interp = Kernel::Interp, Inline = Kernel::Inline,
                  Wavefront = Kernel::Wavefront, Shape = Kernel::Shape;
 
+/// What the backend of K writes into layout.json (texcc/lib/codegen/Backend.cpp, the one table):
+/// the planner's input, read here from the backends themselves.
 KernelCapabilities caps(Kernel K) {
-  KernelCapabilities C;
-  switch (K) {
-  case Kernel::Interp: // the wiring is data, the value stack's depth a -D
-    C.WiringIsData = C.StackHeadroom = true;
-    break;
-  case Kernel::Inline: // values are literals
-    C.ReEncodes = false;
-    break;
-  case Kernel::Wavefront: // values in args.bin, launches are code
-    break;
-  case Kernel::Shape: // code per shape, an interp fallback of the same args.bin
-    C.ShapeKeyed = C.InterpFallback = true;
-    break;
-  }
-  return C;
+  using texcc::codegen::Mode;
+  const Mode M = K == Kernel::Interp   ? Mode::Interp
+                 : K == Kernel::Inline ? Mode::Inline
+                 : K == Kernel::Wavefront ? Mode::Wavefront
+                                          : Mode::Shape;
+  texcc::codegen::CodegenOptions Opts;
+  Opts.EvalMode = M;
+  return texcc::codegen::backendFor(M, texcc::codegen::Target::OpenCL)
+      .capabilities(texcc::graph::CompiledGraph{}, Opts);
 }
 
 const char *plan(Kernel K, const EditFacts &F, TierState S = {TierPolicy::Auto, 8, 8}) {
@@ -185,14 +182,16 @@ texrender::Layout loadText(const std::string &Text) {
 TEST(EditPlan, LayoutCapabilitiesAndCompileOptions) {
   Layout L = loadText(R"({"texcc": 1, "mode": "wavefront", "maxOutputs": 3,
       "compileOptions": ["--mode=wavefront", "-I/abs/inc", "-DK=2"],
-      "kernel": {"source": "proctex.cl", "entry": "texcc_wf_outputs"}, "materials": []})");
+      "kernel": {"source": "proctex.cl", "entry": "texcc_wf_outputs"}, "materials": [],
+      "capabilities": {"reEncodes": true, "maxOutputs": 3}})");
   EXPECT_EQ(L.CompileOptions, (std::vector<std::string>{"--mode=wavefront", "-I/abs/inc", "-DK=2"}));
   EXPECT_TRUE(L.Caps.ReEncodes);
   EXPECT_FALSE(L.Caps.WiringIsData);
   EXPECT_EQ(L.Caps.MaxOutputs, 3u);
   // A layout from a texcc before compileOptions: a regeneration passes the mode.
   Layout Old = loadText(
-      R"({"texcc": 1, "mode": "inline", "kernel": {"source": "proctex.cl"}, "materials": []})");
+      R"({"texcc": 1, "mode": "inline", "kernel": {"source": "proctex.cl"}, "materials": [],
+          "capabilities": {"reEncodes": false}})");
   EXPECT_EQ(Old.CompileOptions, std::vector<std::string>{"--mode=inline"});
   EXPECT_FALSE(Old.Caps.ReEncodes);
 }

@@ -52,6 +52,14 @@ public:
     C.InterpHoists = !O.NoHoist;
   }
   bool interprets() const override { return true; }
+  /// The base's kernel, and the hoisted-value kernel when a function hoists a declaration.
+  kernel::KernelEntries entries(const graph::CompiledGraph &CG,
+                                const CodegenOptions &Opts) const override {
+    kernel::KernelEntries K = Backend::entries(CG, Opts);
+    if (Opts.InterpHoists && !CG.Nodes.empty() && !interpHoistingFunctions(CG).empty())
+      K.Uniforms = UniformsEntry;
+    return K;
+  }
   /// The wiring is data (the program in args.bin) and the value stack's depth a -D.
   kernel::Capabilities capabilities(const graph::CompiledGraph &CG,
                                     const CodegenOptions &) const override {
@@ -86,6 +94,19 @@ public:
 class WavefrontBackend final : public Backend {
 public:
   const char *name() const override { return "wavefront"; }
+  /// Every node kernel in launch order, then the outputs kernel (the entry).
+  kernel::KernelEntries entries(const graph::CompiledGraph &CG,
+                                const CodegenOptions &Opts) const override {
+    kernel::KernelEntries K = Backend::entries(CG, Opts);
+    K.Entry = WavefrontOutputsEntry;
+    for (unsigned N : CG.WavefrontOrder)
+      K.Launches.push_back({wavefrontKernelName(N), N});
+    return K;
+  }
+  /// One float4 per node and hit: the node kernels' outputs.
+  unsigned scratchFloat4PerHit(const graph::CompiledGraph &CG) const override {
+    return static_cast<unsigned>(CG.Nodes.size());
+  }
   /// Values in args.bin; the node kernels and their launches are code.
   kernel::Capabilities capabilities(const graph::CompiledGraph &,
                                     const CodegenOptions &) const override {
@@ -110,6 +131,34 @@ public:
   const char *name() const override { return "shape"; }
   bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
   bool writesInterpreter() const override { return true; }
+  /// The shape kernel, its shapes and hash, its interp fallback and the quick tier's programs
+  /// (addOutputs writes their files).
+  kernel::KernelEntries entries(const graph::CompiledGraph &CG,
+                                const CodegenOptions &Opts) const override {
+    kernel::KernelEntries K = Backend::entries(CG, Opts);
+    K.InterpFallback = InterpFallbackFile;
+    std::vector<graph::MaterialShape> Groups = graph::groupShapes(CG);
+    for (size_t I = 0; I < Groups.size(); ++I)
+      K.Shapes.push_back({static_cast<unsigned>(I), Groups[I].Materials});
+    K.ShapeHash = graph::shapeHash(CG);
+    if (!hoistingFunctions(CG).empty())
+      K.Uniforms = UniformsEntry;
+    if (CG.Nodes.empty())
+      return K;
+    for (const std::string &Fn : CG.liveFunctions()) {
+      kernel::QuickProgram P{quickProgramFile(Fn), {}};
+      for (unsigned N : CG.WavefrontOrder)
+        if (CG.Nodes[N].Fn == Fn)
+          P.Kernels.push_back(wavefrontKernelName(N));
+      K.QuickPrograms.push_back(P);
+    }
+    K.QuickPrograms.push_back({QuickOutputsFile, {WavefrontOutputsEntry}});
+    for (unsigned N : CG.WavefrontOrder)
+      K.QuickLaunches.push_back({wavefrontKernelName(N), N});
+    K.QuickEntry = WavefrontOutputsEntry;
+    K.QuickScratchFloat4PerHit = static_cast<unsigned>(CG.Nodes.size());
+    return K;
+  }
   /// Values in args.bin, code per shape, and the interp fallback of the same args.bin.
   kernel::Capabilities capabilities(const graph::CompiledGraph &CG,
                                     const CodegenOptions &) const override {
@@ -160,6 +209,13 @@ public:
 class HostBackend final : public Backend {
 public:
   const char *name() const override { return "host"; }
+  /// The extern "C" entry of the C++ file.
+  kernel::KernelEntries entries(const graph::CompiledGraph &CG,
+                                const CodegenOptions &Opts) const override {
+    kernel::KernelEntries K = Backend::entries(CG, Opts);
+    K.Entry = HostEntry;
+    return K;
+  }
   const char *summary() const override {
     return "per material a straight-line C++ function (constants as literals), and the extern \"C\"\n"
            " *      entry texcc_host_evaluate(material, hit, settings, texels, images, outputs)";
@@ -171,6 +227,18 @@ public:
 };
 
 } // namespace
+
+kernel::KernelEntries Backend::entries(const graph::CompiledGraph &,
+                                      const CodegenOptions &Opts) const {
+  kernel::KernelEntries K;
+  K.Source = kernelFileName(Opts.Tgt);
+  K.Entry = KernelEntry;
+  return K;
+}
+
+unsigned Backend::scratchFloat4PerHit(const graph::CompiledGraph &CG) const {
+  return writesInterpreter() && CG.Spill ? CG.StackSlots : 0;
+}
 
 kernel::Capabilities Backend::capabilities(const graph::CompiledGraph &,
                                            const CodegenOptions &) const {

@@ -12,21 +12,6 @@ namespace texcc::kernel {
 
 using Json = nlohmann::json;
 
-std::optional<Capabilities> capabilitiesOfMode(const std::string &Mode) {
-  // What the runtime assumed per mode before the backends wrote "capabilities" (texcc of
-  // 2026-11): ReEncodes, WiringIsData, ShapeKeyed, InterpFallback, StackHeadroom.
-  Capabilities C;
-  if (Mode == "interp")
-    C.WiringIsData = C.StackHeadroom = true;
-  else if (Mode == "inline")
-    C.ReEncodes = false;
-  else if (Mode == "shape")
-    C.ShapeKeyed = C.InterpFallback = true;
-  else if (Mode != "wavefront")
-    return std::nullopt;
-  return C;
-}
-
 std::string ManifestError::str() const {
   std::string S = File;
   if (Line)
@@ -323,6 +308,31 @@ Capabilities readCapabilities(const Obj &O) {
   return C;
 }
 
+ParamDoc readParamDoc(const Obj &O) {
+  ParamDoc D;
+  D.DefaultText = O.str("defaultText", std::string());
+  D.RangeText = O.str("range", std::string());
+  D.Text = O.str("text", std::string());
+  auto number = [&](const char *K) -> std::optional<double> {
+    if (!O.has(K))
+      return std::nullopt;
+    if (!O.J[K].is_number())
+      fail(O.at(K), "expected a number, not " + O.J[K].dump());
+    return O.J[K].get<double>();
+  };
+  D.Min = number("min");
+  D.Max = number("max");
+  if (O.has("default")) {
+    const Json &A = O.array("default");
+    for (size_t I = 0; I < A.size(); ++I) {
+      if (!A[I].is_number())
+        fail(O.at("default") + "/" + std::to_string(I), "expected a number, not " + A[I].dump());
+      D.Default.push_back(A[I].get<double>());
+    }
+  }
+  return D;
+}
+
 FunctionLayout readFunction(const Obj &O) {
   FunctionLayout F;
   F.Id = O.u("id");
@@ -335,7 +345,8 @@ FunctionLayout readFunction(const Obj &O) {
   for (size_t I = 0; I < Ps.size(); ++I) {
     Obj P(Ps[I], O.at("params") + "/" + std::to_string(I));
     F.Params.push_back({P.str("name", std::string()), P.str("type"), P.u("size", 0), P.u("align", 0),
-                        P.u("offset", 0)});
+                        P.u("offset", 0), P.has("doc") ? readParamDoc(Obj(P.J["doc"], P.at("doc")))
+                                                       : ParamDoc{}});
   }
   F.Attributes = O.strings("attributes");
   F.Settings = O.strings("settings");
@@ -498,12 +509,10 @@ void readTop(const Json &J, Manifest &M) {
     M.Caps = Capabilities{};
     M.Caps.MaxOutputs = M.MaxOutputs;
   } else {
-    std::optional<Capabilities> C = capabilitiesOfMode(M.Mode);
-    if (!C)
-      fail("/mode", "unknown mode '" + M.Mode + "' and no \"capabilities\"");
-    M.Caps = *C;
-    M.Caps.MaxOutputs = M.MaxOutputs;
-    M.Caps.OutputsEntry = M.Kernel.Entry;
+    // What a kernel can absorb is the backend's word (docs/abi.md); a layout without it was
+    // written by a texcc older than the block, and no table here guesses it from the mode.
+    fail("/capabilities", "missing: this layout.json was written by an older texcc (run texcc "
+                          "again)");
   }
   if (M.Caps.InterpFallback && M.Kernel.InterpFallback.empty())
     fail("/kernel/interpFallback", "missing (the capabilities name an interp fallback kernel)");

@@ -220,28 +220,18 @@ TEST(Manifest, FieldErrorNamesPointerAndPosition) {
   EXPECT_EQ(E.rfind(Where, 0), 0u) << E << " (expected " << Where << ")";
 }
 
-TEST(Manifest, OldLayoutWithoutCapabilitiesGetsItsModes) {
-  // A layout of texcc before the capabilities block (and before compileOptions).
+TEST(Manifest, KernelLayoutWithoutCapabilitiesIsRefused) {
+  // A layout of texcc before the capabilities block: no table guesses them from the mode.
   const char *Old = R"({"texcc": 1, "mode": "interp", "maxOutputs": 2,
                         "kernel": {"source": "proctex.cl", "entry": "texcc_proctex"},
                         "materials": []})";
-  Manifest M = read(Old);
-  EXPECT_FALSE(M.HasCapabilities);
-  EXPECT_TRUE(M.Caps.ReEncodes && M.Caps.WiringIsData && M.Caps.StackHeadroom);
-  EXPECT_FALSE(M.Caps.ShapeKeyed || M.Caps.InterpFallback);
-  EXPECT_EQ(M.Caps.MaxOutputs, 2u);
-  EXPECT_EQ(M.Caps.OutputsEntry, "texcc_proctex");
-  EXPECT_FALSE(M.HasCompileOptions);
-  EXPECT_EQ(M.CompileOptions, std::vector<std::string>{"--mode=interp"});
-  // Each mode as the runtime assumed it; an unknown mode without the block is an error.
-  EXPECT_FALSE(capabilitiesOfMode("inline")->ReEncodes);
-  EXPECT_TRUE(capabilitiesOfMode("wavefront")->ReEncodes);
-  EXPECT_TRUE(capabilitiesOfMode("shape")->InterpFallback);
-  EXPECT_FALSE(capabilitiesOfMode("host"));
-  std::string E = readError(R"({"texcc": 1, "mode": "fast", "kernel": {}, "materials": []})");
-  EXPECT_NE(E.find("/mode: unknown mode 'fast' and no \"capabilities\""), std::string::npos) << E;
+  std::string E = readError(Old);
+  EXPECT_NE(E.find("/capabilities: missing: this layout.json was written by an older texcc"),
+            std::string::npos)
+      << E;
   // A shape layout must name its fallback kernel.
-  E = readError(R"({"texcc": 1, "mode": "shape", "kernel": {}, "materials": []})");
+  E = readError(R"({"texcc": 1, "mode": "shape", "kernel": {}, "materials": [],
+                     "capabilities": {"interpFallback": true}})");
   EXPECT_NE(E.find("/kernel/interpFallback: missing"), std::string::npos) << E;
 }
 

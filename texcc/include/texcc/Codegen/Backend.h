@@ -62,6 +62,13 @@ public:
   /// The base: values are literals (every edit regenerates), no value stack, no decoder.
   virtual kernel::Capabilities capabilities(const graph::CompiledGraph &CG,
                                             const CodegenOptions &Opts) const;
+  /// layout.json's "kernel" block: the entry points and whatever launch plan the kernel needs.
+  /// The base: one kernel texcc_proctex in the target's kernel file.
+  virtual kernel::KernelEntries entries(const graph::CompiledGraph &CG,
+                                        const CodegenOptions &Opts) const;
+  /// Scratch float4s per hit the runtime allocates: the base, an interpreter's spilled value
+  /// stack (interp, and shape for its fallback), else none.
+  virtual unsigned scratchFloat4PerHit(const graph::CompiledGraph &CG) const;
   /// Files besides the kernel, layout.json and args.bin (shape: its interp fallback kernel).
   virtual void addOutputs(std::vector<OutputFile> &, const graph::CompiledGraph &,
                           const CodegenOptions &) const {}

@@ -61,9 +61,23 @@ struct Bsdf {
   bool operator==(const Bsdf &O) const;
 };
 
+/// A parameter's row of the parameter table in its source file's opening comment
+/// (docs/textures.md): what the browser preview's controls show. texcc reads the table; the
+/// manifest carries it to the runtime, which sends it to front ends as the edit schema.
+struct ParamDoc {
+  std::string DefaultText;     // the "default" cell as written ("(0.7, 0.3, 0.2)"; "": none)
+  std::vector<double> Default; // that default read for the parameter's type (empty: not a value)
+  std::string RangeText;       // the "range" cell as written ("0..1", "> 0", "any")
+  std::optional<double> Min, Max; // the numeric bounds the range states
+  std::string Text;            // the "meaning" cell
+  bool empty() const { return DefaultText.empty() && RangeText.empty() && Text.empty(); }
+  bool operator==(const ParamDoc &O) const;
+};
+
 struct ParamLayout {
   std::string Name, Type; // Type as OpenCL spells it ("float3", "__global float*")
   unsigned Size = 0, Align = 0, Offset = 0;
+  ParamDoc Doc;
   bool operator==(const ParamLayout &O) const;
 };
 
@@ -196,8 +210,8 @@ struct Manifest {
   std::vector<std::string> CompileOptions;
   bool HasCompileOptions = true;
   KernelEntries Kernel;
-  /// The backend's capabilities; a layout without the block gets those of its mode as texcc
-  /// wrote them when it did not write the block (capabilitiesOfMode), HasCapabilities false.
+  /// The backend's capabilities (a kernel layout without the block is refused; a graph-only
+  /// layout has none: HasCapabilities false).
   Capabilities Caps;
   bool HasCapabilities = true;
   unsigned ScratchFloat4PerHit = 0;
@@ -220,9 +234,6 @@ struct Manifest {
   bool operator==(const Manifest &O) const;
 };
 
-/// The capabilities texcc wrote implicitly for a mode before layout.json had a "capabilities"
-/// block (std::nullopt for an unknown mode). Only the reader uses it, for such old layouts.
-std::optional<Capabilities> capabilitiesOfMode(const std::string &Mode);
 
 /// A reading error: where (file:line:col when the position is known) and why.
 struct ManifestError {
