@@ -256,9 +256,9 @@ def superinstructions_section(d):
     lines = ["## 2c. Interpreter superinstructions", "",
              "Removed from texcc in 2026-12: they did not pay on the examples (per hit, "
              "interp without them against with them: 0.99 to 1.01; callgrind: 0.995 to 1.013; "
-             "docs/modes.md). The last measurement, by the removed "
+             "bench/modes.md). The last measurement, by the removed "
              "`bench/superinstructions.py`: interp (with its fused pairs of light nodes, "
-             "docs/modes.md) against `interp --no-superinstructions` and inline. Depth chains of "
+             "bench/modes.md) against `interp --no-superinstructions` and inline. Depth chains of "
              "`mathColor` (bench/stability.py) on the sweep quad, rust and scratches on the "
              "atrium; %s, %d spp, PoCL on one thread (`POCL_MAX_PTHREAD_COUNT=1`: spread over "
              "both cores of the shared machine the device time swung threefold); %d "
@@ -407,7 +407,7 @@ def per_hit_section(d):
              "(minimum) in ns, and the median of the per-round ratios to inline (one process, "
              "so the machine's drifting load cancels). `interp` keeps its value stack in local "
              "memory (texcc's default for up to 4 slots), `interp-private` in a private array "
-             "(`--local-stack-limit=0`; docs/modes.md); both hoist, `interp-unhoisted` does not "
+             "(`--local-stack-limit=0`; bench/modes.md); both hoist, `interp-unhoisted` does not "
              "(`--no-hoist`); all three have quickened opcodes (int constants and fused pairs "
              "included), `interp-unquickened` has none "
              "(`--max-quickened=0`). `shape` and `interp` run `texcc_uniforms` once "
@@ -500,7 +500,7 @@ def value_stack_section(d):
              "array (`array`: `float4 stack[N]`, `--local-stack-limit=0`, indexed by slot "
              "numbers from args.bin, which a GPU places in scratch), in the work-group's local "
              "memory (`local`: `__local float4 stack[N * 64]`, texcc's default for N <= 4, "
-             "docs/modes.md), and two rewrites of the private kernel that keep the N slots in "
+             "bench/modes.md), and two rewrites of the private kernel that keep the N slots in "
              "registers: `registers` (one float4 per slot, selects to read, an if chain to "
              "write) and `soa` (four float arrays, which LLVM's AMDGPU alloca promotion puts in "
              "registers). Same compile as section 3. *Occupancy* is the compiler's remark; *with "
@@ -734,7 +734,11 @@ def tail_sections():
                        ("bench/sampling.md", "sampling: where the variance comes from, and error against converged references beside Cycles (`bench/sampling.py`, `bench/accuracy.py --peer`)"),
                        ("bench/startup.md", "texrender's fixed start-up cost (process start, OBJ, BVHs; `bench/startup.py`), the part `bench/accuracy.py --peer` subtracts"),
                        ("bench/lookdev.md", "live look-development: edit-to-first-frame latency through the browser preview (`bench/lookdev.py`)"),
-                       ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`; its AO figure is now `bench/ao.py`)")):
+                       ("bench/trace-backends.md", "Embree against the OpenCL traversal on the atrium, and parallel AO as one Embree stream (`bench/trace_backends.py`; its AO figure is now `bench/ao.py`)"),
+                       ("bench/modes.md", "evaluation modes: value stack placement, GPU registers, superinstructions, hoisting and quickened opcodes, measured"),
+                       ("bench/blender-nodes.md", "Blender node library: conformance run times and per-node speed"),
+                       ("bench/fuzzing.md", "fuzzer and sanitizer runs and what they found"),
+                       ("bench/run-times.md", "how long `bench/run` and its parts took")):
         if os.path.exists(os.path.join(common.ROOT, name)):
             lines.append("- [%s](%s): %s" % (name, name, text))
     lines += bvh_build_lines()
