@@ -23,7 +23,7 @@ void Renderer::checkTextureFaults(const cl::Buffer &Active) {
   Cl->read(B["paths"], &P, sizeof P, size_t(Path) * sizeof(RtPath));
   const std::string_view ArgsBin(reinterpret_cast<const char *>(Lay.ArgsBin.data()),
                                  Lay.ArgsBin.size());
-  throw Error(texcc::describeTextureFault(F, Lay.Manifest, ArgsBin) + " at pixel (" +
+  throw TextureFault(texcc::describeTextureFault(F, Lay.Manifest, ArgsBin) + " at pixel (" +
               std::to_string(P.pixel % unsigned(Settings.Width)) + ", " +
               std::to_string(P.pixel / unsigned(Settings.Width)) + ")");
 }

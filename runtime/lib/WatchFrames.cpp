@@ -79,7 +79,12 @@ void Session::reducedPass() {
   S.Width = W, S.Height = H, S.Spp = 1;
   FrameStats Stats;
   PassStart = nowSeconds();
-  std::vector<float> Small = renderThen(Stats, [&] { S = Saved; });
+  std::vector<float> Small;
+  try {
+    Small = renderThen(Stats, [&] { S = Saved; });
+  } catch (const TextureFault &X) {
+    return recoverFromFault(X);
+  }
   PassEnd = nowSeconds();
   Times.record(double(W) * H, PassEnd - PassStart);
   if (stopping())
@@ -209,7 +214,12 @@ void Session::renderFrame() {
   }
   PassStart = PassResume = nowSeconds();
   Cuttable = true;
-  std::vector<float> Image = renderThen(F, [this] { Cuttable = false; });
+  std::vector<float> Image;
+  try {
+    Image = renderThen(F, [this] { Cuttable = false; });
+  } catch (const TextureFault &X) {
+    return recoverFromFault(X);
+  }
   if ((!F.Interrupted || stopping()) && F.SamplesDone > 0)
     writeProgress(Image, F.SamplesDone);
   if (F.SamplesDone > 0)
@@ -222,6 +232,9 @@ void Session::renderFrame() {
     return;
   Dirty = false;
   ++Frames;
+  RenderingGood = false;
+  if (!Good || Good->Lay.Dir != Lay.Dir || Good->LayGraph != LayGraph || Good->Graph != Graph)
+    Good = GoodState{Lay, LayGraph, Graph};
   say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
       ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
       "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
@@ -237,6 +250,54 @@ void Session::renderFrame() {
     say("the quick tier's programs build in the background now");
   while (!stopping() && !work())
     idle();
+}
+
+void Session::recoverFromFault(const TextureFault &X) {
+  // Not the end of the session (docs/live.md: a mistake never stops the preview): the fault is
+  // the user's texture code under the state just changed.
+  const std::string M = X.what();
+  say("error: " + M);
+  errorEvent(M);
+  EditAt = ChangeAt = QuickSince = 0;
+  Source = {};
+  const bool Again = RenderingGood;
+  RenderingGood = false;
+  auto wait = [&](const std::string &Why) {
+    say(Why + ": nothing renders until the graph, its sources or the scene change");
+    Dirty = false;
+  };
+  if (!Good)
+    return wait("no frame has completed without a fault yet");
+  if (Again)
+    return wait("the last good state faults too");
+  try {
+    std::optional<std::vector<std::string>> Back;
+    if (Good->Lay.Dir == Lay.Dir && Good->LayGraph == LayGraph)
+      Back = argumentEdits(Graph, Good->Graph); // the same kernel: the edits since, undone
+    std::string Kernel;
+    if (!Back) { // another kernel (texcc's, a rewiring's): the good one, and its edits
+      R->setLayout(Good->Lay);
+      Lay = Good->Lay;
+      LayGraph = Good->LayGraph;
+      Editor = std::make_unique<LiveEditor>(Lay);
+      Graph = LayGraph;
+      Back = argumentEdits(LayGraph, Good->Graph);
+      Kernel = "kernel and ";
+    }
+    if (Back) {
+      for (const std::string &T : *Back)
+        Editor->apply(parseEdit(T), *R);
+      Graph = Good->Graph;
+    }
+    watchFiles();
+    RenderingGood = Dirty = true;
+    say("the last good " + Kernel + "graph render again" +
+        (Back ? std::string() : " (without the control channel's rewirings made before)"));
+  } catch (const std::exception &E) {
+    say("error: " + std::string(E.what()));
+    errorEvent(E.what());
+    wait("the last good state could not be restored");
+  }
 }
 
 } // namespace watch

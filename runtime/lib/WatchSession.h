@@ -4,6 +4,7 @@
 #ifndef TEXRENDER_LIB_WATCHSESSION_H
 #define TEXRENDER_LIB_WATCHSESSION_H
 
+#include "texrender/Error.h"
 #include "texrender/Image.h"
 #include "texrender/Watch.h"
 
@@ -211,6 +212,11 @@ private:
   void fullPassDone();
   /// Renders with all the samples (stopped early by work()), writing progress images.
   void renderFrame();
+  /// A texture fault (a loop past its budget, an out-of-bounds read) of the state being
+  /// rendered: reported on stderr and as an error event, then the last good state (the kernel,
+  /// graph and edits of the last frame completed without a fault) renders again. Without one
+  /// (or when that state faults too), rendering waits for the next change (WatchFrames.cpp).
+  void recoverFromFault(const TextureFault &X);
   /// R->render(Stats), then Restore() (the settings or state the pass changed), whether the
   /// render returned or threw.
   std::vector<float> renderThen(FrameStats &Stats, const std::function<void()> &Restore);
@@ -300,6 +306,15 @@ private:
   // Pass times by pixel count, for the reduced pass's factor; when the pass being timed began
   // or the renderer was handed back by afterPass; a full-resolution pass may be cut.
   PassTimes Times;
+  // The last good state (recoverFromFault): what the last frame completed without a texture
+  // fault rendered (its kernel is told apart by its folder, Layout::Dir: texcc's output for
+  // each regeneration has its own).
+  struct GoodState {
+    Layout Lay;
+    json LayGraph, Graph;
+  };
+  std::optional<GoodState> Good;
+  bool RenderingGood = false; // the good state was restored after a fault and has not completed
   double PassResume = 0;
   bool Cuttable = false;
   unsigned PassesCut = 0;

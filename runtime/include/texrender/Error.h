@@ -15,6 +15,15 @@ public:
   explicit Error(const std::string &Msg) : std::runtime_error(Msg) {}
 };
 
+/// A runtime fault of user texture code that the kernels reported: a loop past its budget, an
+/// out-of-bounds array read (Renderer::checkTextureFaults), a non-finite texture value under
+/// --check-nan. A batch render stops with it; a watch session reports it and goes back to the
+/// last good kernel and graph (docs/live.md).
+class TextureFault : public Error {
+public:
+  using Error::Error;
+};
+
 } // namespace texrender
 
 #endif
