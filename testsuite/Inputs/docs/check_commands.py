@@ -54,6 +54,8 @@ PROGRAMS = {
     ".venv/bin/ray": {"help": [".venv/bin/ray", SUB, "--help"],
                       "needs": ("ray", "Ray, scripts/requirements-farm.txt")},
     "ninja": {"external": True},
+    # Blender itself (the exporter also runs inside it): optional; the script it runs must exist.
+    "blender": {"external": True, "optional": "Blender", "scripts_after": "--python"},
 }
 for name in TOOL_NAMES:
     PROGRAMS["build/bin/" + name] = {"help": ["build/bin/" + name, "--help"], "run": True}
@@ -261,6 +263,15 @@ def main():
                 problem = check_executable(key, tokens, via_python) \
                     if not spec.get("external") else \
                     (None if shutil.which(key) else "%s is not on PATH" % key)
+                after = spec.get("scripts_after")
+                if after in tokens and tokens.index(after) + 1 < len(tokens):
+                    script = tokens[tokens.index(after) + 1]
+                    if not os.path.isfile(os.path.join(SRC, script)):
+                        problem = "%s %s: no such file" % (after, script)
+                    elif problem and spec.get("optional"):
+                        print("OPTIONAL %s: %s: needs %s (not installed); %s exists"
+                              % (where, key, spec["optional"], script))
+                        continue
                 how = ""
                 if problem is None and spec.get("needs") and not venv_has(spec["needs"][0]):
                     print("OPTIONAL %s: %s: exists; needs %s (not installed): options not "
