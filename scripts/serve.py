@@ -1,19 +1,22 @@
 """texrender --serve: the browser preview's front end (docs/live.md, "Browser preview").
 
-  serve.py [--port P] [--listen ADDR] [--allow-host NAME] --texrender PATH [--texcc PATH]
+  serve.py [--port P] [--listen ADDR] [--allow-host NAME] [--idle-timeout S] --texrender PATH
            -- SCENE --textures DIR [texrender options]
 
 Runs `texrender SCENE ... --watch --control -o TMPDIR/frame.png` (docs/live.md, protocol B),
 serves the page (scripts/serve/) over HTTP and a WebSocket at /ws, forwards every frame
 texrender writes to every page, and turns the page's edit messages into texrender's control
-lines after checking them strictly against the graph (serve/schema.py). The renderer keeps no
-network code; this process has no rendering code.
+lines after checking their framing (serve/messages.py). texrender owns the graph, the edit
+schema it sends in its 'ready' and 'reload' events, and the rules of every edit; this process
+reads no user file, has no rendering code and no schema of its own.
 """
 import argparse
 import asyncio
 import collections
+import ipaddress
 import json
 import os
+import secrets
 import signal
 import socket
 import sys
@@ -22,15 +25,20 @@ import tempfile
 from aiohttp import WSMsgType, web
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve"))
-import schema  # noqa: E402
+import messages  # noqa: E402
 
 STATIC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve")
 PAGE_FILES = {"/": ("index.html", "text/html"), "/app.js": ("app.js", "text/javascript"),
               "/style.css": ("style.css", "text/css")}
-# A page message larger than this is answered with an error and dropped; one larger than
-# WS_HARD_LIMIT closes that page's socket (aiohttp refuses to buffer it: code 1009).
-MAX_MESSAGE = 64 * 1024
+# A page message larger than messages.MAX_MESSAGE is answered with an error and dropped; one
+# larger than WS_HARD_LIMIT closes that page's socket (aiohttp refuses to buffer it: code 1009).
+MAX_MESSAGE = messages.MAX_MESSAGE
 WS_HARD_LIMIT = 1024 * 1024
+# texrender's events are read in chunks, not with asyncio's readline (whose limit ends the
+# reader); one event longer than this is dropped with a line in the log. Its log (stderr) is
+# copied chunk by chunk, whatever its line lengths.
+MAX_EVENT = 256 * 1024 * 1024
+READ_CHUNK = 64 * 1024
 # Messages queued for one page. Its own messages' answers hold the reading of its socket at
 # half of this (it waits until they are sent); a page that does not read what other pages'
 # edits broadcast is disconnected at the limit. Frames are not queued: a page gets the newest.
@@ -138,16 +146,46 @@ class Edits:
             del self.waiting[key]
 
 
+async def stream_lines(stream, limit, on_too_long):
+    """The lines of STREAM (bytes, without the newline), read in chunks: a line longer than
+    LIMIT is skipped (ON_TOO_LONG(size) says so) instead of ending the reader."""
+    buf, skipped = bytearray(), 0
+    while True:
+        chunk = await stream.read(READ_CHUNK)
+        if not chunk:
+            return
+        start = 0
+        while True:
+            nl = chunk.find(b"\n", start)
+            piece = chunk[start:] if nl < 0 else chunk[start:nl]
+            if skipped:
+                skipped += len(piece)
+            else:
+                buf += piece
+                if len(buf) > limit:
+                    skipped = len(buf)
+                    buf.clear()
+            if nl < 0:
+                break
+            if skipped:
+                on_too_long(skipped)
+                skipped = 0
+            else:
+                yield bytes(buf)
+            buf.clear()
+            start = nl + 1
+
+
 class Server:
-    """texrender's process, the graph it renders and the connected pages."""
+    """texrender's process, the edit schema it sent last and the connected pages."""
 
     def __init__(self, opts, tmpdir):
         self.opts = opts
         self.frame_path = os.path.join(tmpdir, "frame.png")
         self.pages = set()
         self.proc = None
-        self.model = None  # schema.Model once texrender is ready
-        self.ready = None  # texrender's ready event
+        self.ready = None  # texrender's ready event (size, sources)
+        self.schema = None  # the edit schema of the last ready/reload, with the edits since
         self.last_error = None  # the last failed file change, until a reload
         self.last_frame = None
         self.last_edit = None  # (server id, page, page id) of the last applied edit
@@ -161,7 +199,7 @@ class Server:
         log("runs " + " ".join(cmd))
         self.proc = await asyncio.create_subprocess_exec(
             *cmd, stdin=asyncio.subprocess.PIPE, stdout=asyncio.subprocess.PIPE,
-            stderr=asyncio.subprocess.PIPE, limit=4 * 1024 * 1024)
+            stderr=asyncio.subprocess.PIPE)
         asyncio.ensure_future(self.read_events())
         asyncio.ensure_future(self.read_log())
 
@@ -170,21 +208,34 @@ class Server:
             self.proc.stdin.write((line + "\n").encode())
 
     async def read_log(self):
-        async for line in self.proc.stderr:
-            sys.stderr.write(line.decode(errors="replace"))
-            sys.stderr.flush()
+        out = sys.stderr.buffer
+        while True:
+            chunk = await self.proc.stderr.read(READ_CHUNK)
+            if not chunk:
+                return
+            out.write(chunk)
+            out.flush()
 
     async def read_events(self):
-        async for raw in self.proc.stdout:
+        def too_long(size):
+            log(f"texrender wrote an event of {size} bytes (over {MAX_EVENT}): dropped")
+        async for raw in stream_lines(self.proc.stdout, MAX_EVENT, too_long):
             try:
                 event = json.loads(raw)
-            except ValueError:
-                log("texrender wrote a line that is not JSON: " + raw[:200].decode(errors="replace"))
+                if not isinstance(event, dict):
+                    raise ValueError("not a JSON object")
+            except (ValueError, RecursionError):
+                log("texrender wrote a line that is not a JSON object: "
+                    + raw[:200].decode(errors="replace"))
                 continue
             try:
                 await self.on_event(event)
-            except Exception as e:  # a bad event must not end the preview
-                log(f"event {event.get('event')!r} not handled: {e!r}")
+            except Exception as e:  # a bad event must not end the preview: every page hears
+                kind = str(event.get("event"))[:40]
+                log(f"event {kind!r} not handled: {e!r}")
+                self.broadcast({"type": "error", "id": None,
+                                "message": f"serve.py could not handle texrender's {kind!r} "
+                                           f"event: {e!r}"[:2000]})
         self.exit_code = await self.proc.wait()
         log(f"texrender ended (exit {self.exit_code})")
         self.broadcast({"type": "error", "id": None,
@@ -192,48 +243,29 @@ class Server:
         await asyncio.sleep(0.2)  # lets the pages receive it
         self.done.set()
 
-    async def load_model(self):
-        self.model = await asyncio.get_running_loop().run_in_executor(
-            None, schema.Model.load, self.ready["graph"], self.ready["sources"], self.opts.texcc)
-
-    async def reload(self, what):
-        """graph.json changed: its values replace the page's edits; a source changed: the
-        signatures are read again, the edits stay (texrender keeps them too)."""
-        loop = asyncio.get_running_loop()
-        try:
-            if what == "graph":
-                await self.load_model()
-            elif what == "source":
-                await loop.run_in_executor(None, self.model.read_signatures)
-        except (OSError, ValueError, RuntimeError) as e:
-            # A source that does not compile yet (texrender reports the error itself): the
-            # controls of the last good state stay.
-            log(f"the graph's signatures were not read again: {str(e).splitlines()[0]}")
-
     async def on_event(self, event):
         kind = event.get("event")
-        if kind == "ready":
-            self.ready = event
-            await self.load_model()
+        if kind in ("ready", "reload"):
+            schema = event.get("schema")
+            if not isinstance(schema, dict) or not isinstance(schema.get("nodes"), list):
+                raise ValueError(f"texrender's {kind!r} event has no edit schema")
+            if kind == "ready":
+                self.ready = event
+            self.schema = schema
+            self.last_error = None
             for page in self.pages:
                 page.send(self.hello())
         elif kind == "frame":
             self.on_frame(event)
         elif kind in ("applied", "error"):
             self.on_answer(kind, event)
-        elif kind == "reload":
-            self.last_error = None
-            if self.ready:
-                await self.reload(event.get("what"))
-                for page in self.pages:
-                    page.send(self.hello())
 
     def on_frame(self, event):
         try:
-            with open(event["path"], "rb") as f:
+            with open(self.frame_path, "rb") as f:
                 png = f.read()
         except OSError as e:
-            log(f"frame {event.get('path')!r} not readable: {e}")
+            log(f"frame {self.frame_path!r} not readable: {e}")
             return
         self.last_frame = event
         edit = event.get("edit")
@@ -250,7 +282,7 @@ class Server:
     def on_answer(self, kind, event):
         sid = event.get("id")
         if sid is None:  # a watched file failed to compile: every page shows it
-            self.last_error = event.get("message", "")
+            self.last_error = str(event.get("message", ""))
             self.broadcast({"type": "error", "id": None, "message": self.last_error})
             return
         owner = self.edits.answered(sid)
@@ -259,39 +291,57 @@ class Server:
         page, page_id, line, coalesced = owner
         if kind == "error":
             if page in self.pages:
-                page.send({"type": "error", "id": page_id, "message": event.get("message", "")})
+                page.send({"type": "error", "id": page_id,
+                           "message": str(event.get("message", ""))})
             return
         self.last_edit = (sid, page, page_id)
-        change = self.model.applied(line)
+        # What changed, as texrender parsed it: node ids may hold dots, so nothing is split here.
+        change = {k: event[k] for k in ("node", "arg", "value", "source") if k in event}
+        self.record(change)
         for other in self.pages:
             other.send(dict(change, type="applied", id=page_id if other is page else None,
                             ms=event.get("ms"), builds=event.get("builds"), coalesced=coalesced))
+
+    def record(self, change):
+        """Keeps the schema's current values up to date for pages that connect later."""
+        for node in self.schema.get("nodes", []) if self.schema else []:
+            if node.get("id") != change.get("node"):
+                continue
+            for put in node.get("inputs", []):
+                if put.get("name") == change.get("arg"):
+                    for k in ("value", "node", "attr", "image"):
+                        put.pop(k, None)
+                    if "source" in change:
+                        put["node"] = change["source"]
+                    else:
+                        put["value"] = change.get("value")
 
     def broadcast(self, message):
         for page in self.pages:
             page.send(message)
 
     def hello(self):
-        r = self.ready
-        return {"type": "hello", "graph": self.model.graph_for_page(),
-                "controls": self.model.controls(), "sources": r.get("sources", []),
+        r = self.ready or {}
+        return {"type": "hello", "schema": self.schema, "sources": r.get("sources", []),
                 "width": r.get("width"), "height": r.get("height"), "error": self.last_error}
 
     def on_message(self, page, data):
-        """One page message: checked, then queued for texrender, or answered with an error."""
+        """One page message: its framing checked, then queued for texrender, or answered with
+        an error. Any failure here is an error to that page, never a closed socket."""
+        msg = None
         try:
-            if len(data) > MAX_MESSAGE:
-                raise schema.Invalid(f"message of {len(data)} bytes; at most {MAX_MESSAGE}")
-            msg = schema.parse_message(data)
-        except schema.Invalid as e:
-            page.send({"type": "error", "id": None, "message": str(e)})
+            msg = messages.parse_message(data)
+            if self.schema is None:
+                raise messages.Invalid("texrender is not ready yet")
+            key, line = messages.control_line(msg)
+        except messages.Invalid as e:
+            page.send({"type": "error", "id": msg.get("id") if msg else None,
+                       "message": str(e)})
             return
-        try:
-            if self.model is None:
-                raise schema.Invalid("texrender is not ready yet")
-            key, line = self.model.check(msg)
-        except schema.Invalid as e:
-            page.send({"type": "error", "id": msg.get("id"), "message": str(e)})
+        except Exception as e:  # a bug of this process: the page hears of it, the server serves on
+            log(f"a page message was not handled: {e!r}")
+            page.send({"type": "error", "id": None,
+                       "message": f"serve.py could not handle the message: {e!r}"[:2000]})
             return
         self.edits.submit(key, line, page, msg["id"])
 
@@ -305,6 +355,13 @@ class Server:
                 await self.proc.wait()
 
 
+def is_loopback(listen):
+    try:
+        return ipaddress.ip_address(listen).is_loopback
+    except ValueError:
+        return listen == "localhost"
+
+
 def allowed_hosts(listen, port, extra):
     """The Host values this server answers to: its port on the loopback names, on the address
     it listens on, and on the names given with --allow-host. Anything else is DNS rebinding or
@@ -315,17 +372,24 @@ def allowed_hosts(listen, port, extra):
     return {f"{n.lower()}:{port}" for n in names}
 
 
-def make_app(server, hosts):
+def make_app(server, hosts, token, idle_timeout):
     @web.middleware
     async def guard(request, handler):
         host = request.headers.get("Host", "").lower()
         origin = request.headers.get("Origin")
         if host not in hosts:
-            log(f"refused a request for Host {host!r}")
+            log(f"refused a request for Host {host[:80]!r}")
             return web.Response(status=403, text="403: unknown Host\n")
         if origin is not None and origin.lower() not in {"http://" + h for h in hosts}:
-            log(f"refused a request from Origin {origin!r}")
+            log(f"refused a request from Origin {origin[:80]!r}")
             return web.Response(status=403, text="403: foreign Origin\n")
+        # Off loopback the page and its WebSocket need the token printed at the start (the
+        # page's script and style sheet hold nothing of the session).
+        if token is not None and request.path in ("/", "/ws") and not secrets.compare_digest(
+                request.query.get("token", "").encode(), token.encode()):
+            log(f"refused a request for {request.path} without the token")
+            return web.Response(status=403, text="403: this preview needs its token "
+                                                  "(?token=..., printed when it started)\n")
         response = await handler(request)
         if not isinstance(response, web.WebSocketResponse):
             response.headers["Content-Security-Policy"] = CSP.format(host=host)
@@ -344,7 +408,8 @@ def make_app(server, hosts):
         return web.Response(status=204)
 
     async def websocket(request):
-        ws = web.WebSocketResponse(max_msg_size=WS_HARD_LIMIT, heartbeat=30)
+        # heartbeat: a page that answers no ping for idle_timeout seconds is closed.
+        ws = web.WebSocketResponse(max_msg_size=WS_HARD_LIMIT, heartbeat=idle_timeout)
         await ws.prepare(request)
         await serve_page(server, ws)
         return ws
@@ -361,14 +426,14 @@ async def serve_page(server, ws):
     page = Page(ws)
     server.pages.add(page)
     pump = asyncio.ensure_future(page.pump())
-    if server.model is not None:
+    if server.schema is not None:
         page.send(server.hello())
         if server.last_frame is not None:
             server.on_frame(server.last_frame)
     try:
         async for msg in ws:
             if msg.type == WSMsgType.TEXT:
-                server.on_message(page, msg.data.encode())
+                server.on_message(page, msg.data.encode("utf-8"))
                 await page.backlog()
             elif msg.type == WSMsgType.BINARY:
                 page.send({"type": "error", "id": None,
@@ -400,14 +465,23 @@ async def run(opts):
         server = Server(opts, tmpdir)
         sock = listening_socket(opts.listen, opts.port)
         port = sock.getsockname()[1]
-        app = make_app(server, allowed_hosts(opts.listen, port, opts.allow_host))
-        runner = web.AppRunner(app, access_log=None)
+        token = None if is_loopback(opts.listen) else secrets.token_urlsafe(24)
+        app = make_app(server, allowed_hosts(opts.listen, port, opts.allow_host), token,
+                       opts.idle_timeout)
+        # keepalive_timeout: an HTTP connection idle this long between requests is closed.
+        runner = web.AppRunner(app, access_log=None, keepalive_timeout=opts.idle_timeout)
         await runner.setup()
         await web.SockSite(runner, sock).start()
         host = f"[{opts.listen}]" if ":" in opts.listen else opts.listen
         if opts.listen in ("0.0.0.0", "::"):
             host = "127.0.0.1"
-        log(f"preview at http://{host}:{port}/ (Ctrl-C ends)")
+        if token is None:
+            log(f"preview at http://{host}:{port}/ (Ctrl-C ends)")
+        else:
+            log(f"warning: listening on {opts.listen}, not loopback: anyone who can reach "
+                f"port {port} and has the token can edit the graph and see the renders")
+            log(f"preview at http://{host}:{port}/?token={token} (Ctrl-C ends; the page and "
+                f"its WebSocket need this token)")
         await server.start()
         loop = asyncio.get_running_loop()
         stop = asyncio.Event()
@@ -416,6 +490,11 @@ async def run(opts):
         waiters = [asyncio.ensure_future(stop.wait()), asyncio.ensure_future(server.done.wait())]
         await asyncio.wait(waiters, return_when=asyncio.FIRST_COMPLETED)
         await server.quit()
+        # Open pages are told the server is going away; aiohttp's cleanup would otherwise wait
+        # for their sockets (up to a minute).
+        for page in list(server.pages):
+            page.closed = True
+            await page.ws.close(code=1001, message=b"the preview server ends")
         await runner.cleanup()
         # Ctrl-C in a terminal reaches texrender too: it ends with 130 after writing its image.
         if stop.is_set() or server.exit_code in (0, 130, 143):
@@ -431,15 +510,19 @@ def parse_args(argv):
     p = argparse.ArgumentParser(prog="serve.py")
     p.add_argument("--port", type=int, default=8642, help="0: any free port")
     p.add_argument("--listen", default="127.0.0.1",
-                   help="address to listen on (default loopback only)")
+                   help="address to listen on (default loopback only; any other address needs "
+                        "the token printed at the start)")
     p.add_argument("--allow-host", action="append", default=[],
                    help="another host name the page may be opened under (with --listen)")
+    p.add_argument("--idle-timeout", type=float, default=30.0,
+                   help="seconds after which an idle HTTP connection, or a page that answers "
+                        "no WebSocket ping, is closed (default 30)")
     p.add_argument("--texrender", required=True)
-    p.add_argument("--texcc", help="default: texcc next to texrender")
+    p.add_argument("--texcc", help="accepted for older callers; unused (texrender runs texcc)")
     opts = p.parse_args(argv[:cut])
+    if not opts.idle_timeout > 0:
+        p.error("--idle-timeout must be a positive number of seconds")
     opts.render_args = argv[cut + 1:]
-    if not opts.texcc:
-        opts.texcc = os.path.join(os.path.dirname(os.path.abspath(opts.texrender)), "texcc")
     return opts
 
 

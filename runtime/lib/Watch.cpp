@@ -25,6 +25,10 @@ void Session::event(const ordered_json &E) {
   std::fflush(stdout);
 }
 
+void Session::reloadEvent(const std::string &What) {
+  event({{"event", "reload"}, {"what", What}, {"schema", editSchema(Lay, Graph)}});
+}
+
 void Session::errorEvent(const std::string &Message, std::optional<long long> Id) {
   ordered_json E{{"event", "error"}};
   if (Id)
@@ -86,7 +90,7 @@ WatchResult Session::run() {
       if (S != GraphPath)
         Sources.push_back(S);
     event({{"event", "ready"}, {"graph", GraphPath}, {"sources", Sources},
-           {"width", O.Width}, {"height", O.Height}});
+           {"width", O.Width}, {"height", O.Height}, {"schema", editSchema(Lay, Graph)}});
     Input = std::make_unique<ControlInput>(Waker);
   }
   while (!stopping() && !Ended) {
@@ -240,7 +244,15 @@ void Session::handleCommand(const Command &C) {
   AppliedAt = nowSeconds();
   say("applied '" + Ed.Text + "' (id " + std::to_string(*Id) + ") in " + ms(Took) + ", " +
       std::to_string(Built) + " kernel build(s)");
-  event({{"event", "applied"}, {"id", *Id}, {"ms", eventMs(Took)}, {"builds", Built}});
+  // What changed, as texrender parsed the line (a front end never splits NODE.ARG itself:
+  // node ids may hold dots).
+  ordered_json Applied{{"event", "applied"}, {"id", *Id}, {"ms", eventMs(Took)},
+                       {"builds", Built}, {"node", Ed.Node}, {"arg", Ed.Arg}};
+  if (Ed.K == Edit::Kind::Rewire)
+    Applied["source"] = Ed.Value;
+  else
+    Applied["value"] = json::parse(Ed.Value);
+  event(Applied);
   if (Built > 0) // a rewiring regenerated the kernel
     noteQuickTier(C.ReadAt);
 }
@@ -252,14 +264,10 @@ void Session::applyChanges() {
   std::string Scene = fs::absolute(O.ScenePath).string();
   bool SceneChanged = Now.erase(Scene) > 0;
   bool GraphChanged = Now.erase(GraphPath) > 0;
-  if (SceneChanged) {
-    event({{"event", "reload"}, {"what", "scene"}});
+  if (SceneChanged)
     reloadScene();
-  }
-  if (GraphChanged || !Now.empty()) {
-    event({{"event", "reload"}, {"what", Now.empty() ? "graph" : "source"}});
+  if (GraphChanged || !Now.empty())
     applyGraph(Now);
-  }
 }
 
 void Session::applyKeptEdits(const json &Edited) {
@@ -299,6 +307,7 @@ void Session::reloadScene() {
     Dirty = true;
     ChangeAt = Noticed;
     say(O.ScenePath + " reloaded");
+    reloadEvent("scene");
   } catch (const std::exception &E) {
     say("error: " + std::string(E.what()) + "; the last good scene keeps rendering");
     errorEvent(std::string(E.what()));
@@ -337,6 +346,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
   if (Lines.empty()) {
     say(GraphPath + ": saved without a change to apply");
     Graph = New;
+    reloadEvent("graph");
     return;
   }
   std::vector<Edit> Edits;
@@ -375,6 +385,7 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
   const unsigned Built = R->cl().foregroundBuilds() - Builds;
   say("applied '" + Text + "' in " + ms(nowSeconds() - T0) + ", " + std::to_string(Built) +
       " kernel build(s)");
+  reloadEvent("graph");
   if (Built > 0) // a rewiring regenerated the kernel
     noteQuickTier(Noticed);
 }
@@ -456,6 +467,7 @@ void Session::adoptJob() {
   say("new kernel from texcc after " + ms(nowSeconds() - J->Started) + ", " +
       std::to_string(Source.Builds) + " kernel build(s) waited for");
   noteQuickTier(J->Started);
+  reloadEvent(J->KeepEdits ? "source" : "graph");
 }
 
 } // namespace watch

@@ -150,6 +150,12 @@ private:
 /// again (argumentEdits). E has been applied by the live editor, so its value parses.
 void applyToGraphJson(json &G, const Edit &E);
 
+/// The edit schema of the graph rendered now (Graph) with its kernel's manifest (Lay): per node
+/// its id, fn, file, return type and inputs (name, type, what feeds it: "value", "node", "attr"
+/// or "image"; the parameter table's "default", "range", "min", "max" and "doc"), and the nodes
+/// each material uses. The 'ready' and 'reload' events carry it (docs/live.md).
+ordered_json editSchema(const Layout &Lay, const json &Graph);
+
 /// texcc on the changed graph, on a thread of its own, while the current kernel renders.
 struct Regeneration {
   std::thread Thread;
@@ -250,6 +256,9 @@ private:
   void handleCommand(const Command &C);
   /// One JSON event a line on standard output (--control only).
   void event(const ordered_json &E);
+  /// A saved change is applied (What: scene, graph or source): the reload event, with the
+  /// edit schema of the graph rendered now (--control only).
+  void reloadEvent(const std::string &What);
   /// An error event (--control only); Id: the command's, if it was one.
   void errorEvent(const std::string &Message, std::optional<long long> Id = std::nullopt);
   unsigned buildsSoFar() const { return R->cl().foregroundBuilds() + R->cl().backgroundBuilds(); }

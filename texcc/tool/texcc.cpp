@@ -88,6 +88,12 @@ static cl::opt<bool> ListNodes(
              "with its parameters' types and defaults, and exit"),
     cl::cat(TexccCategory));
 
+static cl::opt<bool> ListNodesJson(
+    "json",
+    cl::desc("With --list-nodes: one JSON object with each parameter's type, default, range "
+             "and meaning from the file's parameter table"),
+    cl::cat(TexccCategory));
+
 static void printVersion(raw_ostream &OS) {
   OS << "texcc version " << texcc::versionString() << " (LLVM " << TEXCC_LLVM_VERSION << ")\n";
 }
@@ -99,7 +105,9 @@ static int fail(const std::string &Message) {
 
 static int run() {
   if (ListNodes)
-    return texcc::frontend::listNodesCommand({Sources.begin(), Sources.end()});
+    return texcc::frontend::listNodesCommand({Sources.begin(), Sources.end()}, ListNodesJson);
+  if (ListNodesJson)
+    return fail("--json goes with --list-nodes");
   if (GraphPath.empty())
     return fail("no graph given (--graph graph.json)");
   texcc::driver::Options Opts;

@@ -1,13 +1,15 @@
 """Plays a browser (or an attacker's page) against the preview server, scripts/serve.py, run
 with the fake texrender (serve_fake_texrender.py): one safety behaviour per CASE.
 
-  serve_client.py CASE --texcc TEXCC -- SCENE --textures DIR
+  serve_client.py CASE [--renderer TEXRENDER] -- SCENE --textures DIR [texrender options]
 
-Starts the server on a free port, waits for the page's hello, runs CASE, prints what it saw
-(one fact a line, for FileCheck), asks the server to quit and prints "server exit N". The
-control lines that reached the fake texrender are read from its log ($SERVE_FAKE_LOG).
+Starts the server on a free port (with the fake texrender unless --renderer names the real
+one), waits for the page's hello, runs CASE, prints what it saw (one fact a line, for
+FileCheck), asks the server to quit and prints "server exit N". The control lines that reached
+the fake texrender are read from its log ($SERVE_FAKE_LOG).
 """
 import asyncio
+import collections
 import json
 import os
 import re
@@ -15,6 +17,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 import aiohttp
@@ -26,20 +29,24 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
 class Session:
-    def __init__(self, texcc, render_args, delay_ms=0):
+    def __init__(self, render_args, delay_ms=0, server_args=(), renderer=FAKE):
         self.tmp = tempfile.mkdtemp(prefix="serve-client-")
         self.log = os.path.join(self.tmp, "control.log")
         env = dict(os.environ, SERVE_FAKE_LOG=self.log, SERVE_FAKE_DELAY_MS=str(delay_ms))
         self.proc = subprocess.Popen(
-            [sys.executable, SERVE, "--port", "0", "--texrender", FAKE, "--texcc", texcc, "--"]
-            + render_args, stderr=subprocess.PIPE, text=True, env=env)
+            [sys.executable, SERVE, "--port", "0", "--texrender", renderer] + list(server_args)
+            + ["--"] + render_args, stderr=subprocess.PIPE, text=True, env=env)
+        self.lines = []  # the server's log up to the address line, then all of it (a thread)
         for line in self.proc.stderr:
-            m = re.search(r"preview at http://127\.0\.0\.1:(\d+)/", line)
+            self.lines.append(line)
+            m = re.search(r"preview at http://127\.0\.0\.1:(\d+)/(\S*)", line)
             if m:
                 self.port = int(m.group(1))
+                self.query = m.group(2)
                 break
         else:
             sys.exit("serve_client.py: the server ended before listening")
+        threading.Thread(target=lambda: self.lines.extend(self.proc.stderr), daemon=True).start()
         self.url = f"http://127.0.0.1:{self.port}"
         self.host = f"127.0.0.1:{self.port}"
 
@@ -141,11 +148,17 @@ async def case_malformed(s, http):
                  '{"type": "set", "id": 1, "node": "t", "arg": "gain"}',
                  '{"type": "set", "id": 1, "node": "t", "arg": "gain", "value": 1, "path": "/etc"}',
                  '{"type": "set", "id": "1", "node": "t", "arg": "gain", "value": 1}',
-                 '{"type": "set", "id": 2, "node": "t", "arg": "gain", "value": "0.5"}',
-                 '{"type": "set", "id": 3, "node": "t", "arg": "gain", "value": [0.5]}',
-                 '{"type": "set", "id": 4, "node": "t", "arg": "color", "value": [1, 0]}',
-                 '{"type": "set", "id": 5, "node": "o", "arg": "octaves", "value": 2.5}',
-                 '{"type": "set", "id": 6, "node": "o", "arg": "octaves", "value": true}'):
+                 '{"type": "set", "id": true, "node": "t", "arg": "gain", "value": 1}',
+                 '{"type": "set", "id": 9007199254740992, "node": "t", "arg": "gain", "value": 1}',
+                 '{"type": ["set"], "id": 1, "node": "t", "arg": "gain", "value": 1}',
+                 '{"type": "set", "id": 2, "node": ["t"], "arg": "gain", "value": 1}',
+                 '{"type": "set", "id": 3, "node": "t", "arg": "a.gain", "value": 1}',
+                 '{"type": "set", "id": 4, "node": "t=1", "arg": "gain", "value": 1}',
+                 '{"type": "set", "id": 5, "node": "t\\nquit", "arg": "gain", "value": 1}',
+                 '{"type": "set", "id": 6, "node": "t", "arg": "gain", "value": ' + "[" * 9 + "]" * 9 + "}",
+                 '{"type": "set", "id": 7, "node": "t", "arg": "gain", "value": ' + "[" * 30000 + "]" * 30000 + "}",
+                 '{"type": "set", "id": 8, "node": "t", "arg": "gain", "value": "\\ud800"}',
+                 '{"type": "set", "id": 9, "node": "t", "arg": "gain", "value": ' + "9" * 5000 + "}"):
         await refused(ws, text)
     await ws.send_bytes(b"\x00\x01")
     err = await next_of(ws, "error")
@@ -175,13 +188,16 @@ async def case_oversized(s, http):
 async def case_unknown(s, http):
     ws, _ = await open_page(s, http)
     for text in ('{"type": "load", "id": 1, "path": "/etc/passwd"}',
+                 '{"type": "set", "id": 6, "node": "t", "arg": "gain", "value": "0.5"}',
+                 '{"type": "set", "id": 7, "node": "t", "arg": "color", "value": [1, 0]}',
+                 '{"type": "set", "id": 8, "node": "o", "arg": "octaves", "value": 2.5}',
                  '{"type": "set", "id": 2, "node": "nope", "arg": "gain", "value": 1}',
                  '{"type": "set", "id": 3, "node": "t", "arg": "nope", "value": 1}',
                  '{"type": "rewire", "id": 4, "node": "t", "arg": "gain", "source": "nope"}',
                  '{"type": "rewire", "id": 5, "node": "t", "arg": "gain", "source": "t"}'):
         await refused(ws, text)
-    print(f"lines that reached texrender: {len(s.forwarded())}")
     await ws.close()
+    await still_serving(s, http)
 
 
 async def case_nan(s, http):
@@ -249,7 +265,7 @@ async def case_flood_unread(s, http):
     before = s.rss_kib()
     n = 20000
     for i in range(n):
-        await ws.send_str(json.dumps({"type": "set", "id": i, "node": "nope", "arg": "gain",
+        await ws.send_str(json.dumps({"type": "set", "id": i, "node": "t", "arg": "gain.x",
                                       "value": 1}))
     sent_rss = s.rss_kib()
     errors = 0
@@ -295,6 +311,151 @@ async def case_killed_client(s, http):
     await still_serving(s, http)
 
 
+def fuzz_message(rng):
+    """One random page message: (kind, payload). Kinds: "text" (a str), "bytes" (a binary
+    frame), "raw-text" (a text frame of raw bytes: invalid UTF-8 fails the connection, RFC 6455
+    7.1.7). About a third are well-formed edits."""
+    nodes = ["t", "u", "o", "Mat/Noise.Fac", "a.b.c", "", "t\u00e9", "\ud800"]
+    args = ["gain", "color", "octaves", "p", "nope", "a.b", "x=y", "\n"]
+    def number():
+        return rng.choice([rng.uniform(-1e6, 1e6), rng.randint(-2 ** 40, 2 ** 40), 0, -0.0,
+                           10 ** rng.randint(15, 400), 1e308, 5e-324, 0.1])
+    def value(depth=0):
+        r = rng.random()
+        if r < 0.45 or depth > 3:
+            return number()
+        if r < 0.75:
+            return [number() for _ in range(rng.randint(0, 5))]
+        if r < 0.85:
+            return [value(depth + 1) for _ in range(rng.randint(0, 3))]
+        return rng.choice(["x", None, True, {"node": "u"}, {"attr": "ObjectPos"}, {}, "\u0000"])
+    r = rng.random()
+    ident = rng.randint(0, 10 ** 6)
+    if r < 0.33:
+        if rng.random() < 0.8:
+            msg = {"type": "set", "id": ident, "node": rng.choice(nodes[:3]),
+                   "arg": rng.choice(args[:4]), "value": value()}
+        else:
+            msg = {"type": "rewire", "id": ident, "node": rng.choice(nodes[:3]),
+                   "arg": rng.choice(args[:4]), "source": rng.choice(nodes[:4])}
+        return "text", json.dumps(msg)
+    if r < 0.55:  # a field of the wrong kind or value
+        msg = {"type": "set", "id": ident, "node": rng.choice(nodes), "arg": rng.choice(args),
+               "value": value()}
+        key = rng.choice(["type", "id", "node", "arg", "value", "extra", None])
+        bad = rng.choice([[1, 2], ["set"], {"a": 1}, 10 ** 310, -1, 2 ** 53, 1.5, True, None,
+                          "set\nquit", "x" * 2000])
+        if key is None:
+            msg.pop(rng.choice(list(msg)))
+        else:
+            msg[key] = bad
+        return "text", json.dumps(msg)
+    if r < 0.62:  # nesting under the size limit
+        n = rng.choice([9, 100, 1000, 30000])
+        return "text", ('{"type": "set", "id": 1, "node": "t", "arg": "gain", "value": '
+                        + "[" * n + "]" * n + "}")
+    if r < 0.70:  # JSON that Python's json accepts and JSON does not, or no JSON at all
+        return "text", rng.choice(['{"type": "set", "id": 1, "node": "t", "arg": "gain", '
+                                   '"value": NaN}', '{"type": "set", "id": 1, "node": "t", '
+                                   '"arg": "gain", "value": 1e400}', "[", "{}", "null", "1" * 5000,
+                                   '{"type": "set", "id": 1, "id": 1}', "\u0000", ""])
+    if r < 0.78:
+        return "text", json.dumps(value())
+    if r < 0.86:
+        return "bytes", bytes(rng.getrandbits(8) for _ in range(rng.randint(0, 64)))
+    if r < 0.94:  # an edit over the size limit (under the hard limit that closes the socket)
+        return "text", json.dumps({"type": "set", "id": ident, "node": "t", "arg": "gain",
+                                   "value": [0.5] * rng.randint(14000, 60000)})
+    return "raw-text", rng.choice([b"\xff\xfe", b'{"type": "set", "id": 1, "node": "\xc3"}',
+                                   b"\xed\xa0\x80"])
+
+
+async def case_fuzz(s, http):
+    """A seeded generator sends N random messages, well-formed and ill-formed; every one is
+    answered: an 'applied' or 'error' with its id, an error without one (framing), a place in
+    the 'coalesced' count of a later edit of the same argument, or, for a text frame that is
+    not UTF-8, the close RFC 6455 requires (1007) after which a new page connects. The server
+    keeps serving throughout and after."""
+    import random
+    seed, n = int(os.environ.get("SERVE_FUZZ_SEED", "36")), int(os.environ.get("SERVE_FUZZ_N", "3000"))
+    rng = random.Random(seed)
+    ws, _ = await open_page(s, http)
+    kinds = collections.Counter()
+    answered = closed = 0
+    pending = 0
+
+    async def drain(until_zero):
+        nonlocal pending, answered
+        while pending > 0:
+            msg = await ws.receive(timeout=60)
+            if msg.type == aiohttp.WSMsgType.TEXT:
+                data = json.loads(msg.data)
+                if data["type"] == "error":
+                    pending -= 1
+                    answered += 1
+                elif data["type"] == "applied" and data["id"] is not None:
+                    pending -= 1 + data["coalesced"]
+                    answered += 1 + data["coalesced"]
+            elif msg.type != aiohttp.WSMsgType.BINARY:
+                raise RuntimeError(f"socket closed ({msg.type}) with {pending} messages unanswered")
+            if not until_zero and pending < 20:
+                return
+
+    for i in range(n):
+        kind, payload = fuzz_message(rng)
+        kinds[kind] += 1
+        if kind == "raw-text":
+            await drain(True)
+            await ws.send_frame(payload, aiohttp.WSMsgType.TEXT)
+            msg = await ws.receive(timeout=20)
+            while msg.type in (aiohttp.WSMsgType.TEXT, aiohttp.WSMsgType.BINARY):
+                msg = await ws.receive(timeout=20)
+            if ws.close_code == 1007:
+                closed += 1
+            else:
+                print(f"invalid UTF-8 text frame: closed with {ws.close_code}")
+            ws, _ = await open_page(s, http)
+            continue
+        if kind == "bytes":
+            await ws.send_bytes(payload)
+        else:
+            await ws.send_str(payload)
+        pending += 1
+        if pending >= 50:
+            await drain(False)
+    await drain(True)
+    print(f"seed {seed}: {n} messages ({kinds['text']} text, {kinds['bytes']} binary, "
+          f"{kinds['raw-text']} text frames not UTF-8)")
+    print(f"answered: {answered + closed == n} ({answered} answers, {closed} closes with 1007)")
+    print(f"server alive: {s.alive()}")
+    await ws.close()
+    await still_serving(s, http)
+
+
+async def case_token(s, http):
+    """--listen 0.0.0.0: a warning, a token printed once in the address, required on the page
+    and on the WebSocket; an idle connection is closed (--idle-timeout 1)."""
+    warned = any("warning: listening on 0.0.0.0" in line for line in s.lines)
+    token = re.fullmatch(r"\?token=([A-Za-z0-9_-]{20,})", s.query)
+    print(f"warning printed: {warned}; token in the address: {bool(token)}")
+    for what, query in (("no token", ""), ("a wrong token", "?token=x" + token.group(1)[1:]),
+                        ("the token", "?" + s.query[1:])):
+        page = await http.get(s.url + "/" + query)
+        try:
+            ws = await http.ws_connect(s.url + "/ws" + query)
+            verdict = (await next_of(ws, "hello"))["type"]
+            await ws.close()
+        except aiohttp.WSServerHandshakeError as e:
+            verdict = e.status
+        print(f"{what}: page {page.status}, websocket {verdict}")
+    script = await http.get(s.url + "/app.js")
+    print(f"app.js without the token: {script.status}")
+    reader, writer = await asyncio.open_connection("127.0.0.1", s.port)
+    data = await asyncio.wait_for(reader.read(), 60)  # the server closes it: EOF
+    print(f"an idle connection is closed by the server: {data == b''}")
+    writer.close()
+
+
 async def main_async(case, s):
     async with aiohttp.ClientSession() as http:
         await globals()["case_" + case.replace("-", "_")](s, http)
@@ -306,9 +467,11 @@ def main():
         return
     case = sys.argv[1]
     cut = sys.argv.index("--")
-    texcc = sys.argv[sys.argv.index("--texcc") + 1]
     delay = 200 if case == "burst" else 0
-    s = Session(texcc, sys.argv[cut + 1:], delay)
+    server_args = ["--listen", "0.0.0.0", "--idle-timeout", "1"] if case == "token" else []
+    head = sys.argv[2:cut]
+    renderer = head[head.index("--renderer") + 1] if "--renderer" in head else FAKE
+    s = Session(sys.argv[cut + 1:], delay, server_args, renderer)
     try:
         asyncio.run(main_async(case, s))
     finally:

@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """A stand-in for `texrender ... --watch --control -o OUT` (docs/live.md, protocol B) for the
-browser preview's safety tests, which need no renderer: it announces the graph of
---textures DIR/layout.json, accepts every control line (`ID set|rewire NODE.ARG=...`) with an
-"applied" event (except a rewire onto node 'o', refused with an "error" event as texrender
-refuses a type mismatch), and writes a tiny PNG frame every 50 ms.
+browser preview's framing and safety tests, which need no renderer: it announces an edit
+schema of the graph next to the scene (graph.json: its nodes and arguments, types guessed
+from the values; the real texrender takes them from layout.json), accepts every control line
+(`ID set|rewire NODE.ARG=...`, split as texrender's parseEdit splits it: NODE.ARG at the last
+dot) with an "applied" event carrying node, arg and the value or source (except a rewire onto
+node 'o', refused with an "error" event as texrender refuses a type mismatch), and writes a
+tiny PNG frame every 50 ms.
 
 Every control line it reads is appended to $SERVE_FAKE_LOG (the tests read what reached
 "texrender"); $SERVE_FAKE_DELAY_MS delays each answer (so that a burst finds an edit in flight).
@@ -32,17 +35,34 @@ def emit(event):
     sys.stdout.flush()
 
 
+def schema_of(graph):
+    """A schema of the shape texrender sends (WatchSchema.cpp) for GRAPH's nodes."""
+    def input_of(name, arg):
+        put = {"name": name}
+        if isinstance(arg, dict):
+            put.update({k: arg[k] for k in ("node", "attr", "image") if k in arg})
+            put["type"] = "float3"
+        elif isinstance(arg, list):
+            put.update(value=arg, type=f"float{len(arg)}" if len(arg) > 1 else "float")
+        else:
+            put.update(value=arg, type="int" if name == "octaves" else "float")
+        return put
+    nodes = [{"id": n["id"], "fn": n["fn"], "file": "tex.cl",
+              "inputs": [input_of(k, v) for k, v in n.get("args", {}).items()]}
+             for n in graph["nodes"]]
+    return {"nodes": nodes, "materials": {}}
+
+
 def main():
     args = sys.argv[1:]
-    textures = args[args.index("--textures") + 1]
+    scene = args[0]
+    with open(os.path.join(os.path.dirname(os.path.abspath(scene)), "graph.json")) as f:
+        graph = json.load(f)
     out = args[args.index("-o") + 1]
-    with open(os.path.join(textures, "layout.json")) as f:
-        graph = json.load(f)["graph"]
-    with open(graph) as f:
-        sources = [os.path.join(os.path.dirname(graph), s) for s in json.load(f)["sources"]]
     log = os.environ.get("SERVE_FAKE_LOG")
     delay = float(os.environ.get("SERVE_FAKE_DELAY_MS", "0")) / 1000
-    emit({"event": "ready", "graph": graph, "sources": sources, "width": 2, "height": 2})
+    emit({"event": "ready", "graph": "graph.json", "sources": graph["sources"], "width": 2,
+          "height": 2, "schema": schema_of(graph)})
     applied, spp = None, 0
     while True:
         ready, _, _ = select.select([sys.stdin], [], [], 0.05)
@@ -59,7 +79,16 @@ def main():
                 emit({"event": "error", "id": int(sid),
                       "message": f"edit '{edit}': node 'o' returns float, not float3"})
                 continue
-            emit({"event": "applied", "id": int(sid), "ms": 0.1, "builds": 0})
+            try:
+                verb, rest = edit.split(" ", 1)
+                target, value = rest.split("=", 1)
+                node, arg = target.rsplit(".", 1)
+                change = {"source": value} if verb == "rewire" else {"value": json.loads(value)}
+            except ValueError as e:  # texrender answers a line it cannot read with an error
+                emit({"event": "error", "id": int(sid), "message": f"bad edit '{edit}': {e}"})
+                continue
+            emit(dict({"event": "applied", "id": int(sid), "ms": 0.1, "builds": 0,
+                       "node": node, "arg": arg}, **change))
             applied, spp = int(sid), 0
         spp += 1
         with open(out + ".tmp", "wb") as f:

@@ -186,6 +186,7 @@ int compile(const Options &Opts) {
   CO.LoopBudget = Opts.LoopBudget;
   CO.Checks = Opts.Checks;
   CO.CompileOptions = replayArguments(Opts);
+  CO.ParamDocs = fe::parameterDocs(CG->Signatures);
   B.configureCodegen(CO, Opts.Backend);
   renderUserCode(B, *FR, *CG, CO);
   std::string Error;

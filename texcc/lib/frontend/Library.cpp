@@ -4,9 +4,13 @@
 #include "texcc/Graph/Types.h"
 #include "texcc/Support/File.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <set>
 
@@ -137,39 +141,184 @@ std::vector<std::string> splitNames(std::string Cell) {
   return Names;
 }
 
-/// Parameter name -> default, from the rows of the comment's markdown tables whose first
-/// three cells are names ("x, y, z"), a type and the default ("-": none). A default of as many
-/// values as names ("0.5, 2" for "offsetAmount, offsetFrequency") is one per name; the first
-/// row naming a parameter wins.
-std::map<std::string, std::string> tableDefaults(const std::string &Comment) {
-  std::map<std::string, std::string> Defaults;
+/// Where a parameter table's cells are: from its header row ("| name | type | default | range |
+/// meaning |"); a table without one has name, type and default in its first three cells.
+struct TableColumns {
+  int Name = 0, Type = 1, Default = 2, Range = -1, Text = -1;
+};
+
+/// The cells of a markdown table row ("| a | b |" -> a, b), or none when Line is not one.
+std::vector<std::string> tableCells(const std::string &Line) {
+  std::vector<std::string> Cells;
+  size_t Bar = Line.find('|');
+  if (Bar == std::string::npos)
+    return Cells;
+  for (size_t Next; (Next = Line.find('|', Bar + 1)) != std::string::npos; Bar = Next)
+    Cells.push_back(trim(Line.substr(Bar + 1, Next - Bar - 1)));
+  return Cells;
+}
+
+/// The header row's columns, if Cells is one (it names "name" and "type").
+std::optional<TableColumns> headerColumns(const std::vector<std::string> &Cells) {
+  TableColumns C;
+  C.Name = C.Type = C.Default = -1;
+  for (size_t I = 0; I < Cells.size(); ++I) {
+    std::string H = Cells[I];
+    std::transform(H.begin(), H.end(), H.begin(), [](unsigned char X) { return std::tolower(X); });
+    const int Col = static_cast<int>(I);
+    if (H == "name")
+      C.Name = Col;
+    else if (H == "type")
+      C.Type = Col;
+    else if (H == "default")
+      C.Default = Col;
+    else if (H == "range")
+      C.Range = Col;
+    else if (H == "meaning" || H == "description")
+      C.Text = Col;
+  }
+  if (C.Name < 0 || C.Type < 0)
+    return std::nullopt;
+  return C;
+}
+
+std::string cell(const std::vector<std::string> &Cells, int Col) {
+  return Col >= 0 && static_cast<size_t>(Col) < Cells.size() ? Cells[Col] : std::string();
+}
+
+/// Parameter name -> its row, from the rows of the comment's markdown tables whose type cell
+/// names a type: the default as written ("-": none), the range and the meaning. A default of as
+/// many values as names ("0.5, 2" for "offsetAmount, offsetFrequency") is one per name; the
+/// first row naming a parameter wins.
+std::map<std::string, kernel::ParamDoc> parameterTable(const std::string &Comment) {
+  std::map<std::string, kernel::ParamDoc> Rows;
+  TableColumns Cols;
   size_t Pos = 0;
   while (Pos < Comment.size()) {
     size_t Eol = Comment.find('\n', Pos);
     std::string Line = Comment.substr(Pos, Eol == std::string::npos ? std::string::npos
                                                                      : Eol - Pos);
     Pos = Eol == std::string::npos ? Comment.size() : Eol + 1;
-    size_t Bar = Line.find('|');
-    if (Bar == std::string::npos)
+    std::vector<std::string> Cells = tableCells(Line);
+    if (Cells.size() < 3) {
+      Cols = TableColumns(); // a table ends
       continue;
-    std::vector<std::string> Cells;
-    for (size_t Next; (Next = Line.find('|', Bar + 1)) != std::string::npos; Bar = Next)
-      Cells.push_back(trim(Line.substr(Bar + 1, Next - Bar - 1)));
-    if (Cells.size() < 3 || Cells[0] == "name" || Cells[0].find("---") != std::string::npos)
+    }
+    if (std::optional<TableColumns> Header = headerColumns(Cells)) {
+      Cols = *Header;
       continue;
-    const std::string &Type = Cells[1], &Default = Cells[2];
+    }
+    if (Cells[0].find("---") != std::string::npos)
+      continue;
+    const std::string Type = cell(Cells, Cols.Type);
     bool IsType = false;
     for (const char *T : {"float", "int", "uint", "sam2D", "__global"})
       IsType |= Type.rfind(T, 0) == 0;
-    if (!IsType || Default.empty() || Default == "-")
+    if (!IsType)
       continue;
-    std::vector<std::string> Names = splitNames(Cells[0]);
+    std::string Default = cell(Cells, Cols.Default);
+    if (Default == "-")
+      Default.clear();
+    std::vector<std::string> Names = splitNames(cell(Cells, Cols.Name));
     std::vector<std::string> Values = splitValues(Default);
-    for (size_t N = 0; N < Names.size(); ++N)
-      Defaults.emplace(Names[N], Values.size() == Names.size() && Names.size() > 1 ? Values[N]
-                                                                                 : Default);
+    for (size_t N = 0; N < Names.size(); ++N) {
+      kernel::ParamDoc D;
+      D.DefaultText =
+          Values.size() == Names.size() && Names.size() > 1 ? Values[N] : Default;
+      D.RangeText = cell(Cells, Cols.Range);
+      if (D.RangeText == "-")
+        D.RangeText.clear();
+      D.Text = cell(Cells, Cols.Text);
+      Rows.emplace(Names[N], std::move(D));
+    }
   }
-  return Defaults;
+  return Rows;
+}
+
+/// Text as a number, if all of it is one.
+std::optional<double> number(std::string Text) {
+  Text = trim(Text);
+  if (Text.empty())
+    return std::nullopt;
+  char *End = nullptr;
+  double V = std::strtod(Text.c_str(), &End);
+  if (End != Text.c_str() + Text.size() || !std::isfinite(V))
+    return std::nullopt;
+  return V;
+}
+
+/// A default as written ("(0.7, 0.3, 0.2)", "0.8 gray", "-1, -1, -1", "0 (color 0.5)") as a
+/// value of type T: the numbers it starts with, one per component or one for all; empty when
+/// it is not that (a word, a count that does not fit, a fraction for an int, an array).
+std::vector<double> readDefault(const std::string &Text, const gr::ValueType &T) {
+  if (T.IsGlobalArray || T.Base == gr::BaseType::Sampler)
+    return {};
+  const size_t Width = gr::componentCount(T.Base);
+  std::string Flat = Text;
+  for (char &C : Flat)
+    if (C == '(' || C == ')' || C == ',')
+      C = ' ';
+  std::vector<double> Values;
+  size_t I = 0;
+  while ((I = Flat.find_first_not_of(" \t", I)) != std::string::npos) {
+    size_t E = std::min(Flat.find_first_of(" \t", I), Flat.size());
+    std::optional<double> V = number(Flat.substr(I, E - I));
+    if (!V)
+      break; // "gray", "color 0.5": words end the value
+    Values.push_back(*V);
+    I = E;
+  }
+  if (Values.size() == 1 && Width > 1)
+    Values.assign(Width, Values[0]);
+  if (Values.size() != Width)
+    return {};
+  if (T.Base == gr::BaseType::Int)
+    for (double V : Values)
+      if (V != std::floor(V) || std::fabs(V) > 2147483647.0)
+        return {};
+  return Values;
+}
+
+/// The bounds a range states: "0..1", "1..len" (a lower bound), "> 0", ">= 1", "0, 1, 2"
+/// (the smallest and largest); nothing for "any", "!= 0" and other words.
+void readRange(const std::string &Text, kernel::ParamDoc &D) {
+  size_t Dots = Text.find("..");
+  if (Dots != std::string::npos) {
+    D.Min = number(Text.substr(0, Dots));
+    D.Max = number(Text.substr(Dots + 2));
+    return;
+  }
+  std::string T = trim(Text);
+  for (const char *Op : {">=", ">", "<=", "<"})
+    if (T.rfind(Op, 0) == 0) {
+      (Op[0] == '>' ? D.Min : D.Max) = number(T.substr(std::strlen(Op)));
+      return;
+    }
+  std::vector<std::string> Items = splitValues(T);
+  if (Items.size() < 2)
+    return;
+  for (const std::string &Item : Items) {
+    std::optional<double> V = number(Item);
+    if (!V) {
+      D.Min = D.Max = std::nullopt;
+      return;
+    }
+    D.Min = std::min(D.Min.value_or(*V), *V);
+    D.Max = std::max(D.Max.value_or(*V), *V);
+  }
+}
+
+/// Param's row of Table (none: an empty row), its default read for its type.
+kernel::ParamDoc paramDoc(const std::map<std::string, kernel::ParamDoc> &Table,
+                          const gr::Param &P) {
+  auto It = Table.find(P.Name);
+  if (It == Table.end())
+    return {};
+  kernel::ParamDoc D = It->second;
+  D.Default = readDefault(D.DefaultText, P.Type);
+  if (!P.Type.IsGlobalArray && P.Type.Base != gr::BaseType::Sampler)
+    readRange(D.RangeText, D);
+  return D;
 }
 
 /// The functions File defines that its opening comment names, in order of definition.
@@ -243,45 +392,105 @@ gr::SignatureMap textureSignatures(const LibraryFile &F) {
 
 } // namespace
 
+namespace {
+
+/// A function's parameters and their rows, as --list-nodes --json writes them (the fields of
+/// layout.json's functions[].params[].doc, docs/abi.md).
+nlohmann::ordered_json paramJson(const gr::Param &P, const kernel::ParamDoc &D) {
+  nlohmann::ordered_json J = {{"name", P.Name}, {"type", gr::spelling(P.Type)}};
+  if (!D.Default.empty())
+    J["default"] = D.Default;
+  if (!D.DefaultText.empty())
+    J["defaultText"] = D.DefaultText;
+  if (!D.RangeText.empty())
+    J["range"] = D.RangeText;
+  if (D.Min)
+    J["min"] = *D.Min;
+  if (D.Max)
+    J["max"] = *D.Max;
+  if (!D.Text.empty())
+    J["text"] = D.Text;
+  return J;
+}
+
+} // namespace
+
 bool listNodes(const std::vector<std::string> &Files, llvm::raw_ostream &OS,
-               llvm::raw_ostream &Diags) {
+               llvm::raw_ostream &Diags, bool Json) {
   std::vector<LibraryFile> Scanned;
   if (!scanFiles(Files, Scanned, Diags))
     return false;
+  nlohmann::ordered_json JsonFiles = nlohmann::ordered_json::array();
   for (const LibraryFile &F : Scanned) {
     gr::SignatureMap Sigs = textureSignatures(F);
-    std::map<std::string, std::string> Defaults = tableDefaults(F.Comment);
-    OS << F.Path << ":\n";
+    std::map<std::string, kernel::ParamDoc> Table = parameterTable(F.Comment);
+    nlohmann::ordered_json Functions = nlohmann::ordered_json::array();
+    if (!Json)
+      OS << F.Path << ":\n";
     unsigned Listed = 0;
     for (const std::string &Name : F.Documented) {
       auto It = Sigs.find(Name);
       if (It == Sigs.end())
         continue;
       const gr::FunctionSignature &Sig = It->second;
+      ++Listed;
+      if (Json) {
+        nlohmann::ordered_json Params = nlohmann::ordered_json::array();
+        for (const gr::Param &P : Sig.Params)
+          Params.push_back(paramJson(P, paramDoc(Table, P)));
+        Functions.push_back(
+            {{"name", Name}, {"return", gr::spelling(Sig.Return)}, {"params", Params}});
+        continue;
+      }
       OS << "  " << gr::spelling(Sig.Return) << " " << Name << "(";
       for (size_t P = 0; P < Sig.Params.size(); ++P) {
         const gr::Param &Param = Sig.Params[P];
         OS << (P ? ", " : "") << gr::spelling(Param.Type) << " " << Param.Name;
-        if (auto D = Defaults.find(Param.Name); D != Defaults.end())
-          OS << " = " << D->second;
+        if (auto D = Table.find(Param.Name); D != Table.end() && !D->second.DefaultText.empty())
+          OS << " = " << D->second.DefaultText;
       }
       OS << ")\n";
-      ++Listed;
     }
-    if (!Listed)
+    if (Json)
+      JsonFiles.push_back({{"file", F.Path}, {"functions", Functions}});
+    else if (!Listed)
       OS << "  (no documented texture function)\n";
   }
+  if (Json)
+    OS << nlohmann::ordered_json{{"files", JsonFiles}}.dump(1, ' ', false,
+                                                            nlohmann::json::error_handler_t::replace)
+       << "\n";
   return true;
 }
 
-int listNodesCommand(const std::vector<std::string> &Files) {
+std::map<std::string, std::vector<kernel::ParamDoc>>
+parameterDocs(const gr::SignatureMap &Sigs) {
+  std::map<std::string, std::map<std::string, kernel::ParamDoc>> Tables; // by file
+  std::map<std::string, std::vector<kernel::ParamDoc>> Docs;
+  for (const auto &[Name, Sig] : Sigs) {
+    auto T = Tables.find(Sig.File);
+    if (T == Tables.end()) {
+      std::string Text, Why;
+      std::map<std::string, kernel::ParamDoc> Table;
+      if (texcc::readRegularFile(Sig.File, Text, Why))
+        Table = parameterTable(openingComment(Text));
+      T = Tables.emplace(Sig.File, std::move(Table)).first;
+    }
+    std::vector<kernel::ParamDoc> &Out = Docs[Name];
+    for (const gr::Param &P : Sig.Params)
+      Out.push_back(paramDoc(T->second, P));
+  }
+  return Docs;
+}
+
+int listNodesCommand(const std::vector<std::string> &Files, bool Json) {
   std::vector<std::string> List = Files.empty() ? libraryFiles(libraryDir()) : Files;
   if (List.empty()) {
     llvm::errs() << "texcc: error: no texture files in the library '" << libraryDir()
                  << "' (set TEXCC_LIBRARY_DIR)\n";
     return 1;
   }
-  return listNodes(List, llvm::outs(), llvm::errs()) ? 0 : 1;
+  return listNodes(List, llvm::outs(), llvm::errs(), Json) ? 0 : 1;
 }
 
 std::map<std::string, std::string> libraryTextureFiles(const std::string &Dir) {

@@ -40,7 +40,8 @@ kernel::FunctionLayout functionLayout(unsigned Id, const FunctionSignature &Sig)
   std::vector<uint32_t> Offsets = parameterOffsets(Sig, F.BlockSize);
   for (size_t I = 0; I < Sig.Params.size(); ++I) {
     const Param &P = Sig.Params[I];
-    F.Params.push_back({P.Name, spelling(P.Type), sizeOf(P.Type), alignOf(P.Type), Offsets[I]});
+    F.Params.push_back(
+        {P.Name, spelling(P.Type), sizeOf(P.Type), alignOf(P.Type), Offsets[I], {}});
   }
   F.Id = Id;
   F.Name = Sig.Name;

@@ -21,9 +21,13 @@ bool BsdfInput::operator==(const BsdfInput &O) const {
 bool Bsdf::operator==(const Bsdf &O) const {
   return std::tie(Type, Inputs, Children) == std::tie(O.Type, O.Inputs, O.Children);
 }
+bool ParamDoc::operator==(const ParamDoc &O) const {
+  return std::tie(DefaultText, Default, RangeText, Min, Max, Text) ==
+         std::tie(O.DefaultText, O.Default, O.RangeText, O.Min, O.Max, O.Text);
+}
 bool ParamLayout::operator==(const ParamLayout &O) const {
-  return std::tie(Name, Type, Size, Align, Offset) ==
-         std::tie(O.Name, O.Type, O.Size, O.Align, O.Offset);
+  return std::tie(Name, Type, Size, Align, Offset, Doc) ==
+         std::tie(O.Name, O.Type, O.Size, O.Align, O.Offset, O.Doc);
 }
 bool HoistedLayout::operator==(const HoistedLayout &O) const {
   return std::tie(Name, Type, Size, Offset) == std::tie(O.Name, O.Type, O.Size, O.Offset);

@@ -76,10 +76,31 @@ OJson capabilitiesJson(const Capabilities &C) {
           {"outputsEntry", C.OutputsEntry}};
 }
 
+/// A parameter's table row: only the cells it has.
+OJson paramDocJson(const ParamDoc &D) {
+  OJson J = OJson::object();
+  if (!D.DefaultText.empty())
+    J["defaultText"] = D.DefaultText;
+  if (!D.Default.empty())
+    J["default"] = D.Default;
+  if (!D.RangeText.empty())
+    J["range"] = D.RangeText;
+  if (D.Min)
+    J["min"] = *D.Min;
+  if (D.Max)
+    J["max"] = *D.Max;
+  if (!D.Text.empty())
+    J["text"] = D.Text;
+  return J;
+}
+
 OJson functionJson(const FunctionLayout &F) {
   OJson Params = arrayOf(F.Params, [](const ParamLayout &P) -> OJson {
-    return {{"name", P.Name}, {"type", P.Type}, {"size", P.Size}, {"align", P.Align},
-            {"offset", P.Offset}};
+    OJson J = {{"name", P.Name}, {"type", P.Type}, {"size", P.Size}, {"align", P.Align},
+               {"offset", P.Offset}};
+    if (!P.Doc.empty())
+      J["doc"] = paramDocJson(P.Doc);
+    return J;
   });
   OJson J = {{"id", F.Id},
              {"name", F.Name},

@@ -7,6 +7,7 @@
 // ABI (entry points, arguments, args.bin) is docs/abi.md; the modes are docs/modes.md.
 
 #include "texcc/Graph/Compile.h"
+#include "texcc/Kernel/Manifest.h"
 
 #include <optional>
 #include <set>
@@ -59,6 +60,10 @@ struct CodegenOptions {
   /// mode, -I made absolute, -D, the limits, --no-hoist ...), which a live edit's regeneration
   /// passes again so that the new kernel is made the way this one was (docs/abi.md).
   std::vector<std::string> CompileOptions;
+  /// layout.json functions[].params[].doc: per texture function, its parameters' rows of the
+  /// parameter table in its file's opening comment (frontend::parameterDocs), in parameter
+  /// order; what front ends show (docs/abi.md).
+  std::map<std::string, std::vector<kernel::ParamDoc>> ParamDocs;
 };
 
 /// The entry points every mode's kernel defines (docs/abi.md).
