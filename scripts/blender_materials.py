@@ -178,7 +178,7 @@ class MaterialTranslator:
         if source is None:
             return self.socket_value_unlinked(socket)
         if source.node is None:  # an unlinked socket of a group: its value
-            with self.inside(source.path[:-1] if source.path else []):
+            with self.inside(source.path):  # the group node's own path
                 value = self.socket_value_unlinked(source.out)
             return self.convert(value, source.out.type, want, None, None)
         self.prepare(source)
