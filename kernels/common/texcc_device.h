@@ -182,6 +182,14 @@ TEXCC_CHECKED_READ(uint3)
 TEXCC_CHECKED_READ(uint4)
 #undef TEXCC_CHECKED_READ
 
+/* texcc turns a subscript `a[i]` of a private (or __constant) array of N elements whose index
+ * it cannot prove in range into `a[texcc_index(texcc_ctx, (i), Nu, __LINE__)]`: out of range
+ * the index is 0 (a read reads, a write writes, the first element) and the fault is kept as
+ * for a __global read. */
+static inline long texcc_index(const TexccCtx *c, long i, uint n, int line) {
+  return texcc_index_ok(c, i, n, line) ? i : 0;
+}
+
 /* At the end of the kernel: the work-item's fault, if any, into the fault record (a loop past
  * its budget first: its out-of-range reads may be a consequence). */
 static inline void texcc_report_fault(const TexccCtx *c) {

@@ -453,6 +453,10 @@ TEXCC_CHECKED_READ(uint2)
 TEXCC_CHECKED_READ(uint3)
 TEXCC_CHECKED_READ(uint4)
 #undef TEXCC_CHECKED_READ
+// A private array's subscript that texcc cannot prove in range (texcc_device.h).
+inline long long texcc_index(const TexccCtx *c, long long i, uint n, int line) {
+  return texcc_index_ok(c, i, n, line) ? i : 0;
+}
 
 // A loop past its budget first: its out-of-range reads may be a consequence.
 inline void TexccGuard::report() {

@@ -556,6 +556,89 @@ static std::string lengthName(StringRef Param) { return "texcc_n_" + Param.str()
 void ArrayBounds::registerMatchers(MatchFinder &Finder) {
   Finder.addMatcher(functionDecl().bind("fn"), this);
   Finder.addMatcher(declRefExpr(to(parmVarDecl().bind("param"))).bind("ref"), this);
+  Finder.addMatcher(
+      arraySubscriptExpr(forFunction(functionDecl().bind("subscriptFn"))).bind("subscript"), this);
+}
+
+/// The values the counter V of a constant `for` (constantTripCount) takes in its body, when S is
+/// in that body: [first, last]; std::nullopt when S is not in the body of such a loop of V.
+static std::optional<std::pair<int64_t, int64_t>> counterRange(const Stmt *S, const VarDecl *V,
+                                                                ASTContext &Ctx) {
+  const Stmt *Child = S;
+  for (;;) {
+    auto Parents = Ctx.getParents(*Child);
+    if (Parents.empty())
+      return std::nullopt;
+    const Stmt *P = Parents[0].get<Stmt>();
+    if (!P)
+      return std::nullopt;
+    if (const auto *F = dyn_cast<ForStmt>(P)) {
+      const auto *Init = dyn_cast_or_null<DeclStmt>(F->getInit());
+      if (Init && Init->isSingleDecl() && Init->getSingleDecl() == V) {
+        if (F->getBody() != Child)
+          return std::nullopt;
+        std::optional<uint64_t> N = constantTripCount(F, Ctx);
+        Expr::EvalResult R;
+        if (!N || !V->getInit() || !V->getInit()->EvaluateAsInt(R, Ctx))
+          return std::nullopt;
+        const int64_t A = R.Val.getInt().getExtValue();
+        if (*N == 0)
+          return std::make_pair(int64_t(0), int64_t(0)); // the body never runs
+        const auto *Inc = cast<UnaryOperator>(F->getInc());
+        return Inc->isIncrementOp() ? std::make_pair(A, A + int64_t(*N) - 1)
+                                    : std::make_pair(A - int64_t(*N) + 1, A);
+      }
+    }
+    Child = P;
+  }
+}
+
+/// Whether the index I of an array of N elements is within bounds at compile time: a constant,
+/// or the counter of a constant `for` around it whose values all are.
+static bool provenInRange(const Expr *I, uint64_t N, const ArraySubscriptExpr *E,
+                          ASTContext &Ctx) {
+  Expr::EvalResult R;
+  if (!I->isValueDependent() && I->EvaluateAsInt(R, Ctx)) {
+    const llvm::APSInt &V = R.Val.getInt();
+    return V.isNonNegative() && V.getActiveBits() <= 63 && uint64_t(V.getExtValue()) < N;
+  }
+  const auto *Ref = dyn_cast<DeclRefExpr>(I->IgnoreParenImpCasts());
+  const auto *V = Ref ? dyn_cast<VarDecl>(Ref->getDecl()) : nullptr;
+  if (!V)
+    return false;
+  std::optional<std::pair<int64_t, int64_t>> Range = counterRange(E, V, Ctx);
+  return Range && Range->first >= 0 && uint64_t(Range->second) < N;
+}
+
+/// A subscript of a private (or __constant) array of N elements, `a[i]`, whose index is not
+/// proven in range becomes `a[texcc_index(texcc_ctx, (i), N, __LINE__)]` (texcc_device.h): an
+/// index out of range is 0 and a fault, reported as a __global read's is. Reads and writes alike
+/// (an out-of-range private write was a SIGSEGV or a silent overwrite of another variable).
+static void checkArraySubscript(const ArraySubscriptExpr *E, FileContext &FC, ASTContext &Ctx) {
+  const Expr *Base = E->getBase()->IgnoreParenImpCasts();
+  const auto *Array = Ctx.getAsConstantArrayType(Base->getType());
+  if (!Array || E->getBase() != E->getLHS())
+    return; // a pointer (the __global arrays: ArrayBounds::checkUse) or `i[a]`
+  const uint64_t N = Array->getSize().getZExtValue();
+  if (provenInRange(E->getIdx(), N, E, Ctx))
+    return;
+  DiagnosticsEngine &DE = Ctx.getDiagnostics();
+  const SourceLocation RSquare = E->getRBracketLoc();
+  const SourceLocation BaseEnd = E->getBase()->getEndLoc();
+  const LangOptions &LO = Ctx.getLangOpts();
+  llvm::Optional<Token> LSquare =
+      BaseEnd.isFileID() ? Lexer::findNextToken(BaseEnd, FC.SM, LO) : llvm::None;
+  if (!LSquare || LSquare->isNot(tok::l_square) || !RSquare.isFileID() ||
+      FC.SM.getFileID(RSquare) != FC.SM.getFileID(LSquare->getLocation())) {
+    unsigned Id = DE.getCustomDiagID(DiagnosticsEngine::Error,
+                                     "cannot bounds-check this index of a %0-element array: its "
+                                     "brackets come from a macro; write the subscript in one "
+                                     "place, or index with a constant");
+    DE.Report(E->getExprLoc(), Id) << std::to_string(N);
+    return;
+  }
+  FC.Edits.replaceToken(LSquare->getLocation(), "[texcc_index(texcc_ctx, (");
+  FC.Edits.replaceToken(RSquare, "), " + std::to_string(N) + "u, __LINE__)]");
 }
 
 void ArrayBounds::refuse(SourceLocation Loc, StringRef Name, StringRef Why) {
@@ -566,6 +649,11 @@ void ArrayBounds::refuse(SourceLocation Loc, StringRef Name, StringRef Why) {
 }
 
 void ArrayBounds::run(const MatchFinder::MatchResult &Result) {
+  if (const auto *E = Result.Nodes.getNodeAs<ArraySubscriptExpr>("subscript")) {
+    if (FC.isUserFunction(Result.Nodes.getNodeAs<FunctionDecl>("subscriptFn")))
+      checkArraySubscript(E, FC, *Result.Context);
+    return;
+  }
   if (const auto *Ref = Result.Nodes.getNodeAs<DeclRefExpr>("ref")) {
     const auto *P = Result.Nodes.getNodeAs<ParmVarDecl>("param");
     const auto *Fn = dyn_cast_or_null<FunctionDecl>(P->getDeclContext());
