@@ -34,6 +34,7 @@ static unsigned char *zlibCompress(unsigned char *Data, int Len, int *OutLen, in
 #include <tinyexr.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cerrno>
@@ -76,12 +77,17 @@ static bool stbiOutOfMemory() {
   return Why == "outofmem" || Why == "Out of memory";
 }
 
-static ImageRGBA readTexture(const std::string &Path);
+static ImageRGBA readTexture(const std::string &Path, const std::string &ColorSpace);
 static ImageRGBA readExr(const std::string &Path);
 
-ImageRGBA loadTexture(const std::string &Path) {
+const std::vector<std::string> &textureColorSpaces() {
+  static const std::vector<std::string> Names = {"sRGB", "Linear Rec.709", "Non-Color"};
+  return Names;
+}
+
+ImageRGBA loadTexture(const std::string &Path, const std::string &ColorSpace) {
   const std::string Step = "reading image '" + Path + "'";
-  return texcc::whileAllocating(Step.c_str(), [&] { return readTexture(Path); });
+  return texcc::whileAllocating(Step.c_str(), [&] { return readTexture(Path, ColorSpace); });
 }
 
 ImageRGBA loadExr(const std::string &Path) {
@@ -89,11 +95,24 @@ ImageRGBA loadExr(const std::string &Path) {
   return texcc::whileAllocating(Step.c_str(), [&] { return readExr(Path); });
 }
 
-static ImageRGBA readTexture(const std::string &Path) {
-  checkImageFile(Path, "image");
+static bool hasExrExtension(const std::string &Path) {
+  std::string Ext = std::filesystem::path(Path).extension().string();
+  for (char &C : Ext)
+    C = char(std::tolower(static_cast<unsigned char>(C)));
+  return Ext == ".exr";
+}
+
+/// The file's values as stored (8- and 16-bit normalised to 0..1, float as is), RGBA; Float
+/// tells whether the file holds floats (EXR, Radiance HDR): Blender's default colour space of
+/// those is linear, of the others sRGB.
+static ImageRGBA readTexels(const std::string &Path, bool &Float, bool &Bytes) {
   ImageRGBA Img;
   int N = 0;
-  if (stbi_is_hdr(Path.c_str())) {
+  Bytes = false;
+  Float = hasExrExtension(Path) || stbi_is_hdr(Path.c_str());
+  if (hasExrExtension(Path))
+    return readExr(Path);
+  if (Float) {
     float *D = stbi_loadf(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
     if (!D && stbiOutOfMemory())
       throw std::bad_alloc(); // named by loadTexture's step
@@ -103,23 +122,55 @@ static ImageRGBA readTexture(const std::string &Path) {
     stbi_image_free(D);
     return Img;
   }
+  if (stbi_is_16_bit(Path.c_str())) {
+    stbi_us *D = stbi_load_16(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
+    if (!D && stbiOutOfMemory())
+      throw std::bad_alloc();
+    if (!D)
+      throw Error(Path + ": cannot load image: " + stbi_failure_reason());
+    size_t Count = size_t(Img.Width) * Img.Height * 4;
+    Img.Pixels.resize(Count);
+    for (size_t I = 0; I < Count; ++I)
+      Img.Pixels[I] = D[I] / 65535.0f;
+    stbi_image_free(D);
+    return Img;
+  }
   unsigned char *D = stbi_load(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
   if (!D && stbiOutOfMemory())
     throw std::bad_alloc(); // named by loadTexture's step
   if (!D)
     throw Error(Path + ": cannot load image: " + stbi_failure_reason());
-  // A lookup table: 256 pow() calls instead of one per texel.
+  Bytes = true;
+  size_t Count = size_t(Img.Width) * Img.Height * 4;
+  Img.Pixels.resize(Count);
+  for (size_t I = 0; I < Count; ++I)
+    Img.Pixels[I] = D[I] / 255.0f;
+  stbi_image_free(D);
+  return Img;
+}
+
+static ImageRGBA readTexture(const std::string &Path, const std::string &ColorSpace) {
+  checkImageFile(Path, "image");
+  const auto &Known = textureColorSpaces();
+  if (!ColorSpace.empty() && std::find(Known.begin(), Known.end(), ColorSpace) == Known.end())
+    throw Error(Path + ": unknown colour space '" + ColorSpace +
+                "' (expected 'sRGB', 'Linear Rec.709' or 'Non-Color')");
+  bool Float = false, Bytes = false;
+  ImageRGBA Img = readTexels(Path, Float, Bytes);
+  Img.ColorSpace = !ColorSpace.empty() ? ColorSpace : Float ? "Linear Rec.709" : "sRGB";
+  if (Img.ColorSpace != "sRGB")
+    return Img;
+  // sRGB-encoded colour (alpha stays linear) to linear, as Blender decodes it: negative values
+  // are 0. 8-bit files through a table: 256 pow() calls instead of one per texel.
   float Lut[256];
   for (int I = 0; I < 256; ++I)
     Lut[I] = srgbToLinear(I / 255.0f);
   size_t Count = size_t(Img.Width) * Img.Height;
-  Img.Pixels.resize(Count * 4);
-  for (size_t I = 0; I < Count; ++I) {
-    for (int C = 0; C < 3; ++C)
-      Img.Pixels[4 * I + C] = Lut[D[4 * I + C]];
-    Img.Pixels[4 * I + 3] = D[4 * I + 3] / 255.0f;
-  }
-  stbi_image_free(D);
+  for (size_t I = 0; I < Count; ++I)
+    for (int C = 0; C < 3; ++C) {
+      float &V = Img.Pixels[4 * I + C];
+      V = Bytes ? Lut[std::lround(V * 255.0f)] : V <= 0.0f ? 0.0f : srgbToLinear(V);
+    }
   return Img;
 }
 

@@ -150,7 +150,8 @@ Layout loadLayout(const std::string &OutDir) {
   L.Settings = M.Settings;
   for (const texcc::kernel::ImageLayout &I : M.Images) {
     fs::path P(I.Path);
-    L.Images.push_back({I.Name, (P.is_absolute() ? P : fs::path(OutDir) / P).string()});
+    L.Images.push_back(
+        {I.Name, (P.is_absolute() ? P : fs::path(OutDir) / P).string(), I.ColorSpace});
   }
   // Which nodes read AO (their function's call tree, or an argument), through the nodes they
   // depend on: a material whose outputs do not depend on AO traces no AO rays.

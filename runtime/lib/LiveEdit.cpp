@@ -161,8 +161,13 @@ json graphJson(const texcc::graph::Graph &G) {
   J["sources"] = G.Sources;
   if (!G.Images.empty()) {
     json Images = json::object();
-    for (const auto &[Name, Path] : G.Images)
-      Images[Name] = Path;
+    for (const auto &[Name, Path] : G.Images) {
+      auto Cs = G.ImageColorSpaces.find(Name);
+      if (Cs == G.ImageColorSpaces.end())
+        Images[Name] = Path;
+      else
+        Images[Name] = json{{"path", Path}, {"colorspace", Cs->second}};
+    }
     J["images"] = Images;
   }
   json Nodes = json::array();

@@ -190,8 +190,11 @@ void Renderer::uploadLayoutData() {
   std::vector<cl_float4> Texels;
   std::vector<TexccImageInfo> Infos;
   for (const LayoutImage &I : Lay.Images) {
-    ImageRGBA Img = loadTexture(I.Path);
-    TexccImageInfo Info{int(Texels.size()), Img.Width, Img.Height, 0};
+    ImageRGBA Img = loadTexture(I.Path, I.ColorSpace);
+    const int Flags = Img.ColorSpace == "sRGB"        ? TEXCC_IMAGE_SRGB
+                      : Img.ColorSpace == "Non-Color" ? TEXCC_IMAGE_DATA
+                                                      : 0;
+    TexccImageInfo Info{int(Texels.size()), Img.Width, Img.Height, Flags};
     Infos.push_back(Info);
     for (size_t P = 0; P < Img.Pixels.size(); P += 4)
       Texels.push_back({{Img.Pixels[P], Img.Pixels[P + 1], Img.Pixels[P + 2], Img.Pixels[P + 3]}});

@@ -13,10 +13,18 @@ namespace texrender {
 struct ImageRGBA {
   int Width = 0, Height = 0;
   std::vector<float> Pixels; // RGBA, row-major, row 0 at the top
+  std::string ColorSpace;    // loadTexture: the colour space the file was read in
 };
 
-/// Loads a texture: 8-bit images are sRGB-decoded (alpha stays linear); .hdr stays linear.
-ImageRGBA loadTexture(const std::string &Path);
+/// The colour spaces of a texture, as Blender names them: "sRGB" (colour decoded to linear,
+/// alpha as is), "Linear Rec.709" (values as stored) and "Non-Color" (values as stored: data,
+/// never premultiplied by alpha).
+const std::vector<std::string> &textureColorSpaces();
+/// Loads a texture (8- or 16-bit PNG, JPEG, BMP, TGA, Radiance .hdr, float .exr) to linear
+/// RGBA floats: 8-bit values / 255, 16-bit / 65535, floats as stored, then decoded from sRGB
+/// where ColorSpace is "sRGB". An empty ColorSpace is Blender's default for the file: sRGB for
+/// 8- and 16-bit files, "Linear Rec.709" for .exr and .hdr. Another name is an Error.
+ImageRGBA loadTexture(const std::string &Path, const std::string &ColorSpace = "");
 /// Loads an EXR (RGBA float).
 ImageRGBA loadExr(const std::string &Path);
 

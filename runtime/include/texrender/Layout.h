@@ -39,6 +39,7 @@ struct LayoutMaterial {
 struct LayoutImage {
   std::string Name;
   std::string Path; // resolved
+  std::string ColorSpace; // graph.json's "colorspace"; empty: the file's default
 };
 
 /// What the kernel of a layout can absorb without being made again: layout.json "capabilities",

@@ -134,9 +134,12 @@ kernel::Manifest layoutManifest(const CompiledGraph &CG) {
   M.RecordsOffset = CG.RecordsOffset;
   M.Attributes = CG.Attributes;
   M.Settings = CG.Settings;
-  for (size_t I = 0; I < CG.Images.size(); ++I)
+  for (size_t I = 0; I < CG.Images.size(); ++I) {
+    auto Cs = CG.ImageColorSpaces.find(CG.Images[I].first);
     M.Images.push_back({CG.Images[I].first, imagePath(CG.GraphPath, CG.Images[I].second),
-                        static_cast<unsigned>(I)});
+                        static_cast<unsigned>(I),
+                        Cs == CG.ImageColorSpaces.end() ? std::string() : Cs->second});
+  }
   for (size_t Id = 0; Id < CG.FunctionsById.size(); ++Id) {
     auto It = CG.Signatures.find(CG.FunctionsById[Id]);
     if (It != CG.Signatures.end())

@@ -6,11 +6,17 @@
 
 #include "Json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <unordered_map>
 
 namespace texcc::graph {
+
+const std::vector<std::string> &imageColorSpaces() {
+  static const std::vector<std::string> Names = {"sRGB", "Linear Rec.709", "Non-Color"};
+  return Names;
+}
 
 const Node *Graph::findNode(const std::string &Id) const {
   for (const Node &N : Nodes)
@@ -441,12 +447,45 @@ private:
     bool Ok = true;
     for (const json::Member &M : V.Members) {
       std::string P = "/images/" + pointerSegment(M.Key);
-      if (expectKind(*M.Val, Value::Kind::String, P, "image '" + M.Key + "'",
-                     "a string (a file path)"))
+      const std::string What = "image '" + M.Key + "'";
+      if (M.Val->K == Value::Kind::Object) {
+        Ok &= parseImageObject(*M.Val, P, What, M.Key, G);
+        continue;
+      }
+      if (expectKind(*M.Val, Value::Kind::String, P, What,
+                     "a string (a file path) or an object with 'path' and 'colorspace'"))
         G.Images.emplace_back(M.Key, M.Val->Text);
       else
         Ok = false;
     }
+    return Ok;
+  }
+
+  /// {"path": "...", "colorspace": "sRGB" | "Linear Rec.709" | "Non-Color"}.
+  bool parseImageObject(const Value &V, const std::string &P, const std::string &What,
+                        const std::string &Name, Graph &G) {
+    bool Ok = checkKeys(V, P, What, {"path", "colorspace"});
+    const Value *Path = require(V, "path", P, What);
+    if (!Path || !expectKind(*Path, Value::Kind::String, P + "/path", What + ": 'path'",
+                             "a string (a file path)"))
+      return false;
+    if (const Value *C = V.get("colorspace")) {
+      if (!expectKind(*C, Value::Kind::String, P + "/colorspace", What + ": 'colorspace'",
+                      "a string"))
+        return false;
+      const std::vector<std::string> &Known = imageColorSpaces();
+      if (std::find(Known.begin(), Known.end(), C->Text) == Known.end()) {
+        std::string Msg = What + ": unknown colorspace '" + C->Text + "'; expected " +
+                          json::quotedList(Known);
+        std::string Near = json::closestMatch(C->Text, Known);
+        if (!Near.empty())
+          Msg += "; did you mean '" + Near + "'?";
+        error(C->Loc, P + "/colorspace", Msg);
+        return false;
+      }
+      G.ImageColorSpaces[Name] = C->Text;
+    }
+    G.Images.emplace_back(Name, Path->Text);
     return Ok;
   }
 

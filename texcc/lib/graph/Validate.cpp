@@ -36,6 +36,7 @@ public:
     CG.GraphPath = G.Path;
     CG.Sources = G.Sources;
     CG.Images = G.Images;
+    CG.ImageColorSpaces = G.ImageColorSpaces;
     for (size_t I = 0; I < G.Nodes.size(); ++I)
       IndexOf[G.Nodes[I].Id] = static_cast<unsigned>(I);
     for (const Node &N : G.Nodes)

@@ -63,7 +63,8 @@ bool MaterialLayout::operator==(const MaterialLayout &O) const {
                                        O.Surface);
 }
 bool ImageLayout::operator==(const ImageLayout &O) const {
-  return std::tie(Name, Path, Index) == std::tie(O.Name, O.Path, O.Index);
+  return std::tie(Name, Path, Index, ColorSpace) ==
+         std::tie(O.Name, O.Path, O.Index, O.ColorSpace);
 }
 bool ShapeLayout::operator==(const ShapeLayout &O) const {
   return std::tie(Id, Materials) == std::tie(O.Id, O.Materials);

@@ -534,7 +534,8 @@ void readTop(const Json &J, Manifest &M) {
     const Json &Is = O.array("images");
     for (size_t I = 0; I < Is.size(); ++I) {
       Obj Im(Is[I], "/images/" + std::to_string(I));
-      M.Images.push_back({Im.str("name"), Im.str("path"), Im.u("index", static_cast<unsigned>(I))});
+      M.Images.push_back({Im.str("name"), Im.str("path"), Im.u("index", static_cast<unsigned>(I)),
+                          Im.str("colorspace", std::string())});
     }
   }
   if (O.has("functions")) {

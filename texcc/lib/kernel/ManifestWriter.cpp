@@ -183,7 +183,10 @@ std::string writeManifest(const Manifest &M) {
   J["attributes"] = M.Attributes;
   J["settings"] = M.Settings;
   J["images"] = arrayOf(M.Images, [](const ImageLayout &I) -> OJson {
-    return {{"name", I.Name}, {"path", I.Path}, {"index", I.Index}};
+    OJson J = {{"name", I.Name}, {"path", I.Path}, {"index", I.Index}};
+    if (!I.ColorSpace.empty())
+      J["colorspace"] = I.ColorSpace;
+    return J;
   });
   J["functions"] = arrayOf(M.Functions, functionJson);
   J["quickened"] = arrayOf(M.Quickened, [](const QuickenedLayout &Q) -> OJson {

@@ -165,6 +165,7 @@ struct CompiledGraph {
   std::string GraphPath;
   std::vector<std::string> Sources;
   std::vector<std::pair<std::string, std::string>> Images;  // index = image id
+  std::map<std::string, std::string> ImageColorSpaces;      // Graph::ImageColorSpaces
   /// Every function a node of the graph names, live or dead: the interpreter (interp mode,
   /// shape mode's fallback) has a switch case for each, so that a rewiring onto any node of
   /// the graph runs on the kernel it has. Inline, wavefront and shape code call only the

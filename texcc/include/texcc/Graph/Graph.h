@@ -65,10 +65,17 @@ struct Material {
   SourceLoc Loc;                             // the material's key in "materials"
 };
 
+/// The colour spaces an image may be read in, as Blender names them: "sRGB", "Linear Rec.709",
+/// "Non-Color" (graph.md "Images").
+const std::vector<std::string> &imageColorSpaces();
+
 struct Graph {
   std::string Path;                          // graph.json as given (for diagnostics)
   std::vector<std::string> Sources;          // "sources", relative to the graph's folder
   std::vector<std::pair<std::string, std::string>> Images;  // name -> path, file order
+  /// name -> colour space, for the images written as {"path", "colorspace"} with one (absent:
+  /// the file's default, sRGB for 8- and 16-bit files, linear for float ones).
+  std::map<std::string, std::string> ImageColorSpaces;
   std::vector<Node> Nodes;                   // file order
   std::vector<Material> Materials;           // file order
 

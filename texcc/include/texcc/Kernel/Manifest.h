@@ -159,6 +159,7 @@ struct MaterialLayout {
 struct ImageLayout {
   std::string Name, Path; // Path as written (absolute, or relative to the layout's folder)
   unsigned Index = 0;
+  std::string ColorSpace; // graph.json's "colorspace"; empty: the file's default
   bool operator==(const ImageLayout &O) const;
 };
 
