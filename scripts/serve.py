@@ -291,7 +291,7 @@ class Server:
         page, page_id, line, coalesced = owner
         if kind == "error":
             if page in self.pages:
-                page.send({"type": "error", "id": page_id,
+                page.send({"type": "error", "id": page_id, "coalesced": coalesced,
                            "message": str(event.get("message", ""))})
             return
         self.last_edit = (sid, page, page_id)
@@ -348,11 +348,15 @@ class Server:
     async def quit(self):
         if self.proc and self.proc.returncode is None:
             self.write_line("quit")
-            try:
-                await asyncio.wait_for(self.proc.wait(), 5)
-            except asyncio.TimeoutError:
-                self.proc.terminate()
-                await self.proc.wait()
+            for stop in (None, self.proc.terminate, self.proc.kill):
+                if stop:
+                    log(f"texrender does not end: {stop.__name__}")
+                    stop()
+                try:
+                    await asyncio.wait_for(self.proc.wait(), 5)
+                    return
+                except asyncio.TimeoutError:
+                    pass
 
 
 def is_loopback(listen):
@@ -450,6 +454,45 @@ async def serve_page(server, ws):
         pump.cancel()
 
 
+class IdleGuard(asyncio.Protocol):
+    """aiohttp's connection handler, closed once it has received nothing for IDLE seconds: a
+    connection opened and left silent, a request never finished, a keep-alive connection
+    forgotten. A page's WebSocket answers the server's pings (every idle_timeout seconds),
+    which keeps it open while the page lives."""
+
+    def __init__(self, inner, idle):
+        self.inner, self.idle = inner, idle
+        self.transport = self.timer = None
+
+    def arm(self):
+        if self.timer:
+            self.timer.cancel()
+        self.timer = asyncio.get_running_loop().call_later(self.idle, self.transport.close)
+
+    def connection_made(self, transport):
+        self.transport = transport
+        self.inner.connection_made(transport)
+        self.arm()
+
+    def data_received(self, data):
+        self.arm()
+        self.inner.data_received(data)
+
+    def eof_received(self):
+        return self.inner.eof_received()
+
+    def connection_lost(self, exc):
+        if self.timer:
+            self.timer.cancel()
+        self.inner.connection_lost(exc)
+
+    def pause_writing(self):
+        self.inner.pause_writing()
+
+    def resume_writing(self):
+        self.inner.resume_writing()
+
+
 def listening_socket(listen, port):
     family = socket.AF_INET6 if ":" in listen else socket.AF_INET
     sock = socket.socket(family, socket.SOCK_STREAM)
@@ -468,10 +511,12 @@ async def run(opts):
         token = None if is_loopback(opts.listen) else secrets.token_urlsafe(24)
         app = make_app(server, allowed_hosts(opts.listen, port, opts.allow_host), token,
                        opts.idle_timeout)
-        # keepalive_timeout: an HTTP connection idle this long between requests is closed.
+        # keepalive_timeout: an HTTP connection idle this long between requests is closed;
+        # IdleGuard: any connection that sends nothing for 3 ping intervals.
         runner = web.AppRunner(app, access_log=None, keepalive_timeout=opts.idle_timeout)
         await runner.setup()
-        await web.SockSite(runner, sock).start()
+        listener = await asyncio.get_running_loop().create_server(
+            lambda: IdleGuard(runner.server(), 3 * opts.idle_timeout), sock=sock)
         host = f"[{opts.listen}]" if ":" in opts.listen else opts.listen
         if opts.listen in ("0.0.0.0", "::"):
             host = "127.0.0.1"
@@ -495,6 +540,7 @@ async def run(opts):
         for page in list(server.pages):
             page.closed = True
             await page.ws.close(code=1001, message=b"the preview server ends")
+        listener.close()
         await runner.cleanup()
         # Ctrl-C in a terminal reaches texrender too: it ends with 130 after writing its image.
         if stop.is_set() or server.exit_code in (0, 130, 143):

@@ -141,10 +141,10 @@ def complete(spp, after_frames=0, edit=None):
                       and (edit is None or s["meta"].get("edit") == edit))
 
 
-def batch_equal(opts, render_args, setting, png):
+def batch_equal(opts, render_args, setting, png, extra=()):
     out = os.path.join(opts["work"], "batch.png")
-    subprocess.run([opts["renderer"]] + render_args + ["--quiet", "--set", setting, "-o", out],
-                   check=True)
+    subprocess.run([opts["renderer"]] + render_args + ["--quiet", "--set", setting] + list(extra)
+                   + ["-o", out], check=True)
     with open(out, "rb") as f:
         batch = decode_png(f.read())
     mine = decode_png(png)

@@ -391,8 +391,8 @@ async def case_fuzz(s, http):
             if msg.type == aiohttp.WSMsgType.TEXT:
                 data = json.loads(msg.data)
                 if data["type"] == "error":
-                    pending -= 1
-                    answered += 1
+                    pending -= 1 + data.get("coalesced", 0)
+                    answered += 1 + data.get("coalesced", 0)
                 elif data["type"] == "applied" and data["id"] is not None:
                     pending -= 1 + data["coalesced"]
                     answered += 1 + data["coalesced"]

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """A stand-in for `texrender ... --watch --control -o OUT` (docs/live.md, protocol B) for the
 browser preview's framing and safety tests, which need no renderer: it announces an edit
-schema of the graph next to the scene (graph.json: its nodes and arguments, types guessed
-from the values; the real texrender takes them from layout.json), accepts every control line
+schema of the graph next to the scene (graph.json: its nodes and arguments; each parameter's
+type, default, range and doc from `$SERVE_FAKE_TEXCC --list-nodes --json` on its sources when
+that is set, else guessed from the values; the real texrender takes them from layout.json), accepts every control line
 (`ID set|rewire NODE.ARG=...`, split as texrender's parseEdit splits it: NODE.ARG at the last
 dot) with an "applied" event carrying node, arg and the value or source (except a rewire onto
 node 'o', refused with an "error" event as texrender refuses a type mismatch), and writes a
@@ -15,6 +16,7 @@ import json
 import os
 import select
 import struct
+import subprocess
 import sys
 import time
 import zlib
@@ -35,9 +37,23 @@ def emit(event):
     sys.stdout.flush()
 
 
-def schema_of(graph):
+def documented(graph, folder):
+    """{fn: {param: texcc's --list-nodes --json entry}} of the graph's sources, when
+    $SERVE_FAKE_TEXCC names texcc (the real texrender has these from layout.json)."""
+    texcc = os.environ.get("SERVE_FAKE_TEXCC")
+    if not texcc:
+        return {}
+    files = [os.path.join(folder, s) for s in graph["sources"]]
+    out = subprocess.run([texcc, "--list-nodes", "--json"] + files, stdout=subprocess.PIPE,
+                         check=True, text=True).stdout
+    return {fn["name"]: {p["name"]: p for p in fn["params"]}
+            for entry in json.loads(out)["files"] for fn in entry["functions"]}
+
+
+def schema_of(graph, folder):
     """A schema of the shape texrender sends (WatchSchema.cpp) for GRAPH's nodes."""
-    def input_of(name, arg):
+    docs = documented(graph, folder)
+    def input_of(fn, name, arg):
         put = {"name": name}
         if isinstance(arg, dict):
             put.update({k: arg[k] for k in ("node", "attr", "image") if k in arg})
@@ -46,9 +62,13 @@ def schema_of(graph):
             put.update(value=arg, type=f"float{len(arg)}" if len(arg) > 1 else "float")
         else:
             put.update(value=arg, type="int" if name == "octaves" else "float")
+        doc = docs.get(fn, {}).get(name, {})
+        put.update({k: v for k, v in doc.items() if k != "text"})
+        if "text" in doc:
+            put["doc"] = doc["text"]
         return put
     nodes = [{"id": n["id"], "fn": n["fn"], "file": "tex.cl",
-              "inputs": [input_of(k, v) for k, v in n.get("args", {}).items()]}
+              "inputs": [input_of(n["fn"], k, v) for k, v in n.get("args", {}).items()]}
              for n in graph["nodes"]]
     return {"nodes": nodes, "materials": {}}
 
@@ -56,13 +76,14 @@ def schema_of(graph):
 def main():
     args = sys.argv[1:]
     scene = args[0]
-    with open(os.path.join(os.path.dirname(os.path.abspath(scene)), "graph.json")) as f:
+    folder = os.path.dirname(os.path.abspath(scene))
+    with open(os.path.join(folder, "graph.json")) as f:
         graph = json.load(f)
     out = args[args.index("-o") + 1]
     log = os.environ.get("SERVE_FAKE_LOG")
     delay = float(os.environ.get("SERVE_FAKE_DELAY_MS", "0")) / 1000
     emit({"event": "ready", "graph": "graph.json", "sources": graph["sources"], "width": 2,
-          "height": 2, "schema": schema_of(graph)})
+          "height": 2, "schema": schema_of(graph, folder)})
     applied, spp = None, 0
     while True:
         ready, _, _ = select.select([sys.stdin], [], [], 0.05)

@@ -1,6 +1,7 @@
 """The preview page's controls in headless Chromium, against the fake texrender (no renderer,
-no OpenCL): what the page builds from the graph and the sources' doc comments, and what each
-control sends (read back from the fake's log of control lines).
+no OpenCL): what the page builds from the edit schema (types, ranges and defaults as texcc
+reads them from the sources' parameter tables), and what each control sends (read back from
+the fake's log of control lines).
 
   serve_page.py --texcc TEXCC --work DIR -- SCENE --textures TEX     (the rust example's graph)
 """
@@ -36,6 +37,7 @@ def main():
     opts = {head[i][2:]: head[i + 1] for i in range(0, len(head), 2)}
     log = os.path.join(opts["work"], "control.log")
     os.environ["SERVE_FAKE_LOG"] = log
+    os.environ["SERVE_FAKE_TEXCC"] = opts["texcc"]
     server, url = start_server(dict(opts, renderer=FAKE), render_args)
     page = None
     try:
