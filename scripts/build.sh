@@ -9,3 +9,4 @@ if [ ! -f "$build/build.ninja" ]; then
 fi
 jobs="${TEXCC_JOBS:-$(nproc)}"
 ninja -C "$build" -j "$jobs" >&2
+if [ -z "${TEXCC_NO_PREBUILD:-}" ]; then "$root/scripts/prebuild-kernels.sh" "$build" >&2; fi

@@ -56,8 +56,13 @@ typedef struct TexccCtx {
 #define TEXCC_CTX_ARG texcc_ctx
 /* Every user function and every evaluation helper is inlined into the kernel: a call left in
  * place costs a GPU backend registers and scratch around it (clang-15, gfx90a: scratches in
- * shape mode 51 VGPRs and 8 B of scratch with voronoiSearch called, 36 and 0 B inlined). */
+ * shape mode 51 VGPRs and 8 B of scratch with voronoiSearch called, 36 and 0 B inlined).
+ * texrender's first build of a kernel not in its program cache defines it as noinline (the
+ * "first" build, docs/runtime.md "Tiers"): PoCL then compiles each function once and vectorises
+ * nothing across work-items, 6-8x faster to build, slower per hit, the same values. */
+#ifndef TEXCC_FN
 #define TEXCC_FN __attribute__((always_inline))
+#endif
 
 /* Records a fault unless one was recorded before in this launch (one compare-exchange). */
 static inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, int detail,
@@ -345,6 +350,97 @@ static inline float4 texcc_tex2D(const TexccCtx *c, sam2D s, float2 uv) {
   float4 d = texcc_texel(c->texels, im, x0, y0 + 1);
   float4 e = texcc_texel(c->texels, im, x0 + 1, y0 + 1);
   return mix(mix(a, b, tx), mix(d, e, tx), ty);
+}
+
+/* Blender's extension of an integer texel coordinate: 0 Repeat, 1 Extend, 2 Clip (-1: outside,
+ * reads 0), 3 Mirror. */
+static inline int texcc_extend(int x, int n, int extension) {
+  if (extension == 1) return clamp(x, 0, n - 1);
+  if (extension == 2) return x < 0 || x >= n ? -1 : x;
+  if (extension == 3) {
+    const int m = abs(x + (x < 0 ? 1 : 0)) % (2 * n);
+    return m >= n ? 2 * n - m - 1 : m;
+  }
+  x = x % n;
+  return x < 0 ? x + n : x;
+}
+
+/* A texel as Cycles interpolates it: an sRGB image's colour re-encoded to sRGB (Cycles keeps
+ * such images encoded and decodes after interpolation), a colour image's alpha associated. */
+static inline float4 texcc_texel_filtered(__global const float4 *texels, TexccImageInfo im,
+                                          int x, int y) {
+  if (x < 0 || y < 0) return (float4)(0.0f);
+  float4 t = texels[im.offset + y * im.width + x];
+  if (im.flags & TEXCC_IMAGE_SRGB) {
+    float3 v = clamp(t.xyz, 0.0f, 1.0f);
+    t.xyz = select(1.055f * pow(v, (float3)(1.0f / 2.4f)) - 0.055f, 12.92f * v,
+                   isless(v, (float3)(0.0031308f)));
+  }
+  if (!(im.flags & TEXCC_IMAGE_DATA)) t.xyz *= t.w;
+  return t;
+}
+
+static inline float4 texcc_bspline(float t) {
+  const float s = 1.0f - t;
+  return (float4)(s * s * s, (3.0f * t * t * t - 6.0f * t * t + 4.0f),
+                  (-3.0f * t * t * t + 3.0f * t * t + 3.0f * t + 1.0f), t * t * t) / 6.0f;
+}
+
+/* tex2DFiltered(s, uv, interpolation, extension, straight) lowers to texcc_tex2DFiltered(
+ * texcc_ctx, ...): Blender's Image Texture lookup (uv as tex2D's, v = 0 at the top row).
+ * interpolation 0 Linear, 1 Closest, 2 Cubic (uniform cubic B-spline, as Cycles'); extension
+ * 0 Repeat, 1 Extend, 2 Clip (transparent black outside), 3 Mirror. A colour image (not
+ * Non-Color) is interpolated with alpha associated and, with straight != 0, divided by the
+ * interpolated alpha afterwards (Cycles does so when the node's Alpha output is used); an sRGB
+ * image is interpolated in sRGB and decoded after. Returns linear RGBA. */
+static inline float4 texcc_tex2DFiltered(const TexccCtx *c, sam2D s, float2 uv,
+                                         int interpolation, int extension, int straight) {
+  if (s < 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);
+  TexccImageInfo im = c->images[s];
+  if (im.width <= 0 || im.height <= 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);
+  float4 r;
+  if (interpolation == 1) {
+    const int x = texcc_extend((int)floor(uv.x * (float)im.width), im.width, extension);
+    const int y = texcc_extend((int)floor(uv.y * (float)im.height), im.height, extension);
+    r = texcc_texel_filtered(c->texels, im, x, y);
+  } else {
+    const float fx = uv.x * (float)im.width - 0.5f, fy = uv.y * (float)im.height - 0.5f;
+    const float x0f = floor(fx), y0f = floor(fy);
+    const float tx = fx - x0f, ty = fy - y0f;
+    const int x0 = (int)x0f, y0 = (int)y0f;
+    if (interpolation == 2) {
+      const float4 wx = texcc_bspline(tx), wy = texcc_bspline(ty);
+      const float wxs[4] = {wx.x, wx.y, wx.z, wx.w}, wys[4] = {wy.x, wy.y, wy.z, wy.w};
+      r = (float4)(0.0f);
+      for (int j = 0; j < 4; ++j) {
+        const int y = texcc_extend(y0 - 1 + j, im.height, extension);
+        float4 row = (float4)(0.0f);
+        for (int i = 0; i < 4; ++i)
+          row += wxs[i] * texcc_texel_filtered(c->texels, im,
+                                               texcc_extend(x0 - 1 + i, im.width, extension), y);
+        r += wys[j] * row;
+      }
+    } else {
+      const int xa = texcc_extend(x0, im.width, extension);
+      const int xb = texcc_extend(x0 + 1, im.width, extension);
+      const int ya = texcc_extend(y0, im.height, extension);
+      const int yb = texcc_extend(y0 + 1, im.height, extension);
+      r = mix(mix(texcc_texel_filtered(c->texels, im, xa, ya),
+                  texcc_texel_filtered(c->texels, im, xb, ya), tx),
+              mix(texcc_texel_filtered(c->texels, im, xa, yb),
+                  texcc_texel_filtered(c->texels, im, xb, yb), tx),
+              ty);
+    }
+  }
+  if (straight && !(im.flags & TEXCC_IMAGE_DATA) && r.w != 0.0f && r.w != 1.0f)
+    r.xyz /= r.w;
+  if (im.flags & TEXCC_IMAGE_SRGB) {
+    const float3 v = r.xyz;
+    r.xyz = select(pow((v + 0.055f) / 1.055f, (float3)(2.4f)), v / 12.92f,
+                   isless(v, (float3)(0.04045f)));
+    r.xyz = select(r.xyz, (float3)(0.0f), isless(v, (float3)(0.0f)));
+  }
+  return r;
 }
 
 #endif

@@ -167,33 +167,51 @@ std::string ClContext::cacheKey(const std::string &Source, const std::string &Op
   return hashHex(Source + '\0' + Options + '\0' + DeviceKey + '\0' + KeyExtra);
 }
 
+std::string ClContext::cachedBinary(const std::string &Key) const {
+  std::error_code Ec;
+  std::string Path = cachePath(Key);
+  if (!Path.empty() && fs::exists(Path, Ec))
+    return Path;
+  if (PrebuiltDir.empty())
+    return "";
+  Path = PrebuiltDir + "/" + Key + ".bin";
+  return fs::exists(Path, Ec) ? Path : "";
+}
+
 bool ClContext::isCached(const std::string &Source, const std::string &Options,
                          const std::string &KeyExtra) const {
-  std::string Path = cachePath(cacheKey(Source, Options, KeyExtra));
-  return !Path.empty() && fs::exists(Path);
+  return !cachedBinary(cacheKey(Source, Options, KeyExtra)).empty();
 }
 
 cl::Program ClContext::buildProgram(const std::string &Name, const std::string &Source,
                                     const std::string &Options, const std::string &KeyExtra,
-                                    bool Background) {
-  std::string Path = cachePath(cacheKey(Source, Options, KeyExtra));
-  if (!Path.empty() && fs::exists(Path)) {
+                                    bool Background,
+                                    const std::function<void(const cl::Program &)> &WarmUp) {
+  const std::string Key = cacheKey(Source, Options, KeyExtra);
+  if (std::string Cached = cachedBinary(Key); !Cached.empty()) {
     std::string Text, Why;
-    texcc::readRegularFile(Path, Text, Why); // unreadable: empty, built from source below
+    texcc::readRegularFile(Cached, Text, Why); // unreadable: empty, built from source below
     std::vector<unsigned char> Bin(Text.begin(), Text.end());
+    cl::Program P;
     try {
       cl::Program::Binaries Bins{Bin};
-      cl::Program P(Ctx, {Device}, Bins);
+      P = cl::Program(Ctx, {Device}, Bins);
       P.build({Device}, Options.c_str());
       ++CacheHits;
-      return P;
     } catch (const cl::Error &) {
-      // A stale or foreign binary: fall through to a build from source.
+      P = cl::Program(); // a stale or foreign binary: built from source below
+    }
+    if (P()) {
+      if (WarmUp)
+        WarmUp(P); // nothing to compile when the binary carries its work-group functions
+      return P;
     }
   }
   cl::Program P = buildFromSource(Name, Source, Options, Background);
-  if (!Path.empty())
-    storeBinary(P, Path);
+  if (WarmUp)
+    WarmUp(P);
+  if (std::string Path = cachePath(Key); !Path.empty())
+    storeBinary(P, Path); // after the warm-up: the binary carries the compiled launches
   return P;
 }
 
@@ -227,6 +245,35 @@ void ClContext::storeBinary(cl::Program &P, const std::string &Path) {
   } catch (const cl::Error &) {
     // The cache is an optimisation: a device without binaries still renders.
   }
+}
+
+void warmUpAllKernels(ClContext &Cl, const cl::Program &P) {
+  std::vector<cl::Kernel> Kernels;
+  try {
+    cl::Program(P).createKernels(&Kernels);
+  } catch (const cl::Error &) {
+    return;
+  }
+  cl::Buffer Dummy(Cl.context(), CL_MEM_READ_WRITE, 4096);
+  cl::CommandQueue Queue(Cl.context(), Cl.device());
+  for (cl::Kernel &K : Kernels) {
+    try {
+      const cl_uint Args = K.getInfo<CL_KERNEL_NUM_ARGS>();
+      for (cl_uint A = 0; A < Args; ++A) {
+        if (K.getArgInfo<CL_KERNEL_ARG_ADDRESS_QUALIFIER>(A) == CL_KERNEL_ARG_ADDRESS_PRIVATE) {
+          const cl_uint Zero = 0; // texrender's scalar kernel arguments are 4-byte int/uint/float
+          K.setArg(A, sizeof Zero, &Zero);
+        } else {
+          K.setArg(A, Dummy);
+        }
+      }
+      Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(64), cl::NDRange(64));
+      Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(LargeGridItems), cl::NDRange(64));
+    } catch (const cl::Error &) {
+      // No argument information (or an unusual argument): its first frame compiles it.
+    }
+  }
+  Queue.finish();
 }
 
 cl::Buffer ClContext::allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags) {

@@ -1,6 +1,7 @@
 #include "texrender/Renderer.h"
 #include "texrender/Error.h"
 #include "texrender/Image.h"
+#include "texrender/SlowStep.h"
 #include "texrender/TextureTiers.h"
 #include "texcc/Kernel/Attributes.h"
 
@@ -104,13 +105,31 @@ std::string kernelDirectory() {
               "TEXRENDER_KERNELS to the kernels folder");
 }
 
+bool quickFirstBuildDefault() {
+  const char *E = std::getenv("TEXRENDER_FIRST_BUILD");
+  return !(E && std::string(E) == "optimised");
+}
+
 Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
     : SceneDesc(S), Lay(L), Opts(O), Settings(S.Render), Epoch(steadySeconds()) {
   KernelDir = Opts.KernelDir.empty() ? kernelDirectory() : Opts.KernelDir;
-  Data = buildSceneData(S, L);
+  {
+    SlowStep Step("building the scene's acceleration structures");
+    Data = buildSceneData(S, L);
+  }
   Cl = std::make_unique<ClContext>(Opts.Device, Opts.CacheDir);
+  // scripts/build.sh prebuilds the fixed kernels into build/programs, beside build/kernels;
+  // $TEXRENDER_PREBUILT_DIR names another folder ("": none). --no-cache uses neither.
+  if (!Opts.CacheDir.empty()) {
+    const char *E = std::getenv("TEXRENDER_PREBUILT_DIR");
+    Cl->setPrebuiltDir(E ? std::string(E)
+                         : (fs::path(KernelDir).parent_path() / "programs").string());
+  }
   try {
-    buildFixedKernels();
+    {
+      SlowStep Step("building the path tracer's kernels");
+      buildFixedKernels();
+    }
     uploadScene();
     Tracer = makeTrace(Opts.Trace, TraceContext{*Cl, K, B, Data});
     Tiers = std::make_unique<TierManager>(
@@ -120,6 +139,7 @@ Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
           uploadLayoutData();
           return HasTextureWork;
         });
+    Tiers->setQuickFirstBuild(Opts.QuickFirstBuild);
     uploadLayoutData();
     Tiers->build(HasTextureWork);
   } catch (const cl::Error &E) {
@@ -139,7 +159,10 @@ void Renderer::buildFixedKernels() {
   std::string Digest = headersDigest(KernelDir);
   for (const KernelFile &F : fixedKernels()) {
     std::string Path = (fs::path(KernelDir) / F.File).string();
-    cl::Program P = Cl->buildProgram(Path, readKernelSource(Path), programOptions(), Digest);
+    // -cl-kernel-arg-info: warmUpAllKernels sets each argument by its kind.
+    cl::Program P = Cl->buildProgram(Path, readKernelSource(Path),
+                                     programOptions() + " -cl-kernel-arg-info", Digest,
+                                     false, [this](const cl::Program &Q) { warmUpAllKernels(*Cl, Q); });
     for (const char *Name : F.Kernels)
       K[Name] = cl::Kernel(P, Name);
   }
@@ -493,6 +516,8 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       }
       if (Opts.OnPass)
         Opts.OnPass(false);
+      if (Done < Spp && HasTextureWork)
+        Tiers->passDone(); // the optimised build behind a quick first build: started, adopted
     }
     if (Opts.OnPass)
       Opts.OnPass(false);

@@ -130,9 +130,11 @@ void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::s
     if (Background)
       waitForEditPause();
     Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(64), cl::NDRange(64));
-    if (Background && Args != 2) { // texcc_uniforms runs one work-item
-      Queue.finish();
-      waitForEditPause();
+    if (Args != 2) { // texcc_uniforms runs one work-item
+      if (Background) {
+        Queue.finish();
+        waitForEditPause();
+      }
       Queue.enqueueNDRangeKernel(K, cl::NullRange, cl::NDRange(LargeGridItems), cl::NDRange(64));
     }
     if (Background)
@@ -146,9 +148,10 @@ namespace {
 cl::Program buildAndWarm(ClContext &Cl, const std::string &Path, const std::string &Source,
                          const std::vector<std::string> &Kernels, const std::string &Options) {
   waitForEditPause(); // PoCL's compiler holds up launches while it runs
-  cl::Program P = Cl.buildProgram(Path, Source, Options, "", /*Background=*/true);
-  warmUpKernels(Cl, P, Kernels, Path, /*Background=*/true);
-  return P;
+  return Cl.buildProgram(Path, Source, Options, "", /*Background=*/true,
+                         [&](const cl::Program &P) {
+                           warmUpKernels(Cl, P, Kernels, Path, /*Background=*/true);
+                         });
 }
 
 } // namespace
@@ -175,7 +178,7 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
       R.Shape = buildAndWarm(Cl, R.L.KernelSource,
                              Job.ShapeText.empty() ? readKernelSource(R.L.KernelSource)
                                                    : Job.ShapeText,
-                             Kernels, Options);
+                             Kernels, Options + Job.ShapeOptions);
     }
     if (Job.Interp) {
       const std::string Source = Job.FallbackText.empty() ? readKernelSource(R.L.InterpFallback)

@@ -4,6 +4,9 @@
 
 #include "texrender/TierManager.h"
 #include "texrender/Error.h"
+#include "texrender/SlowStep.h"
+
+#include <filesystem>
 
 #include <cstdio>
 #include <sys/resource.h>
@@ -40,6 +43,10 @@ void warnShapeBuildFailed(const std::string &Error) {
 
 TierManager::~TierManager() {
   if (Pending) {
+    // The optimised build behind a quick first build: its binary is stored for the next run.
+    std::optional<SlowStep> Step;
+    if (ActiveQuickFirst && !Pending->ready())
+      Step.emplace("finishing the optimised texture kernel for the program cache");
     // A build that failed after the last frame began was never adopted: say so now.
     Pending->wait();
     const TierBuildResult R = Pending->take();
@@ -54,19 +61,28 @@ std::string TierManager::tierName(bool Fallback) const {
   return Fallback ? FallbackTierName : Lay.Mode;
 }
 
+namespace {
+/// The build option of a quick first build (setQuickFirstBuild), and the line of the kernel
+/// text that allows it (texcc_device.h's TEXCC_FN under #ifndef; older texcc outputs lack it).
+const char *const QuickFirstOption = " -DTEXCC_FN=__attribute__((noinline))";
+const char *const QuickFirstGuard = "#ifndef TEXCC_FN";
+} // namespace
+
 cl::Program TierManager::buildForeground(const std::string &Path, const std::string &Source,
                                          bool Fallback, const std::string &Reason,
-                                         const std::string &ExtraOptions) {
+                                         const std::string &ExtraOptions, bool QuickFirst) {
+  SlowStep Step("building the texture kernel (" + std::filesystem::path(Path).filename().string() +
+                (QuickFirst ? ", quick first build" : "") + ")");
   BuildEvent E;
-  E.Kernel = tierName(Fallback);
+  E.Kernel = tierName(Fallback) + (QuickFirst ? "-first" : "");
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
-  cl::Program P = Cl.buildProgram(Path, Source, ProgramOptions + ExtraOptions);
   // PoCL's compile at the first launch is part of the build the frame waits for.
   std::vector<std::string> Names = textureKernelNames();
   if (tierUsesUniforms(Fallback))
     Names.push_back(Lay.Uniforms);
-  warmUpKernels(Cl, P, Names, Path);
+  cl::Program P = Cl.buildProgram(Path, Source, ProgramOptions + ExtraOptions, "", false,
+                                  [&](const cl::Program &Q) { warmUpKernels(Cl, Q, Names, Path); });
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);
@@ -97,6 +113,7 @@ double TierManager::foregroundBuildSeconds() const {
 void TierManager::activate(const cl::Program &P, bool Fallback) {
   TextureKernels.clear();
   ActiveQuick = false;
+  ActiveQuickFirst = false;
   ActiveFallback = Fallback;
   ActiveTier = tierName(Fallback);
   std::string File = Fallback ? Lay.InterpFallback : Lay.KernelSource;
@@ -125,6 +142,8 @@ void TierManager::build(bool HasWork) {
   supersedePending();
   Deferred.reset();
   HeldShape.reset();
+  HeldOptimised.reset();
+  ActiveQuickFirst = false;
   TextureKernels.clear();
   ShapeProgram = InterpProgram = cl::Program();
   ActiveTier.clear();
@@ -142,6 +161,17 @@ void TierManager::build(bool HasWork) {
     const std::string Headroom = Lay.Caps.StackHeadroom && InterpStackHeadroom
                                      ? stackHeadroomOption(Lay, Source, InterpModeSlots)
                                      : "";
+    if (QuickFirstBuild && Source.find(QuickFirstGuard) != std::string::npos &&
+        !Cl.isCached(Source, ProgramOptions + Headroom)) {
+      activate(buildForeground(Lay.KernelSource, Source, false, Reason,
+                               Headroom + QuickFirstOption, /*QuickFirst=*/true),
+               false);
+      ActiveQuickFirst = true;
+      Layout Same = Lay;
+      TierJob Job{/*SameLayout=*/true, /*Shape=*/true, /*Interp=*/false, Source, {}, 0, Headroom};
+      HeldOptimised = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
+      return;
+    }
     activate(buildForeground(Lay.KernelSource, Source, false, Reason, Headroom), false);
     return;
   }
@@ -223,8 +253,9 @@ bool TierManager::buildQuickTier(const char *Reason) {
       E.Kernel = QuickTierName;
       E.Reason = Reason;
       E.StartSeconds = steadySeconds() - Epoch;
-      Prog = Cl.buildProgram(Paths[I], Texts[I], ProgramOptions);
-      warmUpKernels(Cl, Prog, P.Kernels, Paths[I]); // PoCL's compile belongs to the build
+      // PoCL's compile belongs to the build
+      Prog = Cl.buildProgram(Paths[I], Texts[I], ProgramOptions, "", false,
+                             [&](const cl::Program &Q) { warmUpKernels(Cl, Q, P.Kernels, Paths[I]); });
       E.ReadySeconds = steadySeconds() - Epoch;
       E.FirstFrame = int(FramesRendered);
       Events.push_back(E);
@@ -285,8 +316,10 @@ bool TierManager::warmQuickPrograms() {
       W.StartSeconds = steadySeconds() - Start;
       try {
         waitForEditPause(); // PoCL's compiler holds up launches while it runs
-        W.Program = Ctx->buildProgram(T.Path, T.Source, Options, "", /*Background=*/true);
-        warmUpKernels(*Ctx, W.Program, T.Kernels, T.Path, /*Background=*/true);
+        W.Program = Ctx->buildProgram(T.Path, T.Source, Options, "", /*Background=*/true,
+                                      [&](const cl::Program &Q) {
+                                        warmUpKernels(*Ctx, Q, T.Kernels, T.Path, true);
+                                      });
       } catch (const std::exception &E) {
         W.Program = cl::Program();
         W.Error = E.what();
@@ -329,7 +362,23 @@ void TierManager::mergeQuickWarmUp(bool Wait) {
   }
 }
 
+void TierManager::startHeldOptimised() {
+  if (!HeldOptimised)
+    return;
+  QueuedBuild B = std::move(*HeldOptimised);
+  HeldOptimised.reset();
+  startBackgroundBuild(std::move(B.MakeLayout), B.Job, std::move(B.Reencode), B.Reason);
+}
+
+void TierManager::passDone() {
+  startHeldOptimised();
+  // A layout without a fallback has no other background build than this one.
+  if (ActiveQuickFirst && Pending && Pending->ready())
+    adoptReadyBuild();
+}
+
 bool TierManager::fullPassDone() {
+  startHeldOptimised(); // not the shape kernel's build: the caller says nothing about it
   if (!HeldShape)
     return false;
   QueuedBuild B = std::move(*HeldShape);
@@ -415,6 +464,8 @@ void TierManager::reapRetired(bool Wait) {
 }
 
 const std::string &TierManager::beginFrame() {
+  if (FramesRendered > 0)
+    startHeldOptimised(); // a frame is complete: the optimised build behind a quick first build
   adoptReadyBuild(); // a background shape build that finished since the last frame
   ++FramesRendered;
   return ActiveTier;

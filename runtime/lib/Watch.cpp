@@ -36,7 +36,7 @@ void Session::errorEvent(const std::string &Message, std::optional<long long> Id
   std::string M = Message;
   while (!M.empty() && M.back() == '\n')
     M.pop_back();
-  E["message"] = M;
+  E["message"] = texcc::boundedMessage(M);
   event(E);
 }
 
@@ -319,9 +319,11 @@ void Session::applyGraph(const std::set<std::string> &Sources) {
   try {
     New = json::parse(readWholeFile(GraphPath, " graph"));
   } catch (const json::parse_error &E) {
-    std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), E.what());
+    // nlohmann quotes the last token read: a whole 200 MB string, unbounded.
+    const std::string What = texcc::boundedMessage(E.what());
+    std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), What.c_str());
     say("the last good graph keeps rendering");
-    errorEvent(GraphPath + ": error: " + E.what());
+    errorEvent(GraphPath + ": error: " + What);
     return;
   } catch (const Error &E) {
     say("error: " + std::string(E.what()) + "; the last good graph keeps rendering");

@@ -39,7 +39,7 @@ inline double nowSeconds() {
 }
 
 inline void say(const std::string &Line) {
-  std::fprintf(stderr, "texrender: watch: %s\n", Line.c_str());
+  std::fprintf(stderr, "texrender: watch: %s\n", texcc::boundedMessage(Line).c_str());
   std::fflush(stderr);
 }
 

@@ -13,6 +13,7 @@
 #include "texrender/Image.h"
 #include "texrender/LiveEdit.h"
 #include "texrender/Renderer.h"
+#include "texrender/SlowStep.h"
 #include "texrender/Stats.h"
 #include "texrender/Watch.h"
 
@@ -394,8 +395,14 @@ int run(int Argc, char **Argv) try {
   std::unique_ptr<Watchdog> Dog;
   if (O.TimeLimit > 0)
     Dog = std::make_unique<Watchdog>(O.TimeLimit, T0 + O.TimeLimit);
+  // A step over a second says so (SlowStep.h) where texrender narrates: a terminal, --progress,
+  // and --watch sessions (serve.py shows their lines); never with --quiet.
+  setSlowStepAnnouncements(!O.Quiet && (O.ForceProgress || isatty(2) || O.Watch));
   phase(Dog.get(), "loading the scene");
-  Scene S = loadSceneWithOptions(O);
+  Scene S = [&] {
+    SlowStep Step("loading the scene");
+    return loadSceneWithOptions(O);
+  }();
   // The size of every image written: the region's, or the film's.
   const RenderSettings &G = S.Render;
   const int OutW = G.RegionWidth ? G.RegionWidth : G.Width, OutH = G.RegionWidth ? G.RegionHeight : G.Height;
@@ -528,8 +535,8 @@ static int runAndReport(int Argc, char **Argv) {
                  clErrorName(E.err()).c_str());
   } catch (const std::bad_alloc &E) {
     texcc::reportOutOfMemory("texrender", E); // "out of memory while ..." (texcc/OutOfMemory.h)
-  } catch (const std::exception &E) {
-    std::fprintf(stderr, "texrender: error: %s\n", E.what());
+  } catch (const std::exception &E) { // nlohmann's: what it quotes is bounded too
+    std::fprintf(stderr, "texrender: error: %s\n", texcc::boundedMessage(E.what()).c_str());
   }
   return 1;
 }

@@ -17,6 +17,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -43,13 +44,21 @@ public:
   /// KeyExtra joins the cache key (e.g. the text of the headers the source includes). Throws
   /// Error with the device, the options and the build log on failure. Safe to call from a
   /// background thread (OpenCL 1.2 builds are thread-safe); Background says who called, for
-  /// the counts: a foreground build is one a frame waits for.
+  /// the counts: a foreground build is one a frame waits for. WarmUp (if any) runs on the
+  /// program, built or loaded, before its binary is stored: PoCL compiles a work-group function
+  /// per local size and grid class at a kernel's first launch, and a binary taken after those
+  /// launches carries them (bench/coldstart.md), so a program loaded from the cache compiles
+  /// nothing at any image size or spp.
   cl::Program buildProgram(const std::string &Name, const std::string &Source,
                            const std::string &Options, const std::string &KeyExtra = "",
-                           bool Background = false);
+                           bool Background = false,
+                           const std::function<void(const cl::Program &)> &WarmUp = nullptr);
   /// Whether buildProgram would find the program in the disk cache (no build from source).
   bool isCached(const std::string &Source, const std::string &Options,
                 const std::string &KeyExtra = "") const;
+  /// A read-only folder of prebuilt program binaries (scripts/build.sh fills build/programs
+  /// with the fixed kernels), looked up after the cache folder; "" = none.
+  void setPrebuiltDir(std::string Dir) { PrebuiltDir = std::move(Dir); }
 
   /// Creates a buffer of Bytes (at least 1) and counts it under Label in the memory tally.
   cl::Buffer allocate(const std::string &Label, size_t Bytes, cl_mem_flags Flags);
@@ -92,6 +101,8 @@ private:
     size_t WorkItems;
   };
   std::string cachePath(const std::string &Key) const;
+  /// The cached binary of Key: the cache folder's, else the prebuilt folder's; "" if neither.
+  std::string cachedBinary(const std::string &Key) const;
   std::string cacheKey(const std::string &Source, const std::string &Options,
                        const std::string &KeyExtra) const;
   cl::Program buildFromSource(const std::string &Name, const std::string &Source,
@@ -104,6 +115,7 @@ private:
   std::string DeviceName;
   std::string DeviceKey;
   std::string CacheDir;
+  std::string PrebuiltDir;
   std::atomic<unsigned> Builds{0}, BackgroundBuilds{0}, CacheHits{0};
   std::vector<Pending> PendingEvents;
   std::map<std::string, KernelTiming> Timings;
@@ -113,6 +125,16 @@ private:
 /// The default program-cache folder: $TEXRENDER_CACHE_DIR, else $XDG_CACHE_HOME/texcc, else
 /// $HOME/.cache/texcc, else "" (no disk cache).
 std::string defaultCacheDir();
+
+/// PoCL compiles a second work-group function for launches of this many work-items or more.
+constexpr size_t LargeGridItems = 65536;
+
+/// Launches every kernel of P once over one work-group of 64 items and once over
+/// LargeGridItems, with every buffer argument a small dummy buffer and every scalar argument 0:
+/// texrender's kernels all return at once when their count is 0. PoCL compiles its work-group
+/// functions (one for small grids, one for grids of 65536 items or more) here rather than at
+/// a frame's first launch. A kernel whose argument kinds cannot be queried is skipped.
+void warmUpAllKernels(ClContext &Cl, const cl::Program &P);
 
 /// 64-bit FNV-1a, as 16 hex digits.
 std::string hashHex(const std::string &Data);

@@ -33,6 +33,9 @@ struct PassProgress {
   std::function<std::vector<float>()> Image;
 };
 
+/// $TEXRENDER_FIRST_BUILD: "optimised" turns the quick first build off; unset or "quick": on.
+bool quickFirstBuildDefault();
+
 struct RendererOptions {
   int Device = 0;
   std::string CacheDir = defaultCacheDir();
@@ -45,6 +48,10 @@ struct RendererOptions {
   /// shape mode's fallback has), so that a rewiring that needs a few more slots is an upload,
   /// not a build. texrender sets it for edit sessions.
   bool InterpStackHeadroom = false;
+  /// TierManager::setQuickFirstBuild: a texture kernel not in the program cache renders first
+  /// with a quick (uninlined) build while the optimised one builds behind it. On unless
+  /// $TEXRENDER_FIRST_BUILD is "optimised".
+  bool QuickFirstBuild = quickFirstBuildDefault();
   /// --ao-method=loop: one work-item per hit loops over its AO rays (ao_loop) instead of one
   /// work-item per AO ray (ao_trace + ao_reduce). Same rays, same image; kept to measure the
   /// paper's claim that the parallel launch is faster (bench/ao.py).

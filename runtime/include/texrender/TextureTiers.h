@@ -79,6 +79,9 @@ struct TierJob {
   // from the quick tier (TierManager::buildShapeTiers: at nice 19 it waited a minute behind a
   // loaded machine).
   int Nice = 19;
+  // Extra build options of the shape (or, for another mode, the layout's own) program: an
+  // interp-mode kernel's value-stack headroom.
+  std::string ShapeOptions;
 };
 
 /// Builds the programs Job names for the layout MakeLayout gives (run first, on the calling
@@ -90,16 +93,16 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
                                TierJob Job, const std::string &Options, double Epoch);
 
 /// Launches each of Kernels of P once over one work-group whose items all return at once
-/// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here.
-/// Background (a background build's warm-up): the texture kernels also once over
-/// LargeGridItems work-items (PoCL compiles another work-group function for grids that large:
-/// bench/lookdev.md), which a frame's first full-resolution launch would otherwise compile on
-/// the render thread, and each launch first waits for a pause in interactive edits
+/// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here,
+/// and the texture kernels also once over LargeGridItems work-items (PoCL compiles another
+/// work-group function for grids that large: bench/lookdev.md), which a frame's first
+/// full-resolution launch would otherwise compile on the render thread. Background (a
+/// background build's warm-up): each launch first waits for a pause in interactive edits
 /// (waitForEditPause). A kernel the program lacks: Error "File: no kernel 'NAME' in the
-/// texture program".
+/// texture program". ClContext::buildProgram stores a program's binary after this, so a
+/// program loaded from the cache compiles nothing here.
 void warmUpKernels(ClContext &Cl, const cl::Program &P, const std::vector<std::string> &Kernels,
                    const std::string &File, bool Background = false);
-constexpr size_t LargeGridItems = 65536;
 
 /// PoCL compiles a kernel's work-group function at its first launch, and while it does every
 /// launch on the device waits (an edit's first frame waited 0.2-1.7 s behind a background

@@ -79,7 +79,7 @@ public:
   /// renders none).
   bool backgroundBuildPending() {
     launchQueued();
-    return HeldShape || (Queued && switches(Queued->Job)) ||
+    return HeldShape || HeldOptimised || (Queued && switches(Queued->Job)) ||
            (Pending && PendingSwitches && !Pending->ready());
   }
   /// Adopts a finished background build that made only the interp fallback (the layout's own
@@ -110,8 +110,23 @@ public:
   /// for it: the shape kernel's path, as without the quick tier.
   void setQuickTier(bool On) { QuickTier = On; }
   /// A full-resolution pass is done (texrender --watch, after each): starts the shape kernel's
-  /// build held behind the quick tier, if there is one; returns whether it started.
+  /// build held behind the quick tier, if there is one; returns whether it started. It also
+  /// starts the optimised build held behind a quick first build (not counted in the result).
   bool fullPassDone();
+  /// The quick first build (on by default; $TEXRENDER_FIRST_BUILD=optimised turns it off): a
+  /// layout's own kernel (interp, inline, wavefront mode) whose optimised program is not in the
+  /// program cache is built first with TEXCC_FN noinline (texcc_device.h; the kernel's text is
+  /// unchanged, the option is -DTEXCC_FN=...): PoCL compiles each function once and vectorises
+  /// nothing, several times faster to build, slower per hit, the same values bit for bit. The
+  /// optimised program (the same text, inlined) is built on the background thread once a pass
+  /// is done (passDone, fullPassDone, or the next frame) and takes over at the next pass or
+  /// frame; its binary goes to the cache, so the next run loads it.
+  void setQuickFirstBuild(bool On) { QuickFirstBuild = On; }
+  /// Between two passes of a frame (Renderer::render): starts the optimised build held behind a
+  /// quick first build and adopts it once it is done (the same values: the frame goes on).
+  void passDone();
+  /// Whether the kernel that renders is a quick first build.
+  bool quickFirstBuildActive() const { return ActiveQuickFirst; }
   /// Starts building, in the background, the quick programs of the layout not kept yet (none
   /// while an earlier warm-up runs); returns whether it started.
   bool warmQuickPrograms();
@@ -157,7 +172,8 @@ private:
   /// Fallback: the program is the layout's interp fallback (Caps.InterpFallback), else the
   /// layout's own kernel.
   cl::Program buildForeground(const std::string &Path, const std::string &Source, bool Fallback,
-                              const std::string &Reason, const std::string &ExtraOptions = "");
+                              const std::string &Reason, const std::string &ExtraOptions = "",
+                              bool QuickFirst = false);
   void activate(const cl::Program &P, bool Fallback);
   bool tierUsesUniforms(bool Fallback) const;
   /// The tier's name in stats.json and the frame log: the fallback's FallbackTierName, else
@@ -207,6 +223,12 @@ private:
   bool DeferFallback = false;
   std::optional<QueuedBuild> Deferred; // setDeferFallbackBuilds's build, until started
   std::optional<QueuedBuild> HeldShape; // the quick tier's shape kernel, until fullPassDone
+  bool QuickFirstBuild = true;
+  bool ActiveQuickFirst = false; // the kernel that renders is a quick first build
+  // The optimised build behind a quick first build, until a pass is done (passDone,
+  // fullPassDone, or the next frame's beginFrame).
+  std::optional<QueuedBuild> HeldOptimised;
+  void startHeldOptimised();
   std::vector<BuildEvent> Events;
   unsigned FramesRendered = 0;
   bool QuickTier = false;
