@@ -49,13 +49,17 @@ AXIS_V = (0.0, 4.0, -1.5)
 VARIANTS = []
 
 
-def variant(name, node, props, inputs, feeds, source, outputs, args, setup=None, describe=None):
-    """setup(node) configures what properties cannot (a ramp's stops); describe records it."""
+def variant(name, node, props, inputs, feeds, source, outputs, args, setup=None, describe=None,
+            image=None):
+    """setup(node) configures what properties cannot (a ramp's stops); describe records it.
+    image: the node's image, made in Blender (make_image) and written into the fixture."""
     VARIANTS.append(dict(name=name, node=node, props=props, inputs=inputs, feeds=feeds,
                          source=source, outputs=outputs, args=args))
     if setup:
         VARIANTS[-1]["setup"] = setup
         VARIANTS[-1]["describe"] = describe
+    if image:
+        VARIANTS[-1]["image"] = image
 
 
 NOISE_TYPES = {"MULTIFRACTAL": 0, "FBM": 1, "HYBRID_MULTIFRACTAL": 2, "RIDGED_MULTIFRACTAL": 3,
@@ -429,6 +433,55 @@ for name, freq, squash, smooth in (("brick", 2, 1.0, 0.1), ("brick-squashed-shar
              "squashAmount": squash, "squashFrequency": 2})
 
 
+# Image Texture (textures/blender/image.cl): a generated 6x5 image (not square, not a power of
+# two, so that a swapped axis shows) in three kinds, bytes read as sRGB, bytes as Non-Color and
+# floats (0..2) as Linear Rec.709, each with every interpolation and extension. The plane's x and
+# y (the lookup's u and v) run over about four periods, negative ones included. One more: bytes
+# with alpha below 1 (the colour comes out associated, as Cycles gives it when Alpha is unused).
+IMAGE_KINDS = {"srgb": (False, "sRGB", False), "noncolor": (False, "Non-Color", False),
+               "linear": (True, "Linear Rec.709", False), "srgb-alpha": (False, "sRGB", True)}
+IMAGE_INTERPOLATIONS = ["Linear", "Closest", "Cubic"]
+IMAGE_EXTENSIONS = ["REPEAT", "EXTEND", "CLIP", "MIRROR"]
+
+
+def image_spec(kind):
+    import random
+    is_float, colorspace, alpha = IMAGE_KINDS[kind]
+    rng = random.Random("texcc-" + kind)
+    w, h = 6, 5
+    pixels = []
+    for _ in range(w * h):
+        if is_float:
+            pixels += [round(rng.uniform(0.0, 2.0), 4) for _ in range(3)] + [1.0]
+        else:
+            pixels += [rng.randrange(256) / 255.0 for _ in range(3)]
+            pixels.append(rng.randrange(256) / 255.0 if alpha else 1.0)
+    return {"kind": kind, "width": w, "height": h, "float": is_float, "colorspace": colorspace,
+            "pixels": pixels}
+
+
+for kind in IMAGE_KINDS:
+    for interpolation in IMAGE_INTERPOLATIONS:
+        for extension in IMAGE_EXTENSIONS:
+            if kind == "srgb-alpha" and (interpolation != "Linear" or extension != "REPEAT"):
+                continue
+            iargs = {"image": "IMAGE", "vector": "P",
+                     "interpolation": IMAGE_INTERPOLATIONS.index(interpolation),
+                     "extension": IMAGE_EXTENSIONS.index(extension), "alphaLinked": 0}
+            variant("image-%s-%s-%s" % (kind, interpolation.lower(), extension.lower()),
+                    "ShaderNodeTexImage", {"interpolation": interpolation, "extension": extension},
+                    {}, {"Vector": "P"}, "image.cl",
+                    [("Color", "blImageColor", 3), ("Alpha", "blImageAlpha", 1, ["alphaLinked"])],
+                    iargs, image=image_spec(kind))
+# The same with the Alpha output in use (Cycles then divides the colour by the alpha): the
+# bake's Emission Strength is (Alpha > -1), always 1, which Cycles cannot fold away.
+variant("image-srgb-alpha-linear-repeat-straight", "ShaderNodeTexImage",
+        {"interpolation": "Linear", "extension": "REPEAT"}, {}, {"Vector": "P", "alpha": "linked"},
+        "image.cl", [("Color", "blImageColor", 3)],
+        {"image": "IMAGE", "vector": "P", "interpolation": 0, "extension": 0, "alphaLinked": 1},
+        image=image_spec("srgb-alpha"))
+
+
 # --- Baking ---------------------------------------------------------------------------------
 
 def setup_scene(size):
@@ -500,8 +553,18 @@ def build_variant(v, socket):
             setattr(node, key, value)
         if "setup" in v:
             v["setup"](node)
+        if "image" in v:
+            node.image = make_image(v["image"])
         separate = None
         for key, feed in v["feeds"].items():
+            if key == "alpha":  # the Alpha output linked (Emission Strength = Alpha > -1)
+                above = tree.nodes.new("ShaderNodeMath")
+                above.operation = "GREATER_THAN"
+                tree.links.new(node.outputs["Alpha"], above.inputs[0])
+                above.inputs[1].default_value = -1.0
+                emission = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeEmission")
+                tree.links.new(above.outputs[0], emission.inputs["Strength"])
+                continue
             if feed == "P":
                 tree.links.new(position, socket_named(node.inputs, key))
                 continue
@@ -531,6 +594,25 @@ def build_variant(v, socket):
             tree.links.new(source, socket_named(node.inputs, key))
         return socket_named(node.outputs, socket)
     return build
+
+
+def make_image(spec):
+    """The variant's image in Blender (once per variant): pixels as spec["pixels"] (Blender's
+    order, the bottom row first); spec["stored"] becomes what Blender holds (bytes: k / 255)."""
+    import bpy
+    name = "image-" + spec["kind"]
+    image = bpy.data.images.get(name)
+    if image is None:
+        image = bpy.data.images.new(name, spec["width"], spec["height"], alpha=True,
+                                    float_buffer=spec["float"])
+        image.colorspace_settings.name = spec["colorspace"]
+        image.alpha_mode = "STRAIGHT"
+        image.pixels.foreach_set(spec["pixels"])
+        image.update()
+    stored = [0.0] * len(image.pixels)
+    image.pixels.foreach_get(stored)
+    spec["stored"] = stored
+    return image
 
 
 def encode(values):
@@ -574,6 +656,13 @@ def main():
                             "fed_from_position": v["feeds"], "setup": v.get("describe")},
                    "source": v["source"], "args": v["args"], "points": "points.txt",
                    "outputs": outputs}
+        if "image" in v:
+            # The image as Blender holds it (rows bottom first) and the colour space it was
+            # read in: compare.py gives texcc-eval the texels texrender's loader makes of it.
+            spec = v["image"]
+            fixture["image"] = {"width": spec["width"], "height": spec["height"],
+                                "float": spec["float"], "colorspace": spec["colorspace"],
+                                "pixels": encode(spec["stored"])}
         with open(os.path.join(OUT, v["name"] + ".json"), "w") as f:
             json.dump(fixture, f, indent=1)
             f.write("\n")

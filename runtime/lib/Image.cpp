@@ -157,6 +157,7 @@ static ImageRGBA readTexture(const std::string &Path, const std::string &ColorSp
                 "' (expected 'sRGB', 'Linear Rec.709' or 'Non-Color')");
   bool Float = false, Bytes = false;
   ImageRGBA Img = readTexels(Path, Float, Bytes);
+  Img.Bits = Float ? 32 : Bytes ? 8 : 16;
   Img.ColorSpace = !ColorSpace.empty() ? ColorSpace : Float ? "Linear Rec.709" : "sRGB";
   if (Img.ColorSpace != "sRGB")
     return Img;
@@ -206,6 +207,13 @@ std::string readWholeFile(const std::string &Path, const std::string &What) {
   std::string Text, Why;
   if (!texcc::readRegularFile(Path, Text, Why))
     throw Error(Path + ": cannot open" + What + ": " + Why);
+  return Text;
+}
+
+std::string readGraphFile(const std::string &Path) {
+  std::string Text, Why;
+  if (!texcc::readRegularFile(Path, Text, Why, texcc::MaxGraphBytes))
+    throw Error(Path + ": cannot open graph: " + Why);
   return Text;
 }
 

@@ -214,9 +214,11 @@ void Renderer::uploadLayoutData() {
   std::vector<TexccImageInfo> Infos;
   for (const LayoutImage &I : Lay.Images) {
     ImageRGBA Img = loadTexture(I.Path, I.ColorSpace);
-    const int Flags = Img.ColorSpace == "sRGB"        ? TEXCC_IMAGE_SRGB
-                      : Img.ColorSpace == "Non-Color" ? TEXCC_IMAGE_DATA
-                                                      : 0;
+    // What tex2DFiltered needs to read the image as Cycles does (texcc_device.h): Blender
+    // hands Cycles 8-bit images as bytes (sRGB ones still encoded), others as linear floats.
+    const int Flags = (Img.ColorSpace == "Non-Color" ? TEXCC_IMAGE_DATA : 0) |
+                      (Img.Bits == 8 ? TEXCC_IMAGE_BYTES : 0) |
+                      (Img.Bits == 8 && Img.ColorSpace == "sRGB" ? TEXCC_IMAGE_SRGB : 0);
     TexccImageInfo Info{int(Texels.size()), Img.Width, Img.Height, Flags};
     Infos.push_back(Info);
     for (size_t P = 0; P < Img.Pixels.size(); P += 4)

@@ -14,6 +14,7 @@ struct ImageRGBA {
   int Width = 0, Height = 0;
   std::vector<float> Pixels; // RGBA, row-major, row 0 at the top
   std::string ColorSpace;    // loadTexture: the colour space the file was read in
+  int Bits = 0;              // loadTexture: 8 or 16 (integer files), 32 (float files)
 };
 
 /// The colour spaces of a texture, as Blender names them: "sRGB" (colour decoded to linear,
@@ -47,6 +48,9 @@ void writeTextFile(const std::string &Path, const std::string &Text);
 /// " kernel source") + ": " + the reason; a FIFO, a device or a folder is refused, never read
 /// (texcc/Support/File.h).
 std::string readWholeFile(const std::string &Path, const std::string &What = "");
+/// graph.json, whole: readWholeFile, refusing a graph larger than texcc reads
+/// (texcc::MaxGraphBytes) before reading it.
+std::string readGraphFile(const std::string &Path);
 
 float srgbToLinear(float V);
 float linearToSrgb(float V);

@@ -82,15 +82,51 @@ def graph_arg(value, extra):
     return {"node": node_id}
 
 
-def build_graph(fixtures, src):
+def srgb_to_linear(v):
+    """texrender's loader (runtime/lib/Image.cpp srgbToLinear), in float32."""
+    v = struct.unpack("<f", struct.pack("<f", v))[0]
+    if v <= 0.04045:
+        return v / 12.92
+    return ((v + 0.055) / 1.055) ** 2.4
+
+
+def image_texels(image, path):
+    """A fixture's image as texcc-eval's --texels file: the linear RGBA texels texrender's loader
+    makes of the values Blender holds (sRGB colour decoded; rows top first, Blender's bottom
+    first) and the flags texrender gives it (TEXCC_IMAGE_SRGB 1, _DATA 2, _BYTES 4:
+    runtime/lib/Renderer.cpp)."""
+    w, h = image["width"], image["height"]
+    stored = decode(image["pixels"], 4)
+    srgb = image["colorspace"] == "sRGB"
+    flags = (2 if image["colorspace"] == "Non-Color" else 0) | \
+        (0 if image["float"] else 4 | (1 if srgb else 0))
+    lines = ["%d %d %d" % (w, h, flags)]
+    for row in range(h - 1, -1, -1):
+        for x in range(w):
+            t = stored[row * w + x]
+            rgb = [srgb_to_linear(c) if srgb else c for c in t[:3]]
+            lines.append("%.9g %.9g %.9g %.9g" % tuple(rgb + [t[3]]))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def build_graph(fixtures, src, work):
     lib = os.path.join(src, "textures", "blender")
     sources, nodes, materials, outputs = [], [], {}, []
     uses_components, uses_vectors, extra = False, False, []
+    images, texels = {}, []
     for fx in fixtures:
         path = os.path.join(lib, fx["source"])
         if path not in sources:
             sources.append(path)
         args = {k: graph_arg(v, extra) for k, v in fx["args"].items()}
+        if "image" in fx:  # "IMAGE": the fixture's own image, its texels through --texels
+            name = "image_%d" % len(images)
+            images[name] = {"path": name + ".png", "colorspace": fx["image"]["colorspace"]}
+            texels.append(os.path.join(work, name + ".txt"))
+            image_texels(fx["image"], texels[-1])
+            args = {k: {"image": name} if v == "IMAGE" else a
+                    for (k, v), a in zip(fx["args"].items(), args.values())}
         uses_components |= any(isinstance(v, str) and v.startswith("P.")
                                for v in fx["args"].values())
         uses_vectors |= any(isinstance(v, str) and v.startswith("P*")
@@ -112,7 +148,10 @@ def build_graph(fixtures, src):
         for axis in "xyz":
             nodes.append({"id": "position_" + axis, "fn": "blSeparateXYZ" + axis.upper(),
                           "args": {"vector": {"attr": "ObjectPos"}}})
-    return {"texcc": 1, "sources": sources, "nodes": nodes, "materials": materials}, outputs
+    graph = {"texcc": 1, "sources": sources, "nodes": nodes, "materials": materials}
+    if images:
+        graph["images"] = images
+    return graph, outputs, texels
 
 
 def compile_graph(args, graph_path, host):
@@ -122,12 +161,14 @@ def compile_graph(args, graph_path, host):
         return out_dir, {m["name"]: m["index"] for m in json.load(f)["materials"]}
 
 
-def evaluate(args, out_dir, host, points, work, tag):
+def evaluate(args, out_dir, host, points, work, tag, texels=()):
     """texcc's values at points: a list, per point, of a list, per material, of (x, y, z)."""
     path = os.path.join(work, "points-%s.txt" % tag)
     with open(path, "w") as f:
         f.write("".join("%.9g %.9g %.9g\n" % p for p in points))
     cmd = [args.eval, out_dir, "--points", path] + (["--host"] if host else [])
+    for t in texels:
+        cmd += ["--texels", t]
     values = [[] for _ in points]
     # One line per (point, material, output), in that order; every material here has one
     # output (k = 0), so a point's materials come in index order.
@@ -168,7 +209,7 @@ def main():
     points = read_points(os.path.join(os.path.dirname(os.path.abspath(args.fixtures[0])),
                                       fixtures[0]["points"]))
     os.makedirs(args.work, exist_ok=True)
-    graph, outputs = build_graph(fixtures, args.src)
+    graph, outputs, texels = build_graph(fixtures, args.src, args.work)
     graph_path = os.path.join(args.work, "graph.json")
     with open(graph_path, "w") as f:
         json.dump(graph, f, indent=1)
@@ -178,7 +219,7 @@ def main():
     # beside it: 4 s against 17 s for the 52 Voronoi outputs).
     near = [p for pt in points for p in neighbours(pt)]
     out_dir, material_index = compile_graph(args, graph_path, args.host)
-    both = evaluate(args, out_dir, args.host, points + near, args.work, "points")
+    both = evaluate(args, out_dir, args.host, points + near, args.work, "points", texels)
     values, near_values = both[:len(points)], both[len(points):]
 
     failures, rows = 0, []

@@ -584,6 +584,95 @@ inline float4 texcc_tex2D(const TexccCtx *c, sam2D s, float2 uv) {
   return mix(mix(a, b, tx), mix(d, e, tx), ty);
 }
 
+// texcc_tex2DFiltered: kernels/common/texcc_device.h's, in scalar code.
+inline int texcc_extend(int x, int n, int extension) {
+  if (extension == 1)
+    return x < 0 ? 0 : x > n - 1 ? n - 1 : x;
+  if (extension == 2)
+    return x < 0 || x >= n ? -1 : x;
+  if (extension == 3) {
+    const int m = std::abs(x + (x < 0 ? 1 : 0)) % (2 * n);
+    return m >= n ? 2 * n - m - 1 : m;
+  }
+  x = x % n;
+  return x < 0 ? x + n : x;
+}
+
+inline float4 texcc_texel_filtered(const cl_float4 *texels, TexccImageInfo im, int x, int y) {
+  if (x < 0 || y < 0)
+    return float4(0.0f);
+  float4 t = texcc_f4(texels[im.offset + y * im.width + x]);
+  for (int k = 0; k < 3; ++k) {
+    float v = t[k];
+    if (im.flags & TEXCC_IMAGE_SRGB) {
+      v = v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
+      v = v < 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+    }
+    if (!(im.flags & TEXCC_IMAGE_DATA) && t[3] != 1.0f)
+      v = (im.flags & TEXCC_IMAGE_BYTES)
+              ? std::floor(std::nearbyint(v * 255.0f) * std::nearbyint(t[3] * 255.0f) / 255.0f) / 255.0f
+              : v * t[3];
+    t[k] = v;
+  }
+  return t;
+}
+
+inline float4 texcc_bspline(float t) {
+  const float s = 1.0f - t;
+  return float4(s * s * s, 3.0f * t * t * t - 6.0f * t * t + 4.0f,
+                -3.0f * t * t * t + 3.0f * t * t + 3.0f * t + 1.0f, t * t * t) / 6.0f;
+}
+
+inline float4 texcc_tex2DFiltered(const TexccCtx *c, sam2D s, float2 uv, int interpolation,
+                                  int extension, int straight) {
+  if (s < 0)
+    return float4(1.0f, 0.0f, 1.0f, 1.0f);
+  TexccImageInfo im = c->images[s];
+  if (im.width <= 0 || im.height <= 0)
+    return float4(1.0f, 0.0f, 1.0f, 1.0f);
+  float4 r(0.0f);
+  if (interpolation == 1) {
+    const int x = texcc_extend((int)std::floor(uv.x * (float)im.width), im.width, extension);
+    const int y = texcc_extend((int)std::floor(uv.y * (float)im.height), im.height, extension);
+    r = texcc_texel_filtered(c->texels, im, x, y);
+  } else {
+    const float fx = uv.x * (float)im.width - 0.5f, fy = uv.y * (float)im.height - 0.5f;
+    const float x0f = std::floor(fx), y0f = std::floor(fy);
+    const float tx = fx - x0f, ty = fy - y0f;
+    const int x0 = (int)x0f, y0 = (int)y0f;
+    if (interpolation == 2) {
+      const float4 wx = texcc_bspline(tx), wy = texcc_bspline(ty);
+      for (int j = 0; j < 4; ++j) {
+        const int y = texcc_extend(y0 - 1 + j, im.height, extension);
+        float4 row(0.0f);
+        for (int i = 0; i < 4; ++i)
+          row += wx[i] * texcc_texel_filtered(c->texels, im,
+                                              texcc_extend(x0 - 1 + i, im.width, extension), y);
+        r += wy[j] * row;
+      }
+    } else {
+      const int xa = texcc_extend(x0, im.width, extension);
+      const int xb = texcc_extend(x0 + 1, im.width, extension);
+      const int ya = texcc_extend(y0, im.height, extension);
+      const int yb = texcc_extend(y0 + 1, im.height, extension);
+      r = mix(mix(texcc_texel_filtered(c->texels, im, xa, ya),
+                  texcc_texel_filtered(c->texels, im, xb, ya), tx),
+              mix(texcc_texel_filtered(c->texels, im, xa, yb),
+                  texcc_texel_filtered(c->texels, im, xb, yb), tx),
+              ty);
+    }
+  }
+  if (straight && !(im.flags & TEXCC_IMAGE_DATA) && r[3] != 0.0f && r[3] != 1.0f)
+    for (int k = 0; k < 3; ++k)
+      r[k] /= r[3];
+  if (im.flags & TEXCC_IMAGE_SRGB)
+    for (int k = 0; k < 3; ++k) {
+      const float v = r[k];
+      r[k] = v < 0.0f ? 0.0f : v < 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    }
+  return r;
+}
+
 } // namespace texcc_cl
 
 #endif

@@ -9,7 +9,7 @@ using namespace clang::ast_matchers;
 namespace texcc::frontend {
 
 void ApiLowering::registerMatchers(MatchFinder &Finder) {
-  auto Api = functionDecl(hasAnyName("readAttr", "readSetting", "tex2D")).bind("callee");
+  auto Api = functionDecl(hasAnyName("readAttr", "readSetting", "tex2D", "tex2DFiltered")).bind("callee");
   Finder.addMatcher(
       callExpr(callee(Api), optionally(forFunction(functionDecl().bind("caller")))).bind("call"),
       this);
@@ -19,21 +19,22 @@ void ApiLowering::run(const MatchFinder::MatchResult &Result) {
   const auto *Call = Result.Nodes.getNodeAs<CallExpr>("call");
   const auto *Callee = Result.Nodes.getNodeAs<FunctionDecl>("callee");
   const auto *Caller = Result.Nodes.getNodeAs<FunctionDecl>("caller");
-  if (Callee->getName() != "tex2D") {
-    if (FC.isApiFunction(Callee, Callee->getName()))
+  const llvm::StringRef Fn = Callee->getName();
+  if (Fn != "tex2D" && Fn != "tex2DFiltered") {
+    if (FC.isApiFunction(Callee, Fn))
       lowerRead(Call, Callee, Caller);
     return;
   }
   const auto *Ref = dyn_cast<DeclRefExpr>(Call->getCallee()->IgnoreParenImpCasts());
-  if (!FC.isApiFunction(Callee, "tex2D") || !Ref)
+  if (!FC.isApiFunction(Callee, Fn) || !Ref)
     return;
   SourceLocation Name = FC.spelled(Ref->getLocation());
   SourceLocation LParen = FC.lparenAfter(Name);
   if (LParen.isInvalid()) {
-    FC.report(Ref->getLocation(), Diag::MacroSplitCall) << "tex2D";
+    FC.report(Ref->getLocation(), Diag::MacroSplitCall) << Fn;
     return;
   }
-  FC.Edits.replaceToken(Name, "texcc_tex2D");
+  FC.Edits.replaceToken(Name, ("texcc_" + Fn).str());
   FC.Edits.replaceToken(LParen, "(texcc_ctx, ");
 }
 

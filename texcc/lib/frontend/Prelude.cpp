@@ -27,7 +27,9 @@ const std::string &parsePrelude() {
     std::string P = "#pragma clang system_header\n"
                     "/* texcc parse-time prelude: the embedded API (see docs/frontend.md). */\n"
                     "typedef int sam2D;\n"
-                    "float4 tex2D(sam2D image, float2 uv);\n";
+                    "float4 tex2D(sam2D image, float2 uv);\n"
+                    "float4 tex2DFiltered(sam2D image, float2 uv, int interpolation, "
+                    "int extension, int straight);\n";
     P += overloads("readAttr", graph::attributeTable());
     P += overloads("readSetting", graph::settingTable());
     return P;

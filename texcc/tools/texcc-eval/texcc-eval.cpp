@@ -5,7 +5,8 @@
 // says (wavefront: every launch in order, then the outputs kernel); with --host it compiles
 // OUTDIR/proctex.cpp with g++ (-O1 -shared) and calls texcc_host_evaluate through dlopen.
 // Images bound in layout.json are replaced by small synthetic ones (deterministic, the same in
-// both paths), so that no image loader is needed.
+// both paths), so that no image loader is needed; --texels FILE gives image I's texels instead
+// (the Blender conformance fixtures' images: testsuite/Inputs/blender/compare.py).
 // With --time R and one or more folders of one graph (modes, options), it prints instead the
 // texture kernels' device time per textured hit of each, over R rounds in one process
 // (timeOpenCL): the per-hit figure of bench/per_hit.py that the machine's load does not swamp.
@@ -46,6 +47,9 @@ struct Options {
   uint64_t Seed = 1;
   bool Host = false;
   std::vector<cl_float4> Points;     // --points FILE: hit I's ObjectPos and WorldPos
+  /// --texels FILE (repeatable): image I's texels instead of the synthetic ones, each file
+  /// "W H FLAGS" and W x H x 4 linear RGBA numbers, row 0 at the top (TexccImageInfo).
+  std::vector<std::pair<TexccImageInfo, std::vector<cl_float4>>> Texels;
 };
 
 /// Every input of one evaluation: the hits (Grid x materials), settings, synthetic images.
@@ -169,6 +173,13 @@ Inputs makeInputs(const LayoutInfo &Info, const Options &Opts) {
   In.Settings.frame = 3;
   In.Settings.pixelAngle = 2.8e-3f; // a 256-pixel 40-degree view: bump steps of 2.8e-4 rad
   for (unsigned K = 0; K < Info.NumImages; ++K) {
+    if (K < Opts.Texels.size()) {
+      TexccImageInfo Im = Opts.Texels[K].first;
+      Im.offset = static_cast<int>(In.Texels.size());
+      In.Texels.insert(In.Texels.end(), Opts.Texels[K].second.begin(), Opts.Texels[K].second.end());
+      In.Images.push_back(Im);
+      continue;
+    }
     TexccImageInfo Im{};
     Im.offset = static_cast<int>(In.Texels.size());
     Im.width = 4 + 3 * static_cast<int>(K);
@@ -459,10 +470,23 @@ Options parseArgs(int Argc, char **Argv) {
       if (!In.eof() || Opts.Points.empty())
         die("--points: expected lines of three numbers");
     }
+    else if (A == "--texels") {
+      std::istringstream In(readFile(value()));
+      TexccImageInfo Im{};
+      std::vector<cl_float4> T;
+      float V[4];
+      if (!(In >> Im.width >> Im.height >> Im.flags) || Im.width <= 0 || Im.height <= 0)
+        die("--texels: expected 'WIDTH HEIGHT FLAGS' first");
+      while (In >> V[0] >> V[1] >> V[2] >> V[3])
+        T.push_back(f4(V[0], V[1], V[2], V[3]));
+      if (!In.eof() || T.size() != size_t(Im.width) * size_t(Im.height))
+        die("--texels: expected WIDTH x HEIGHT texels of four numbers");
+      Opts.Texels.emplace_back(Im, std::move(T));
+    }
     else if (A == "--time")
       Opts.TimeReps = static_cast<unsigned>(std::stoul(value()));
     else if (A == "--help" || A == "-h") {
-      std::cout << "usage: texcc-eval OUTDIR [--grid N | --points FILE] [--seed S] [--host]\n"
+      std::cout << "usage: texcc-eval OUTDIR [--grid N | --points FILE] [--seed S] [--host] [--texels FILE]...\n"
                    "       texcc-eval OUTDIR [OUTDIR ...] --time R [--grid N] [--seed S]\n";
       std::exit(0);
     } else if (!A.empty() && A[0] == '-')
