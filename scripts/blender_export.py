@@ -34,7 +34,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic_write import AtomicWriteError, atomic_open, make_dir, new_dir_mode  # noqa: E402
 from bpy_env import ensure_bpy  # noqa: E402
-from blender_nodes import DEFAULT_SURFACE, LIBRARY, check_table, library_signatures  # noqa: E402
+from blender_nodes import (  # noqa: E402
+    DEFAULT_SURFACE, IMAGE_COLORSPACES, LIBRARY, check_table, library_signatures)
 from blender_materials import (  # noqa: E402
     ExportError, MaterialTranslator, Problems, ProblemsFound, finite, sanitize_id)
 from blender_settings import check_render_settings  # noqa: E402
@@ -61,10 +62,11 @@ class Export:
         self.ao = None
         self.files = set()
         self._principled = None
+        self._images = {}  # Blender image name (or None: missing) -> graph.json image binding
         self._constants = {}
         self._socket_defaults = {}
         # graph.json ids: {id: owner} and {owner: id}; names that sanitise alike get a suffix.
-        self._ids = {"material": ({}, {}), "node": ({}, {})}
+        self._ids = {"material": ({}, {}), "node": ({}, {}), "image": ({}, {})}
         self.renamed = []  # (kind, name as in Blender, id), for the export's log
 
     def unique_id(self, kind, owner, name, label=None):
@@ -235,6 +237,91 @@ class Export:
         return {"bsdf": bsdf, "emission": emission, "nodes": nodes}
 
     # --- Geometry ---
+    def image_binding(self, translator, node):
+        """The graph.json image name of an Image Texture node's image (graph.md "Images"): an
+        external file by its absolute path; a packed one, and one that only lives in the .blend
+        (generated, or painted and unsaved), written into OUTDIR/images/ at the end (write_images);
+        with its colour space. A problem's fallback is Cycles' missing-image magenta."""
+        image, where = node.image, translator.node_where(node)
+        missing = "using Cycles' missing-image magenta"
+        if image is None:
+            translator.refuse("%s has no image" % where, missing)
+            return self._image_entry(None)
+        if image.name in self._images:
+            return self._images[image.name]["name"]
+        what = "%s: image '%s'" % (where, printable(image.name))
+        problems = []
+        if image.source not in ("FILE", "GENERATED"):
+            problems.append("source '%s' is not supported; supported: a single image (FILE, "
+                            "GENERATED or packed)" % image.source)
+        colorspace = image.colorspace_settings.name
+        if colorspace not in IMAGE_COLORSPACES:
+            problems.append("colour space '%s' is not supported; supported: %s"
+                            % (colorspace, ", ".join(IMAGE_COLORSPACES)))
+        if image.alpha_mode != "STRAIGHT" and colorspace != "Non-Color":
+            problems.append("alpha mode '%s' is not supported; supported: STRAIGHT (texrender "
+                            "associates alpha as Cycles does for straight images)" % image.alpha_mode)
+        path = None
+        if not problems and image.packed_file is None and image.source == "FILE" and \
+                not image.is_dirty:
+            path = os.path.normpath(self.bpy.path.abspath(image.filepath, library=image.library))
+            if not os.path.isfile(path):
+                problems.append("its file '%s' does not exist (pack it, or fix the path)"
+                                % printable(path))
+        for problem in problems:
+            translator.refuse("%s: %s" % (what, problem), missing)
+        if problems:
+            return self._image_entry(None)
+        return self._image_entry(image, path, colorspace)
+
+    def _image_entry(self, image, path=None, colorspace=None):
+        key = None if image is None else image.name
+        if key not in self._images:
+            name = self.unique_id("image", (key,), "missing" if image is None else key)
+            self._images[key] = {"name": name, "image": image, "path": path,
+                                 "colorspace": colorspace}
+        return self._images[key]["name"]
+
+    def write_images(self, staging, final_dir):
+        """Writes what write_images has to (packed files as packed, byte for byte; images that
+        live only in the .blend through Blender's own writer, PNG for 8-bit and OpenEXR for
+        float buffers, the pixels as Blender holds them; the missing image as a 1x1 magenta
+        PNG) into OUTDIR/images/ and returns graph.json's "images"."""
+        images = {}
+        image_dir = os.path.join(staging, "images")
+        for entry in self._images.values():
+            image, name = entry["image"], entry["name"]
+            binding = {}
+            if entry["path"] is not None:
+                binding["path"] = entry["path"]
+            else:
+                if not os.path.isdir(image_dir):
+                    make_dir(image_dir, os.path.join(final_dir, "images"))
+                if image is None:
+                    ext = ".png"
+                elif image.packed_file is not None:
+                    ext = os.path.splitext(image.filepath)[1].lower() or \
+                        {"OPEN_EXR": ".exr", "JPEG": ".jpg", "HDR": ".hdr"}.get(
+                            image.file_format, ".png")
+                else:
+                    ext = ".exr" if image.is_float else ".png"
+                file = self.unique_file("images/" + file_name(name), ext)
+                target = os.path.join(staging, file)
+                if image is None:
+                    with atomic_open(target, "wb", os.path.join(final_dir, file)) as f:
+                        f.write(magenta_png())
+                elif image.packed_file is not None:
+                    with atomic_open(target, "wb", os.path.join(final_dir, file)) as f:
+                        f.write(bytes(image.packed_file.data))
+                else:
+                    image.file_format = "OPEN_EXR" if ext == ".exr" else "PNG"
+                    image.save(filepath=target)
+                binding["path"] = file
+            if entry["colorspace"] is not None:
+                binding["colorspace"] = entry["colorspace"]
+            images[name] = binding
+        return images
+
     def unique_file(self, stem, ext):
         """Object names that differ only in characters a file name cannot keep stay apart."""
         name, n = stem + ext, 1
@@ -527,7 +614,10 @@ class Export:
             raise ProblemsFound()
         self.write_json(os.path.join(staging, "scene.json"), scene_json,
                         os.path.join(final_dir, "scene.json"))
-        self.write_json(os.path.join(staging, "graph.json"), self.graph_json(final_dir),
+        graph = self.graph_json(final_dir)
+        if self._images:
+            graph["images"] = self.write_images(staging, final_dir)
+        self.write_json(os.path.join(staging, "graph.json"), graph,
                         os.path.join(final_dir, "graph.json"))
 
     def graph_json(self, final_dir):
@@ -564,6 +654,18 @@ def _numbers(value):
     if isinstance(value, (int, float)):
         return float(value)
     return [float(v) for v in value]
+
+
+def magenta_png():
+    """A 1x1 opaque magenta PNG (Cycles' colour for a missing image)."""
+    import struct
+    import zlib
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + \
+            struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 2, 0, 0, 0)) + \
+        chunk(b"IDAT", zlib.compress(b"\x00\xff\x00\xff")) + chunk(b"IEND", b"")
 
 
 def printable(text):

@@ -10,8 +10,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blender_nodes import (  # noqa: E402
-    DEFAULT_SURFACE, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED, PRINCIPLED_INPUTS,
-    SHADERS, VECTOR_MATH_OPS, supported_nodes_text)
+    DEFAULT_SURFACE, IMAGE_INTERPOLATIONS, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED,
+    PRINCIPLED_INPUTS, SHADERS, VECTOR_MATH_OPS, supported_nodes_text)
 
 
 class ExportError(Exception):
@@ -285,6 +285,8 @@ class MaterialTranslator:
         if param in spec.get("props", {}) or (spec.get("object_props")
                                               and param in OBJECT_PARAMS):
             return None
+        if param not in spec["sockets"]:  # an image (sam2D): bound, not fed
+            return None
         ident = spec["sockets"][param]
         ident = ident(node) if callable(ident) else ident
         return next(s for s in node.inputs if s.identifier == ident)
@@ -350,6 +352,9 @@ class MaterialTranslator:
         self.node_checks(node)
         args = {}
         for ptype, param in self.export.signatures[fn][2]:
+            if ptype == "sam2D":
+                args[param] = {"image": self.export.image_binding(self, node)}
+                continue
             if param in spec.get("props", {}):
                 value = spec["props"][param](node)
                 if not finite(value):
@@ -363,7 +368,11 @@ class MaterialTranslator:
             if socket is None:
                 args[param] = self.export.object_constants(self.obj)[param]
                 continue
-            if spec.get("texture") and param == "vector" and self.link_source(socket) is None:
+            if spec.get("texture") == "uv" and param == "vector" and \
+                    self.link_source(socket) is None:
+                # Cycles: an unlinked Vector of an Image Texture is the UV map.
+                value = ("node", self.add_node("UV", "blTexCoordUV", {}), "float3")
+            elif spec.get("texture") and param == "vector" and self.link_source(socket) is None:
                 # Cycles: an unlinked Vector of a texture node is the Generated coordinates.
                 value = ("node", self.add_node("Generated", "blTexCoordGenerated", dict(
                     (k, self.export.object_constants(self.obj)[k])
@@ -376,6 +385,14 @@ class MaterialTranslator:
         return args
 
     def node_checks(self, node):
+        if node.bl_idname == "ShaderNodeTexImage":
+            if node.interpolation not in IMAGE_INTERPOLATIONS:
+                self.refuse("%s: interpolation '%s' is not supported; supported: %s"
+                            % (self.node_where(node), node.interpolation,
+                               ", ".join(IMAGE_INTERPOLATIONS)), "using Linear")
+            if node.projection != "FLAT":
+                self.refuse("%s: projection '%s' is not supported; supported: FLAT"
+                            % (self.node_where(node), node.projection), "using FLAT")
         if node.bl_idname == "ShaderNodeValToRGB" and node.color_ramp.color_mode != "RGB":
             self.refuse("%s: colour mode '%s' is not supported; supported: RGB"
                         % (self.node_where(node), node.color_ramp.color_mode),

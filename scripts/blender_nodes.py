@@ -65,6 +65,10 @@ MAP_RANGE_TYPES = ["LINEAR", "STEPPED", "SMOOTHSTEP", "SMOOTHERSTEP"]
 GRADIENT_TYPES = ["LINEAR", "QUADRATIC", "EASING", "DIAGONAL", "RADIAL", "QUADRATIC_SPHERE",
                   "SPHERICAL"]
 COLOR_MODES = ["RGB", "HSV", "HSL"]
+# Image Texture settings texrender's tex2DFiltered has, in its numbering (Smart is refused).
+IMAGE_INTERPOLATIONS = ["Linear", "Closest", "Cubic"]
+IMAGE_EXTENSIONS = ["REPEAT", "EXTEND", "CLIP", "MIRROR"]
+IMAGE_COLORSPACES = ["sRGB", "Linear Rec.709", "Non-Color"]
 
 
 def _index(table, prop):
@@ -164,6 +168,15 @@ NODES = {
         props={"offsetAmount": lambda n: n.offset, "offsetFrequency": lambda n: n.offset_frequency,
                "squashAmount": lambda n: n.squash,
                "squashFrequency": lambda n: n.squash_frequency}),
+    # The image itself (the sam2D parameter) is bound by the exporter (Export.image_binding);
+    # an unlinked Vector is the UV map, as Cycles' Image Texture reads it.
+    "ShaderNodeTexImage": dict(
+        fn={"Color": "blImageColor", "Alpha": "blImageAlpha"}, texture="uv",
+        sockets={"vector": "Vector"},
+        props={"interpolation": lambda n: IMAGE_INTERPOLATIONS.index(n.interpolation)
+               if n.interpolation in IMAGE_INTERPOLATIONS else 0,  # refused: Linear
+               "extension": _index(IMAGE_EXTENSIONS, "extension"),
+               "alphaLinked": lambda n: 1 if n.outputs["Alpha"].is_linked else 0}),
     "ShaderNodeValToRGB": dict(
         fn={"Color": "blColorRampColor", "Alpha": "blColorRampAlpha"}, sockets={"fac": "Fac"},
         props={"colors": _ramp_colors,
@@ -259,7 +272,9 @@ def check_table(signatures):
             if name not in signatures:
                 raise SystemExit("blender_export: internal: %s names unknown function %s"
                                  % (idname, name))
-            for _, param in signatures[name][2]:
+            for ptype, param in signatures[name][2]:
+                if ptype == "sam2D":  # the node's image (Export.image_binding)
+                    continue
                 known = set(spec.get("sockets", {})) | set(spec.get("props", {}))
                 if spec.get("object_props"):
                     known |= {"bboxMin", "bboxMax", "axisX", "axisY", "axisZ"}
