@@ -85,7 +85,9 @@ def main():
         # 5. Feed a parameter from another node: the committed graph saved over graph.json.
         with open(opts["final"]) as f:
             final = json.load(f)
-        final["sources"] = [os.path.normpath(os.path.join(os.path.dirname(opts["final"]), x))
+        # The library's files where the repository has them; dots.cl stays the copy in DIR.
+        final["sources"] = [x if x == "dots.cl" else
+                            os.path.normpath(os.path.join(os.path.dirname(opts["final"]), x))
                             for x in final["sources"]]
         hellos = page.state()["hellos"]
         with open(graph_path, "w") as f:

@@ -13,9 +13,10 @@ a material per node that makes it live. --graphs: each graph as it is (a session
 session renders a grid of quads, one per material of the graph (OBJ copies of --quad).
 
 Per session: waits for an image; checks the errors panel says "none"; for every constant input
-of the edit schema finds its control in the page and drives one edit through it (the slider
-with the arrow keys, a number field retyped, a vector's first field, a ramp's first cell),
-and waits for texrender's 'applied' answer to that message, with the value sent. Prints one
+of the edit schema finds its control in the page and drives one edit through it, in the page
+(a slider stepped, a number field changed, a vector's first field, a ramp's first cell: the
+control's own handler sends the message), and waits for texrender's 'applied' answer to each
+message, with the node, argument and value sent. Prints one
 line per session and, last, whether every constant input had a working control; timings go to
 DIR/timing.txt.
 """
@@ -25,9 +26,6 @@ import os
 import subprocess
 import sys
 import time
-
-from selenium.webdriver.common.by import By
-from selenium.webdriver.common.keys import Keys
 
 from serve_browser import Page, start_server
 
@@ -107,44 +105,59 @@ def grid_scene(graph, quad, folder):
     return path
 
 
-def retype(box, text):
-    box.send_keys(Keys.CONTROL, "a")
-    box.send_keys(text, Keys.TAB)
+# Drives one edit through the control of each constant input, in the page (one script, no
+# WebDriver round trip per control): the control's own event handler sends the message, as a
+# user's change would. Returns, per input, the id of the message it sent or why none was sent.
+DRIVE = """
+const [inputs] = arguments;
+const p = window.preview;
+const byId = (id) => document.getElementById(id);
+const fire = (el, kind) => el.dispatchEvent(new Event(kind, { bubbles: true }));
+const other = (v) => (v === 0.25 ? 0.75 : 0.25);
+return inputs.map(([node, put]) => {
+  const base = `ctl-${node}-${put.name}`;
+  const before = p.sent.length;
+  const t = put.type;
+  let el = null;
+  if (t === "float") {
+    el = byId(base);
+    if (!el || el.type !== "range") return { why: "no slider" };
+    if (Number(el.value) >= Number(el.max)) el.stepDown(); else el.stepUp();
+    fire(el, "input");
+  } else if (t === "int") {
+    el = byId(base);
+    if (!el || el.type !== "number") return { why: "no number field" };
+    const v = put.value;
+    el.value = put.max == null || v + 1 <= put.max ? v + 1 : v - 1;
+    fire(el, "change");
+  } else if (/^float[234]$/.test(t)) {
+    el = byId(base + "-0");
+    if (!el) return { why: "no vector fields" };
+    el.value = other(put.value[0]);
+    fire(el, "change");
+  } else if (t.startsWith("__global")) {
+    const table = byId(base);
+    el = table && table.querySelector("input[type=number]");
+    if (!el) return { why: "no rows" };
+    const first = Array.isArray(put.value[0]) ? put.value[0][0] : put.value[0];
+    el.value = other(first);
+    fire(el, "change");
+  } else {
+    return { why: `no control for type ${t}` };
+  }
+  if (p.sent.length !== before + 1) return { why: "the control sent nothing" };
+  return { id: p.sent[p.sent.length - 1].id, value: p.sent[p.sent.length - 1].value };
+});
+"""
 
-
-def drive(page, node, put):
-    """Drives one edit of constant input PUT of NODE through its control; returns the message
-    sent, or a reason why there is no working control."""
-    find = page.driver.find_elements
-    base = f"ctl-{node}-{put['name']}"
-    t, value = put["type"], put["value"]
-    if t == "float":
-        slider = find(By.ID, base)
-        if not slider or slider[0].get_attribute("type") != "range":
-            return "no slider"
-        at_max = float(slider[0].get_attribute("value")) >= float(slider[0].get_attribute("max"))
-        slider[0].send_keys(Keys.ARROW_LEFT if at_max else Keys.ARROW_RIGHT)
-    elif t == "int":
-        box = find(By.ID, base)
-        if not box or box[0].get_attribute("type") != "number":
-            return "no number field"
-        top = put.get("max")
-        retype(box[0], str(value + 1 if top is None or value + 1 <= top else value - 1))
-    elif t in ("float2", "float3", "float4"):
-        box = find(By.ID, base + "-0")
-        if not box:
-            return "no vector fields"
-        retype(box[0], repr(0.25 if value[0] != 0.25 else 0.75))
-    elif t.startswith("__global"):
-        table = find(By.ID, base)
-        cells = table[0].find_elements(By.CSS_SELECTOR, "input[type=number]") if table else []
-        if not cells:
-            return "no rows"
-        first = value[0][0] if isinstance(value[0], list) else value[0]
-        retype(cells[0], repr(0.25 if first != 0.25 else 0.75))
-    else:
-        return f"no control for type {t}"
-    return None
+ANSWERS = """
+const p = window.preview;
+const ids = new Set(arguments[0]);
+const out = {};
+for (const m of p.applied) if (ids.has(m.id)) out[m.id] = { applied: m };
+for (const m of p.errors) if (ids.has(m.id)) out[m.id] = { error: m };
+return out;
+"""
 
 
 def walk_session(page, name, server, url, timing):
@@ -159,36 +172,28 @@ def walk_session(page, name, server, url, timing):
     errors = page.text("errors")
     constants = [(n["id"], put) for n in schema["nodes"] for put in n["inputs"] if "value" in put]
     failures, applied = [], 0
-    for node, put in constants:
-        sent_before = page.js("return window.preview.sent.length;")
-        why = drive(page, node, put)
-        if why is None:
-            try:
-                page.wait(f"the message of {node}.{put['name']}",
-                          lambda s: s["sent"] > sent_before, timeout=20)
-            except SystemExit:
-                why = "the control sent nothing"
-        if why is None:
-            sent = page.last_sent()
-            look = ("const id = arguments[0]; const p = window.preview;"
-                    " const a = p.applied.find((m) => m.id === id);"
-                    " const e = p.errors.find((m) => m.id === id);"
-                    " return a ? {applied: a} : (e ? {error: e} : null);")
-            try:
-                page.wait(f"texrender's answer to {node}.{put['name']}",
-                          lambda s: page.js(look, sent["id"]) is not None, timeout=120)
-                answer = page.js(look, sent["id"])
-            except SystemExit as e:
-                answer = {"error": {"message": f"no answer: {e}"}}
-            if "error" in answer:
-                why = "refused: " + answer["error"]["message"]
-            elif (answer["applied"].get("node"), answer["applied"].get("arg"),
-                  answer["applied"].get("value")) != (node, put["name"], sent["value"]):
-                why = f"applied something else: {answer['applied']}"
-            else:
-                applied += 1
+    driven = page.js(DRIVE, constants)
+    ids = [d["id"] for d in driven if "id" in d]
+    try:
+        page.wait("texrender's answers", lambda s: len(page.js(ANSWERS, ids)) == len(ids),
+                  timeout=300)
+    except SystemExit:
+        pass
+    answers = {int(k): v for k, v in page.js(ANSWERS, ids).items()}
+    for (node, put), d in zip(constants, driven):
+        why = d.get("why")
+        answer = answers.get(d.get("id"))
+        if why is None and answer is None:
+            why = "no answer from texrender"
+        elif why is None and "error" in answer:
+            why = "refused: " + answer["error"]["message"]
+        elif why is None and (answer["applied"].get("node"), answer["applied"].get("arg"),
+                              answer["applied"].get("value")) != (node, put["name"], d["value"]):
+            why = f"applied something else: {answer['applied']}"
         if why:
             failures.append(f"{name}: {node}.{put['name']} ({put['type']}): {why}")
+        else:
+            applied += 1
     took = time.monotonic() - t0
     timing.write(f"{name}: first image {t_image:.1f} s, {len(constants)} edits, "
                  f"session {took:.1f} s\n")
