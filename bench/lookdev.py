@@ -29,7 +29,12 @@ split of that first frame ("source change" line: texcc, the compiler priming wai
 adoption and its program builds, the pass) and its own time from the change to the takeover
 ("the background build is done: ... N ms after the change that needed it").
 
+Issue 36 (--save-to-image): save -> first image with the new code in the default configuration
+(texcc without --mode, texrender --watch without options) and in each mode, from a cold session
+(empty program caches) and a warm one, interleaved; bench/results/lookdev-save.json.
+
 usage: bench/lookdev.py [--quick] [--transport ws|control] [--build DIR] [--out FILE]
+       bench/lookdev.py --save-to-image [--modes default,shape] [--saves 4] [--reps 2]
 """
 import argparse
 import asyncio
@@ -311,6 +316,111 @@ def source_edit(transport, tools, textures, folder, work, wait_quick=True):
             "texrenderSplit": source_split(log) if log else None}
 
 
+SAVE_MODES = ("default", "interp", "shape", "inline", "wavefront")
+
+
+def save_to_image(tools, mode, folder, work, cold, saves):
+    """Issue 36: save -> the first image with the new code, for a texcc mode ("default": no
+    --mode flag) in a fresh session (cold: empty texrender and PoCL program caches; warm: the
+    shared cache, whose kernels the warm-up filled, and PoCL's), `saves` saves of rust.cl with a
+    new constant each (no cache has that kernel), each made once the previous save's change has
+    reached a complete frame; the first is made right after the session's first complete frame.
+    Measured at the client: from the save to the frame event that carries texrender's "source"
+    split (the first image written with the new code; it includes the up to 100 ms until
+    texrender's poll notices the save). The default configuration: texrender without
+    TEXRENDER_FIRST_BUILD (the quick first build on)."""
+    path = os.path.join(folder, "rust.cl")
+    with open(path) as f:
+        original = f.read()
+    tex = os.path.join(work, "tex-save-%s-%d" % (mode, time.monotonic_ns()))
+    cmd = [tools.texcc, "--graph", os.path.join(folder, "graph.json"), "-o", tex]
+    if mode != "default":
+        cmd.insert(1, "--mode=" + mode)
+    common.run(cmd)
+    env = dict(os.environ)
+    for var in ("TEXRENDER_FIRST_BUILD", "TEXRENDER_PREBUILT_DIR", "TEXRENDER_ANNOUNCE_AFTER"):
+        env.pop(var, None)
+    cache = tools.cache
+    if cold:
+        cache = os.path.join(work, "cold-cache-%d" % time.monotonic_ns())
+        env["POCL_CACHE_DIR"] = os.path.join(cache, "pocl")
+        os.makedirs(env["POCL_CACHE_DIR"])
+    log_name = os.path.join(work, "save-%s-%d.log" % (mode, time.monotonic_ns()))
+    events = queue.Queue()
+    with open(log_name, "w") as log:
+        proc = subprocess.Popen([tools.texrender, SCENE, "--textures", tex, "--size", SIZE,
+                                 "--spp", str(SPP), "--device", tools.device, "--cache-dir",
+                                 cache, "--watch", "--control", "-o",
+                                 os.path.join(work, "save.png")],
+                                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=log,
+                                text=True, bufsize=1, env=env, start_new_session=True)
+
+        def pump():
+            for line in proc.stdout:
+                e = json.loads(line)
+                e["t"] = time.perf_counter()
+                events.put(e)
+            events.put(None)
+        threading.Thread(target=pump, daemon=True).start()
+
+        class Ch:
+            name = "control"
+        Ch.events = events
+        out = []
+        try:
+            next_event(Ch, lambda e: is_frame(e, SPP), "the session's first complete frame")
+            for _ in range(saves):
+                edited = change_constant(original)
+                t0 = time.perf_counter()
+                with open(path, "r+") as f:
+                    f.write(edited)
+                    f.truncate()
+                first = next_event(Ch, lambda e: is_frame(e) and "source" in e,
+                                   "the first frame with the new code")
+                out.append({"ms": (first["t"] - t0) * 1000, "tier": first.get("tier"),
+                            "reduced": bool(first.get("reduced")),
+                            "texrender": first["source"]})
+                common.log("lookdev: save -> image, %s %s: %.0f ms (tier %s; build %s ms)" % (
+                    mode, "cold" if cold else "warm", out[-1]["ms"], out[-1]["tier"],
+                    first["source"].get("build_ms")))
+                next_event(Ch, lambda e: is_frame(e, SPP), "a complete frame with the new code")
+        finally:
+            os.killpg(proc.pid, signal.SIGKILL)  # quit would first finish background builds
+            proc.wait()
+            with open(path, "w") as f:
+                f.write(original)
+            if cold:
+                shutil.rmtree(cache, ignore_errors=True)
+    return out
+
+
+def save_to_image_figures(tools, folder, work, reps, saves, modes):
+    """Every mode, cold and warm sessions, interleaved (the order rotating per repetition);
+    p50/p95 of the saves pooled per mode and kind, and of the first save of each session."""
+    runs = {m: {"cold": [], "warm": []} for m in modes}
+    loads = []
+    for rep in range(reps):
+        order = modes[rep % len(modes):] + modes[:rep % len(modes)]
+        for mode in order:
+            for cold in (True, False):
+                loads.append(float(open("/proc/loadavg").read().split()[0]))
+                runs[mode]["cold" if cold else "warm"].append(
+                    save_to_image(tools, mode, folder, work, cold, saves))
+    out = {"saves": saves, "reps": reps, "load1": [min(loads), max(loads)], "modes": {}}
+    for mode in modes:
+        out["modes"][mode] = {}
+        for kind in ("cold", "warm"):
+            sessions = runs[mode][kind]
+            ms = [x["ms"] for s in sessions for x in s]
+            first = [s[0]["ms"] for s in sessions if s]
+            out["modes"][mode][kind] = {
+                "p50": percentile(ms, 50), "p95": percentile(ms, 95), "max": max(ms),
+                "n": len(ms), "firstEditMs": [round(x) for x in first],
+                "tiers": sorted({x["tier"] for s in sessions for x in s}),
+                "sessions": sessions}
+    return out
+
+
 def takeover_ms(log_path):
     """texrender's time from the change to the shape kernel built behind the quick tier
     taking over (its 'the background build is done' line), or None."""
@@ -420,9 +530,35 @@ def main():
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
     ap.add_argument("--device", default="0")
     ap.add_argument("--out", help="result file (default bench/results/lookdev.json)")
+    ap.add_argument("--save-to-image", action="store_true",
+                    help="only the issue-36 figure: save -> first image with the new code, "
+                         "per mode (--modes), cold and warm sessions")
+    ap.add_argument("--modes", default=",".join(SAVE_MODES))
+    ap.add_argument("--saves", type=int, default=4, help="saves per session (--save-to-image)")
+    ap.add_argument("--reps", type=int, default=2, help="sessions per mode and kind")
     args = ap.parse_args()
     tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-bench-"),
                          args.device)
+    if args.save_to_image:
+        work = tempfile.mkdtemp(prefix="lookdev-", dir=tools.work)
+        folder, textures = prepare(tools, work)
+        for mode in ("interp", "shape"):  # the warm sessions' cache (not part of any figure)
+            common.texrender(tools, SCENE, textures[mode], "lookdev-warm-" + mode,
+                             ["--size", SIZE, "--spp", "1"])
+        modes = [m for m in args.modes.split(",") if m]
+        data = {"saveToImage": save_to_image_figures(tools, folder, work, args.reps, args.saves,
+                                                     modes),
+                "uptime": uptime()}
+        data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+        data["git"] = common.git_head()
+        data["command"] = "bench/lookdev.py " + " ".join(sys.argv[1:])
+        common.save("lookdev-save", data, args.out)
+        for mode, kinds in data["saveToImage"]["modes"].items():
+            for kind, r in kinds.items():
+                print("%-9s %-4s save -> image p50 %5.0f ms  p95 %5.0f ms  max %5.0f ms  "
+                      "first edits %s  tiers %s" % (mode, kind, r["p50"], r["p95"], r["max"],
+                                                    r["firstEditMs"], ",".join(r["tiers"])))
+        return
     data = measure(tools, args.quick, args.transport)
     data["date"] = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     data["git"] = common.git_head()

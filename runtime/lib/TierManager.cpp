@@ -81,8 +81,13 @@ cl::Program TierManager::buildForeground(const std::string &Path, const std::str
   std::vector<std::string> Names = textureKernelNames();
   if (tierUsesUniforms(Fallback))
     Names.push_back(Lay.Uniforms);
-  cl::Program P = Cl.buildProgram(Path, Source, ProgramOptions + ExtraOptions, "", false,
-                                  [&](const cl::Program &Q) { warmUpKernels(Cl, Q, Names, Path); });
+  // A quick first build is not warmed up: its first frame compiles only the work-group function
+  // it launches (the reduced first pass: the small-grid one), about half of warming both (rust's
+  // interp kernel at load 6.6: build 231 ms, each launch's compile 596 ms; bench/coldstart.md).
+  std::function<void(const cl::Program &)> WarmUp;
+  if (!QuickFirst)
+    WarmUp = [&](const cl::Program &Q) { warmUpKernels(Cl, Q, Names, Path); };
+  cl::Program P = Cl.buildProgram(Path, Source, ProgramOptions + ExtraOptions, "", false, WarmUp);
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);
@@ -167,6 +172,7 @@ void TierManager::build(bool HasWork) {
                                Headroom + QuickFirstOption, /*QuickFirst=*/true),
                false);
       ActiveQuickFirst = true;
+      QuickFirstFrame = FramesRendered;
       Layout Same = Lay;
       TierJob Job{/*SameLayout=*/true, /*Shape=*/true, /*Interp=*/false, Source, {}, 0, Headroom};
       HeldOptimised = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
@@ -464,8 +470,13 @@ void TierManager::reapRetired(bool Wait) {
 }
 
 const std::string &TierManager::beginFrame() {
-  if (FramesRendered > 0)
-    startHeldOptimised(); // a frame is complete: the optimised build behind a quick first build
+  // The optimised build behind a quick first build starts once two frames of the quick build
+  // are complete: the first compiled the work-group function it launched (a watch session's
+  // reduced first pass: the small-grid one), the second the other (the first full-resolution
+  // pass). Started earlier, its compile holds up those launches (PoCL compiles one at a time):
+  // rust's first image after a save waited 4-7 s for it (bench/coldstart.md).
+  if (FramesRendered >= QuickFirstFrame + 2)
+    startHeldOptimised();
   adoptReadyBuild(); // a background shape build that finished since the last frame
   ++FramesRendered;
   return ActiveTier;

@@ -117,10 +117,11 @@ public:
   /// layout's own kernel (interp, inline, wavefront mode) whose optimised program is not in the
   /// program cache is built first with TEXCC_FN noinline (texcc_device.h; the kernel's text is
   /// unchanged, the option is -DTEXCC_FN=...): PoCL compiles each function once and vectorises
-  /// nothing, several times faster to build, slower per hit, the same values bit for bit. The
-  /// optimised program (the same text, inlined) is built on the background thread once a pass
-  /// is done (passDone, fullPassDone, or the next frame) and takes over at the next pass or
-  /// frame; its binary goes to the cache, so the next run loads it.
+  /// nothing, several times faster to build, slower per hit, the same values bit for bit. It is
+  /// not warmed up (its first launches compile what they use). The optimised program (the same
+  /// text, inlined) is built on the background thread after a pass of a frame (passDone), a
+  /// full-resolution pass (fullPassDone) or two complete frames, and takes over at the next
+  /// pass or frame; its binary goes to the cache, so the next run loads it.
   void setQuickFirstBuild(bool On) { QuickFirstBuild = On; }
   /// Between two passes of a frame (Renderer::render): starts the optimised build held behind a
   /// quick first build and adopts it once it is done (the same values: the frame goes on).
@@ -225,6 +226,7 @@ private:
   std::optional<QueuedBuild> HeldShape; // the quick tier's shape kernel, until fullPassDone
   bool QuickFirstBuild = true;
   bool ActiveQuickFirst = false; // the kernel that renders is a quick first build
+  unsigned QuickFirstFrame = 0;  // FramesRendered when it was built
   // The optimised build behind a quick first build, until a pass is done (passDone,
   // fullPassDone, or the next frame's beginFrame).
   std::optional<QueuedBuild> HeldOptimised;
