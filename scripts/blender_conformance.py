@@ -439,7 +439,8 @@ for name, freq, squash, smooth in (("brick", 2, 1.0, 0.1), ("brick-squashed-shar
 # y (the lookup's u and v) run over about four periods, negative ones included. One more: bytes
 # with alpha below 1 (the colour comes out associated, as Cycles gives it when Alpha is unused).
 IMAGE_KINDS = {"srgb": (False, "sRGB", False), "noncolor": (False, "Non-Color", False),
-               "linear": (True, "Linear Rec.709", False), "srgb-alpha": (False, "sRGB", True)}
+               "linear": (True, "Linear Rec.709", False), "srgb-alpha": (False, "sRGB", True),
+               "srgb16": (False, "sRGB", False)}
 IMAGE_INTERPOLATIONS = ["Linear", "Closest", "Cubic"]
 IMAGE_EXTENSIONS = ["REPEAT", "EXTEND", "CLIP", "MIRROR"]
 
@@ -450,6 +451,11 @@ def image_spec(kind):
     rng = random.Random("texcc-" + kind)
     w, h = 6, 5
     pixels = []
+    if kind == "srgb16":  # a 16-bit PNG file, which Blender reads into a linear float buffer
+        for _ in range(w * h):
+            pixels += [rng.randrange(65536) / 65535.0 for _ in range(3)] + [1.0]
+        return {"kind": kind, "width": w, "height": h, "float": False, "bits": 16,
+                "colorspace": colorspace, "pixels": pixels}
     for _ in range(w * h):
         if is_float:
             pixels += [round(rng.uniform(0.0, 2.0), 4) for _ in range(3)] + [1.0]
@@ -464,6 +470,9 @@ for kind in IMAGE_KINDS:
     for interpolation in IMAGE_INTERPOLATIONS:
         for extension in IMAGE_EXTENSIONS:
             if kind == "srgb-alpha" and (interpolation != "Linear" or extension != "REPEAT"):
+                continue
+            if kind == "srgb16" and (interpolation, extension) not in (("Linear", "REPEAT"),
+                                                                       ("Cubic", "CLIP")):
                 continue
             iargs = {"image": "IMAGE", "vector": "P",
                      "interpolation": IMAGE_INTERPOLATIONS.index(interpolation),
@@ -596,12 +605,39 @@ def build_variant(v, socket):
     return build
 
 
+def write_png16(path, w, h, pixels):
+    """A 16-bit RGBA PNG of pixels (0..1, Blender's order: the bottom row first)."""
+    import struct
+    import zlib
+    raw = b""
+    for row in range(h - 1, -1, -1):
+        raw += b"\x00" + b"".join(struct.pack(">H", round(v * 65535))
+                                  for v in pixels[row * w * 4:(row + 1) * w * 4])
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + \
+            struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 16, 6, 0, 0, 0))
+                + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
 def make_image(spec):
     """The variant's image in Blender (once per variant): pixels as spec["pixels"] (Blender's
     order, the bottom row first); spec["stored"] becomes what Blender holds (bytes: k / 255)."""
     import bpy
     name = "image-" + spec["kind"]
     image = bpy.data.images.get(name)
+    if image is None and spec.get("bits") == 16:
+        import tempfile
+        path = os.path.join(tempfile.mkdtemp(), name + ".png")
+        write_png16(path, spec["width"], spec["height"], spec["pixels"])
+        image = bpy.data.images.load(path)
+        image.colorspace_settings.name = spec["colorspace"]
+        spec["stored"] = spec["pixels"]  # the file's values (texrender reads the file)
+        return image
+    if spec.get("bits") == 16:
+        return image
     if image is None:
         image = bpy.data.images.new(name, spec["width"], spec["height"], alpha=True,
                                     float_buffer=spec["float"])
@@ -663,6 +699,8 @@ def main():
             fixture["image"] = {"width": spec["width"], "height": spec["height"],
                                 "float": spec["float"], "colorspace": spec["colorspace"],
                                 "pixels": encode(spec["stored"])}
+            if "bits" in spec:
+                fixture["image"]["bits"] = spec["bits"]
         with open(os.path.join(OUT, v["name"] + ".json"), "w") as f:
             json.dump(fixture, f, indent=1)
             f.write("\n")

@@ -65,9 +65,10 @@ typedef struct TexccSettings {
 /* One image bound to a sam2D: texels are linear float4 RGBA, row-major, row 0 at the top
  * (v = 0 at the top row's centre edge). flags: the image's colour space (graph.md "images"),
  * which tex2DFiltered follows as Blender does. */
-#define TEXCC_IMAGE_SRGB 1  /* an 8-bit sRGB file (decoded to linear on load) */
-#define TEXCC_IMAGE_DATA 2  /* Non-Color: never premultiplied by alpha */
-#define TEXCC_IMAGE_BYTES 4 /* an 8-bit file */
+#define TEXCC_IMAGE_SRGB 1   /* sRGB (decoded to linear on load) */
+#define TEXCC_IMAGE_DATA 2   /* Non-Color: never premultiplied by alpha */
+#define TEXCC_IMAGE_BYTES 4  /* an 8-bit file */
+#define TEXCC_IMAGE_SHORTS 8 /* a 16-bit file */
 typedef struct TexccImageInfo {
   int offset; /* first texel in the texel buffer */
   int width;

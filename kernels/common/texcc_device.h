@@ -365,23 +365,25 @@ static inline int texcc_extend(int x, int n, int extension) {
   return x < 0 ? x + n : x;
 }
 
-/* A texel as Cycles interpolates it: an 8-bit sRGB image's colour re-encoded to sRGB (Cycles
- * keeps such images encoded and decodes after interpolation), a colour image's alpha
- * associated; in an 8-bit image as Cycles does it on the bytes, k * a / 255 rounded down. */
+/* A texel as Cycles interpolates it: an sRGB image's colour re-encoded to sRGB (Cycles keeps
+ * such images encoded and decodes after interpolation), a colour image's alpha associated; in
+ * an 8- or 16-bit image as Cycles does it on the integers, k * a / 255 (65535) rounded down. */
 static inline float4 texcc_texel_filtered(__global const float4 *texels, TexccImageInfo im,
                                           int x, int y) {
   if (x < 0 || y < 0) return (float4)(0.0f);
   float4 t = texels[im.offset + y * im.width + x];
   if (im.flags & TEXCC_IMAGE_SRGB) {
-    float3 v = clamp(t.xyz, 0.0f, 1.0f);
+    float3 v = fmax(t.xyz, 0.0f);
     t.xyz = select(1.055f * pow(v, (float3)(1.0f / 2.4f)) - 0.055f, 12.92f * v,
                    isless(v, (float3)(0.0031308f)));
   }
   if (!(im.flags & TEXCC_IMAGE_DATA) && t.w != 1.0f) {
-    if (im.flags & TEXCC_IMAGE_BYTES)
-      t.xyz = floor(rint(t.xyz * 255.0f) * rint(t.w * 255.0f) / 255.0f) / 255.0f;
-    else
+    if (im.flags & (TEXCC_IMAGE_BYTES | TEXCC_IMAGE_SHORTS)) {
+      const float m = (im.flags & TEXCC_IMAGE_BYTES) ? 255.0f : 65535.0f;
+      t.xyz = floor(rint(t.xyz * m) * rint(t.w * m) / m) / m;
+    } else {
       t.xyz *= t.w;
+    }
   }
   return t;
 }
@@ -397,9 +399,9 @@ static inline float4 texcc_bspline(float t) {
  * interpolation 0 Linear, 1 Closest, 2 Cubic (uniform cubic B-spline, as Cycles'); extension
  * 0 Repeat, 1 Extend, 2 Clip (transparent black outside), 3 Mirror. A colour image (not
  * Non-Color) is interpolated with alpha associated and, with straight != 0, divided by the
- * interpolated alpha afterwards (Cycles does so when the node's Alpha output is used); an 8-bit
- * sRGB image is interpolated in sRGB and decoded after (Blender gives Cycles other images as
- * linear floats). Returns linear RGBA. */
+ * interpolated alpha afterwards (Cycles does so when the node's Alpha output is used); an sRGB
+ * image is interpolated in sRGB and decoded after, as Cycles reads image files. Returns linear
+ * RGBA. */
 static inline float4 texcc_tex2DFiltered(const TexccCtx *c, sam2D s, float2 uv,
                                          int interpolation, int extension, int straight) {
   if (s < 0) return (float4)(1.0f, 0.0f, 1.0f, 1.0f);

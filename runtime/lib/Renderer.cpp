@@ -214,11 +214,11 @@ void Renderer::uploadLayoutData() {
   std::vector<TexccImageInfo> Infos;
   for (const LayoutImage &I : Lay.Images) {
     ImageRGBA Img = loadTexture(I.Path, I.ColorSpace);
-    // What tex2DFiltered needs to read the image as Cycles does (texcc_device.h): Blender
-    // hands Cycles 8-bit images as bytes (sRGB ones still encoded), others as linear floats.
+    // What tex2DFiltered needs to read the image as Cycles reads an image file (texcc_device.h):
+    // sRGB ones still encoded, 8- and 16-bit ones as integers.
     const int Flags = (Img.ColorSpace == "Non-Color" ? TEXCC_IMAGE_DATA : 0) |
-                      (Img.Bits == 8 ? TEXCC_IMAGE_BYTES : 0) |
-                      (Img.Bits == 8 && Img.ColorSpace == "sRGB" ? TEXCC_IMAGE_SRGB : 0);
+                      (Img.ColorSpace == "sRGB" ? TEXCC_IMAGE_SRGB : 0) |
+                      (Img.Bits == 8 ? TEXCC_IMAGE_BYTES : Img.Bits == 16 ? TEXCC_IMAGE_SHORTS : 0);
     TexccImageInfo Info{int(Texels.size()), Img.Width, Img.Height, Flags};
     Infos.push_back(Info);
     for (size_t P = 0; P < Img.Pixels.size(); P += 4)

@@ -93,13 +93,14 @@ def srgb_to_linear(v):
 def image_texels(image, path):
     """A fixture's image as texcc-eval's --texels file: the linear RGBA texels texrender's loader
     makes of the values Blender holds (sRGB colour decoded; rows top first, Blender's bottom
-    first) and the flags texrender gives it (TEXCC_IMAGE_SRGB 1, _DATA 2, _BYTES 4:
+    first) and the flags texrender gives it (TEXCC_IMAGE_SRGB 1, _DATA 2, _BYTES 4, _SHORTS 8:
     runtime/lib/Renderer.cpp)."""
     w, h = image["width"], image["height"]
     stored = decode(image["pixels"], 4)
     srgb = image["colorspace"] == "sRGB"
-    flags = (2 if image["colorspace"] == "Non-Color" else 0) | \
-        (0 if image["float"] else 4 | (1 if srgb else 0))
+    bits = 32 if image["float"] else image.get("bits", 8)
+    flags = (2 if image["colorspace"] == "Non-Color" else 0) | (1 if srgb else 0) | \
+        {8: 4, 16: 8}.get(bits, 0)
     lines = ["%d %d %d" % (w, h, flags)]
     for row in range(h - 1, -1, -1):
         for x in range(w):

@@ -605,12 +605,13 @@ inline float4 texcc_texel_filtered(const cl_float4 *texels, TexccImageInfo im, i
   for (int k = 0; k < 3; ++k) {
     float v = t[k];
     if (im.flags & TEXCC_IMAGE_SRGB) {
-      v = v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
+      v = v < 0.0f ? 0.0f : v;
       v = v < 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
     }
+    const float m = (im.flags & TEXCC_IMAGE_BYTES) ? 255.0f : 65535.0f;
     if (!(im.flags & TEXCC_IMAGE_DATA) && t[3] != 1.0f)
-      v = (im.flags & TEXCC_IMAGE_BYTES)
-              ? std::floor(std::nearbyint(v * 255.0f) * std::nearbyint(t[3] * 255.0f) / 255.0f) / 255.0f
+      v = (im.flags & (TEXCC_IMAGE_BYTES | TEXCC_IMAGE_SHORTS))
+              ? std::floor(std::nearbyint(v * m) * std::nearbyint(t[3] * m) / m) / m
               : v * t[3];
     t[k] = v;
   }
