@@ -456,6 +456,34 @@ async def case_token(s, http):
     writer.close()
 
 
+async def case_dotted(s, http):
+    """Node ids holding dots, as the Blender exporter writes them ("Mat/Noise.Fac"): the edit
+    line splits NODE.ARG at the last dot (texrender's grammar) and the answer, which names the
+    node and argument as texrender parsed them, reaches the sending page and the others."""
+    ws, hello = await open_page(s, http)
+    other, _ = await open_page(s, http)
+    # (The old server's hello had "controls", not "schema": read either, to see where it fails.)
+    nodes = hello["schema"]["nodes"] if "schema" in hello else hello["controls"]
+    print("nodes: " + ", ".join(n.get("id", n.get("node")) for n in nodes))
+    await ws.send_str(json.dumps({"type": "set", "id": 5, "node": "Mat/Noise.Fac",
+                                  "arg": "gain", "value": 0.25}))
+    applied = await next_of(ws, "applied")
+    print(f"applied id={applied['id']}: {applied['node']}.{applied['arg']}={applied['value']}")
+    seen = await next_of(other, "applied")
+    print(f"the other page: id={seen['id']} {seen['node']}.{seen['arg']}={seen['value']}")
+    await ws.send_str(json.dumps({"type": "rewire", "id": 6, "node": "Mat/Noise.Fac",
+                                  "arg": "color", "source": "a.b.c"}))
+    applied = await next_of(ws, "applied")
+    print(f"applied id={applied['id']}: {applied['node']}.{applied['arg']} <- {applied['source']}")
+    print(f"lines that reached texrender: {[l.split(' ', 1)[1] for l in s.forwarded()]}")
+    third, hello = await open_page(s, http)
+    node = next(n for n in hello["schema"]["nodes"] if n["id"] == "Mat/Noise.Fac")
+    print("a page opened later: " + ", ".join(
+        f"{i['name']}={i.get('value', i.get('node'))}" for i in node["inputs"]))
+    for w in (ws, other, third):
+        await w.close()
+
+
 async def main_async(case, s):
     async with aiohttp.ClientSession() as http:
         await globals()["case_" + case.replace("-", "_")](s, http)

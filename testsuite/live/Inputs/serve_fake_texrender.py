@@ -7,7 +7,7 @@ that is set, else guessed from the values; the real texrender takes them from la
 (`ID set|rewire NODE.ARG=...`, split as texrender's parseEdit splits it: NODE.ARG at the last
 dot) with an "applied" event carrying node, arg and the value or source (except a rewire onto
 node 'o', refused with an "error" event as texrender refuses a type mismatch), and writes a
-tiny PNG frame every 50 ms.
+tiny PNG frame every 50 ms. $SERVE_FAKE_BROKEN_SCHEMA makes the first node's inputs a number.
 
 Every control line it reads is appended to $SERVE_FAKE_LOG (the tests read what reached
 "texrender"); $SERVE_FAKE_DELAY_MS delays each answer (so that a burst finds an edit in flight).
@@ -70,6 +70,8 @@ def schema_of(graph, folder):
     nodes = [{"id": n["id"], "fn": n["fn"], "file": "tex.cl",
               "inputs": [input_of(n["fn"], k, v) for k, v in n.get("args", {}).items()]}
              for n in graph["nodes"]]
+    if os.environ.get("SERVE_FAKE_BROKEN_SCHEMA"):  # a schema the page's script chokes on
+        nodes[0]["inputs"] = 7
     return {"nodes": nodes, "materials": {}}
 
 
