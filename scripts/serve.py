@@ -39,6 +39,8 @@ WS_HARD_LIMIT = 1024 * 1024
 # copied chunk by chunk, whatever its line lengths.
 MAX_EVENT = 256 * 1024 * 1024
 READ_CHUNK = 64 * 1024
+# The longest text of an error message sent to a page.
+MAX_PAGE_TEXT = 16 * 1024
 # Messages queued for one page. Its own messages' answers hold the reading of its socket at
 # half of this (it waits until they are sent); a page that does not read what other pages'
 # edits broadcast is disconnected at the limit. Frames are not queued: a page gets the newest.
@@ -144,6 +146,12 @@ class Edits:
     def drop_page(self, page):
         for key in [k for k, v in self.waiting.items() if v[1] is page]:
             del self.waiting[key]
+
+
+def bounded(text, limit=MAX_PAGE_TEXT):
+    """TEXT, or its first LIMIT characters and how much was left out (a page gets no message
+    of megabytes: texrender quoting a huge input, say)."""
+    return text if len(text) <= limit else text[:limit] + f"... ({len(text) - limit} more characters)"
 
 
 async def stream_lines(stream, limit, on_too_long):
@@ -282,7 +290,7 @@ class Server:
     def on_answer(self, kind, event):
         sid = event.get("id")
         if sid is None:  # a watched file failed to compile: every page shows it
-            self.last_error = str(event.get("message", ""))
+            self.last_error = bounded(str(event.get("message", "")))
             self.broadcast({"type": "error", "id": None, "message": self.last_error})
             return
         owner = self.edits.answered(sid)
@@ -292,7 +300,7 @@ class Server:
         if kind == "error":
             if page in self.pages:
                 page.send({"type": "error", "id": page_id, "coalesced": coalesced,
-                           "message": str(event.get("message", ""))})
+                           "message": bounded(str(event.get("message", "")))})
             return
         self.last_edit = (sid, page, page_id)
         # What changed, as texrender parsed it: node ids may hold dots, so nothing is split here.

@@ -484,6 +484,21 @@ async def case_dotted(s, http):
         await w.close()
 
 
+async def case_huge_lines(s, http):
+    """texrender's log and events with 10 MiB lines (the fake writes them first): the server
+    reads on (no line limit ends its readers), the page gets the error cut to a bounded size."""
+    ws, hello = await open_page(s, http)
+    error = hello["error"]
+    if error is None:
+        error = (await next_of(ws, "error"))["message"]
+    print(f"the page's error: {error[:24]}... {len(error)} characters, "
+          f"ends {error[error.rindex('('):]}")
+    await ws.close()
+    await still_serving(s, http)
+    log = "".join(s.lines)
+    print(f"the 10 MiB log line passed through: {'x' * 1000 in log}")
+
+
 async def main_async(case, s):
     async with aiohttp.ClientSession() as http:
         await globals()["case_" + case.replace("-", "_")](s, http)
@@ -496,6 +511,8 @@ def main():
     case = sys.argv[1]
     cut = sys.argv.index("--")
     delay = 200 if case == "burst" else 0
+    if case == "huge-lines":
+        os.environ["SERVE_FAKE_HUGE_LINES"] = "1"
     server_args = ["--listen", "0.0.0.0", "--idle-timeout", "1"] if case == "token" else []
     head = sys.argv[2:cut]
     renderer = head[head.index("--renderer") + 1] if "--renderer" in head else FAKE

@@ -7,7 +7,8 @@ that is set, else guessed from the values; the real texrender takes them from la
 (`ID set|rewire NODE.ARG=...`, split as texrender's parseEdit splits it: NODE.ARG at the last
 dot) with an "applied" event carrying node, arg and the value or source (except a rewire onto
 node 'o', refused with an "error" event as texrender refuses a type mismatch), and writes a
-tiny PNG frame every 50 ms. $SERVE_FAKE_BROKEN_SCHEMA makes the first node's inputs a number.
+tiny PNG frame every 50 ms. $SERVE_FAKE_BROKEN_SCHEMA makes the first node's inputs a number;
+$SERVE_FAKE_HUGE_LINES writes a 10 MiB line to stderr and a 10 MiB error event first.
 
 Every control line it reads is appended to $SERVE_FAKE_LOG (the tests read what reached
 "texrender"); $SERVE_FAKE_DELAY_MS delays each answer (so that a burst finds an edit in flight).
@@ -86,6 +87,10 @@ def main():
     delay = float(os.environ.get("SERVE_FAKE_DELAY_MS", "0")) / 1000
     emit({"event": "ready", "graph": "graph.json", "sources": graph["sources"], "width": 2,
           "height": 2, "schema": schema_of(graph, folder)})
+    if os.environ.get("SERVE_FAKE_HUGE_LINES"):  # as texrender once quoted a 10 MB graph
+        sys.stderr.write("texrender: error: " + "x" * (10 << 20) + "\n")
+        sys.stderr.flush()
+        emit({"event": "error", "message": "graph.json: error: " + "y" * (10 << 20)})
     applied, spp = None, 0
     while True:
         ready, _, _ = select.select([sys.stdin], [], [], 0.05)
