@@ -239,7 +239,7 @@ LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
     throw Error(Lay.Dir + "/layout.json: no \"graph\": live edits need the graph the kernel was made from");
   texcc::graph::DiagnosticSink Diags;
   std::optional<texcc::graph::Graph> G =
-      texcc::graph::parseGraph(Lay.GraphPath, readFile(Lay.GraphPath), Diags);
+      texcc::graph::parseGraph(Lay.GraphPath, readGraphFile(Lay.GraphPath), Diags);
   if (!G)
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
   Model = std::move(*G);

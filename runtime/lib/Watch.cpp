@@ -317,7 +317,7 @@ void Session::reloadScene() {
 void Session::applyGraph(const std::set<std::string> &Sources) {
   json New;
   try {
-    New = json::parse(readWholeFile(GraphPath, " graph"));
+    New = json::parse(readGraphFile(GraphPath));
   } catch (const json::parse_error &E) {
     // nlohmann quotes the last token read: a whole 200 MB string, unbounded.
     const std::string What = texcc::boundedMessage(E.what());

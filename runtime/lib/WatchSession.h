@@ -176,7 +176,7 @@ public:
     O.Renderer.AfterPass = [this](const PassProgress &P) { return afterPass(P); };
     O.Renderer.CutPass = [this] { return cutPass(); };
     GraphPath = fs::absolute(Lay.GraphPath).string();
-    Graph = LayGraph = FileGraph = json::parse(readWholeFile(GraphPath, " graph"));
+    Graph = LayGraph = FileGraph = json::parse(readGraphFile(GraphPath));
     TempRoot = (fs::temp_directory_path() / ("texrender-watch-" + std::to_string(::getpid()))).string();
     fs::create_directories(TempRoot);
   }

@@ -79,7 +79,7 @@ static std::map<std::string, std::set<std::string>> constantParameters(const gr:
 static std::optional<gr::Graph> readGraph(const Options &Opts) {
   std::string GraphText, Why;
   if (!whileAllocating("reading the graph",
-                       [&] { return readRegularFile(Opts.GraphPath, GraphText, Why); })) {
+                       [&] { return readRegularFile(Opts.GraphPath, GraphText, Why, MaxGraphBytes); })) {
     fail("cannot read graph '" + Opts.GraphPath + "': " + Why);
     return std::nullopt;
   }

@@ -7,6 +7,8 @@
 #include "texcc/Frontend/Frontend.h"
 #include "texcc/Support/File.h"
 
+#include <filesystem>
+
 #include "clang/Basic/DiagnosticSema.h"
 #include "clang/Frontend/CompilerInstance.h"
 #include "clang/Frontend/FrontendActions.h"
@@ -399,8 +401,12 @@ std::vector<std::string> clangArgs(const std::string &Path, const FrontendOption
 /// error_category of its own so that clang prints the reason at the #include.
 class SpecialFileCategory : public std::error_category {
 public:
+  static constexpr int TooLarge = 1000; // not a file_type
   const char *name() const noexcept override { return "texcc-special-file"; }
   std::string message(int Type) const override {
+    if (Type == TooLarge)
+      return "it is larger than " + std::to_string(texcc::MaxSourceBytes >> 20) +
+             " MiB, the most texcc reads of a texture source";
     switch (static_cast<llvm::sys::fs::file_type>(Type)) {
     case llvm::sys::fs::file_type::fifo_file: return "it is a FIFO, not a regular file";
     case llvm::sys::fs::file_type::socket_file: return "it is a socket, not a regular file";
@@ -425,10 +431,13 @@ public:
 
   llvm::ErrorOr<llvm::vfs::Status> status(const llvm::Twine &Path) override {
     llvm::ErrorOr<llvm::vfs::Status> S = ProxyFileSystem::status(Path);
-    if (S && isSpecialFile(S->getType())) {
-      static const SpecialFileCategory Category;
+    static const SpecialFileCategory Category;
+    if (S && isSpecialFile(S->getType()))
       return std::error_code(static_cast<int>(S->getType()), Category);
-    }
+    // An #include'd file past the size limit (a source itself is checked by runFrontend).
+    if (S && S->getType() == llvm::sys::fs::file_type::regular_file &&
+        S->getSize() > texcc::MaxSourceBytes)
+      return std::error_code(SpecialFileCategory::TooLarge, Category);
     return S;
   }
 
@@ -478,6 +487,15 @@ llvm::Expected<FrontendResult> runFrontend(const std::vector<std::string> &Sourc
     if (!Opts.VirtualFiles.count(S) && !texcc::checkRegularFile(S, Why))
       return llvm::createStringError(std::errc::invalid_argument, "cannot open '%s': %s",
                                      S.c_str(), Why.c_str());
+    // Refused before clang reads it: a 50 MB source took over 60 s (0.5 s per MB).
+    std::error_code EC;
+    const uint64_t Size = Opts.VirtualFiles.count(S) ? Opts.VirtualFiles.at(S).size()
+                                                      : uint64_t(std::filesystem::file_size(S, EC));
+    if (!EC && Size > texcc::MaxSourceBytes)
+      return llvm::createStringError(
+          std::errc::invalid_argument, "cannot read texture source '%s': %s (a source file "
+          "takes the front end about 0.5 s per MB)", S.c_str(),
+          texcc::tooLarge(Size, texcc::MaxSourceBytes).c_str());
   }
   std::vector<std::string> Prefixes = uniquePrefixes(Sources);
   FrontendResult Result;

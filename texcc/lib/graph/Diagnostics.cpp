@@ -1,20 +1,21 @@
 // Clang-style diagnostics: "file:line:col: error: message".
 
 #include "texcc/Graph/Diagnostics.h"
+#include "texcc/Support/Text.h"
 
 namespace texcc::graph {
 
 void DiagnosticSink::error(const SourceLoc &L, std::string Msg) {
-  Diags.push_back({Diagnostic::Severity::Error, L, std::move(Msg)});
+  Diags.push_back({Diagnostic::Severity::Error, L, texcc::boundedMessage(Msg)});
   ++NumErrors;
 }
 
 void DiagnosticSink::warning(const SourceLoc &L, std::string Msg) {
-  Diags.push_back({Diagnostic::Severity::Warning, L, std::move(Msg)});
+  Diags.push_back({Diagnostic::Severity::Warning, L, texcc::boundedMessage(Msg)});
 }
 
 void DiagnosticSink::note(const SourceLoc &L, std::string Msg) {
-  Diags.push_back({Diagnostic::Severity::Note, L, std::move(Msg)});
+  Diags.push_back({Diagnostic::Severity::Note, L, texcc::boundedMessage(Msg)});
 }
 
 static const char *severityName(Diagnostic::Severity S) {

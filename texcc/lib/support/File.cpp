@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -78,9 +80,31 @@ bool checkRegularFile(const std::string &Path, std::string &Why) {
 }
 
 bool readRegularFile(const std::string &Path, std::string &Text, std::string &Why) {
+  return readRegularFile(Path, Text, Why, SIZE_MAX);
+}
+
+std::string tooLarge(unsigned long long Size, size_t MaxBytes) {
+  auto mib = [](unsigned long long B) {
+    char Buf[32];
+    std::snprintf(Buf, sizeof Buf, "%.1f MiB", double(B) / (1 << 20));
+    return std::string(Buf);
+  };
+  return "it is " + std::to_string(Size) + " bytes (" + mib(Size) + "), more than the " +
+         mib(MaxBytes) + " limit";
+}
+
+bool readRegularFile(const std::string &Path, std::string &Text, std::string &Why,
+                     size_t MaxBytes) {
   int Fd = openRegular(Path, Why);
   if (Fd < 0)
     return false;
+  struct stat St;
+  if (MaxBytes != SIZE_MAX && ::fstat(Fd, &St) == 0 &&
+      static_cast<unsigned long long>(St.st_size) > MaxBytes) {
+    Why = tooLarge(static_cast<unsigned long long>(St.st_size), MaxBytes);
+    ::close(Fd);
+    return false;
+  }
   std::string Out;
   char Buf[1 << 16];
   for (;;) {
@@ -95,6 +119,11 @@ bool readRegularFile(const std::string &Path, std::string &Text, std::string &Wh
       return false;
     }
     Out.append(Buf, size_t(N));
+    if (Out.size() > MaxBytes) { // it grew while being read
+      Why = tooLarge(Out.size(), MaxBytes);
+      ::close(Fd);
+      return false;
+    }
   }
   ::close(Fd);
   Text = std::move(Out);

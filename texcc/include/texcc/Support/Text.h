@@ -18,6 +18,13 @@ namespace texcc {
 /// \n, \t or \xHH in the excerpt of a long text and in a short one alike.
 std::string boundedExcerpt(std::string_view Text, size_t Max = 80);
 
+/// A diagnostic made fit to print: every span in single or double quotes or in square brackets
+/// longer than MaxQuote bytes (a name, a key, a token, a JSON pointer the message quotes)
+/// becomes its boundedExcerpt, and each line longer
+/// than MaxLine bytes after that its boundedExcerpt too. The printers of texcc's graph
+/// diagnostics and of texrender's errors pass every message through it.
+std::string boundedMessage(std::string_view Msg, size_t MaxQuote = 256, size_t MaxLine = 4096);
+
 } // namespace texcc
 
 #endif
