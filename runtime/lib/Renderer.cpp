@@ -350,8 +350,9 @@ void Renderer::checkTextureOutputs(const cl::Buffer &Active, int NumActive) {
                     std::isnan(V.s[C]) ? "NaN" : V.s[C] > 0 ? "+inf" : "-inf",
                     P.pixel % unsigned(Settings.Width), P.pixel / unsigned(Settings.Width),
                     P.depth);
-      throw Error("--check-nan: material '" + M.Name + "': node '" + Node + "' (texture output " +
-                  std::to_string(O) + ", component " + std::to_string(C) + ") returned " + Where);
+      throw TextureFault("--check-nan: material '" + M.Name + "': node '" + Node +
+                         "' (texture output " + std::to_string(O) + ", component " +
+                         std::to_string(C) + ") returned " + Where);
     }
   }
 }
