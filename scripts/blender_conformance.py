@@ -482,6 +482,12 @@ for kind in IMAGE_KINDS:
                     {}, {"Vector": "P"}, "image.cl",
                     [("Color", "blImageColor", 3), ("Alpha", "blImageAlpha", 1, ["alphaLinked"])],
                     iargs, image=image_spec(kind))
+# Smart: Cycles' SVM gives Cubic's values (the exporter writes interpolation 2).
+variant("image-srgb-smart-repeat", "ShaderNodeTexImage",
+        {"interpolation": "Smart", "extension": "REPEAT"}, {}, {"Vector": "P"}, "image.cl",
+        [("Color", "blImageColor", 3)],
+        {"image": "IMAGE", "vector": "P", "interpolation": 2, "extension": 0, "alphaLinked": 0},
+        image=image_spec("srgb"))
 # The same with the Alpha output in use (Cycles then divides the colour by the alpha): the
 # bake's Emission Strength is (Alpha > -1), always 1, which Cycles cannot fold away.
 variant("image-srgb-alpha-linear-repeat-straight", "ShaderNodeTexImage",

@@ -10,7 +10,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blender_nodes import (  # noqa: E402
-    DEFAULT_SURFACE, IMAGE_INTERPOLATIONS, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED,
+    DEFAULT_SURFACE, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED,
     PRINCIPLED_INPUTS, SHADERS, VECTOR_MATH_OPS, supported_nodes_text)
 
 
@@ -386,10 +386,6 @@ class MaterialTranslator:
 
     def node_checks(self, node):
         if node.bl_idname == "ShaderNodeTexImage":
-            if node.interpolation not in IMAGE_INTERPOLATIONS:
-                self.refuse("%s: interpolation '%s' is not supported; supported: %s"
-                            % (self.node_where(node), node.interpolation,
-                               ", ".join(IMAGE_INTERPOLATIONS)), "using Linear")
             if node.projection != "FLAT":
                 self.refuse("%s: projection '%s' is not supported; supported: FLAT"
                             % (self.node_where(node), node.projection), "using FLAT")

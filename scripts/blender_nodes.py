@@ -65,7 +65,8 @@ MAP_RANGE_TYPES = ["LINEAR", "STEPPED", "SMOOTHSTEP", "SMOOTHERSTEP"]
 GRADIENT_TYPES = ["LINEAR", "QUADRATIC", "EASING", "DIAGONAL", "RADIAL", "QUADRATIC_SPHERE",
                   "SPHERICAL"]
 COLOR_MODES = ["RGB", "HSV", "HSL"]
-# Image Texture settings texrender's tex2DFiltered has, in its numbering (Smart is refused).
+# Image Texture settings texrender's tex2DFiltered has, in its numbering (Smart is Cubic: Cycles'
+# SVM gives the same values, image-srgb-smart-repeat).
 IMAGE_INTERPOLATIONS = ["Linear", "Closest", "Cubic"]
 IMAGE_EXTENSIONS = ["REPEAT", "EXTEND", "CLIP", "MIRROR"]
 IMAGE_COLORSPACES = ["sRGB", "Linear Rec.709", "Non-Color"]
@@ -173,8 +174,8 @@ NODES = {
     "ShaderNodeTexImage": dict(
         fn={"Color": "blImageColor", "Alpha": "blImageAlpha"}, texture="uv",
         sockets={"vector": "Vector"},
-        props={"interpolation": lambda n: IMAGE_INTERPOLATIONS.index(n.interpolation)
-               if n.interpolation in IMAGE_INTERPOLATIONS else 0,  # refused: Linear
+        props={"interpolation": lambda n: IMAGE_INTERPOLATIONS.index(
+            "Cubic" if n.interpolation == "Smart" else n.interpolation),  # Cycles' SVM: the same
                "extension": _index(IMAGE_EXTENSIONS, "extension"),
                "alphaLinked": lambda n: 1 if n.outputs["Alpha"].is_linked else 0}),
     "ShaderNodeValToRGB": dict(

@@ -131,17 +131,19 @@ def make(out, refused=False):
           image_material(bpy, "Float", floats, "Cubic", "EXTEND", None))
     if refused:
         # What the exporter refuses, one problem each (all reported at once): no image, a
-        # missing file, an unsupported colour space, Smart interpolation, Box projection.
+        # missing file, an unsupported colour space, a channel-packed alpha, Box projection.
         gone = bpy.data.images.new("Gone", 2, 2)
         gone.source, gone.filepath = "FILE", os.path.join(folder, "does-not-exist.png")
         aces = bpy.data.images.new("Aces", 2, 2)
         aces.colorspace_settings.name = "ACEScg"
+        packed_alpha = bpy.data.images.new("ChannelPacked", 2, 2)
+        packed_alpha.alpha_mode = "CHANNEL_PACKED"
         material = bpy.data.materials["Packed"]
         tree = material.node_tree
         last = tree.nodes["Emission"].inputs["Color"]
         for name, image, interpolation, projection in (
                 ("NoImage", None, "Linear", "FLAT"), ("GoneImage", gone, "Linear", "FLAT"),
-                ("AcesImage", aces, "Linear", "FLAT"), ("Smart", packed, "Smart", "FLAT"),
+                ("AcesImage", aces, "Linear", "FLAT"), ("Channels", packed_alpha, "Linear", "FLAT"),
                 ("Box", packed, "Linear", "BOX")):
             tex = tree.nodes.new("ShaderNodeTexImage")
             tex.name, tex.image, tex.interpolation, tex.projection = \
