@@ -55,7 +55,10 @@ Manifest everyField() {
   F.File = "/src/noise.cl";
   F.Return = "float3";
   F.BlockSize = 32;
-  F.Params = {{"p", "float3", 16, 16, 0}, {"n", "int", 4, 4, 16}};
+  // The parameter table's row of p (frontend::parameterDocs); n has none.
+  F.Params = {{"p", "float3", 16, 16, 0,
+               {"(0.7, 0.3, 0.2)", {0.7, 0.3, 0.2}, "0..1", 0.0, 1.0, "a colour"}},
+              {"n", "int", 4, 4, 16, {}}};
   F.Attributes = {"Normal"};
   F.Settings = {"Frame"};
   F.Cost = 17;
