@@ -338,7 +338,8 @@ static std::vector<float> finiteValues(const std::vector<float> &RGB) {
 static std::mutex PngSettingsLock;
 
 static void writeImageWith(const std::string &Path, int Width, int Height,
-                           const std::vector<float> &RGB, bool FastPng) {
+                           const std::vector<float> &RGB, bool FastPng,
+                           OutputGroup *Group = nullptr) {
   std::string Ext = std::filesystem::path(Path).extension().string();
   std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
   if (Ext != ".exr" && Ext != ".png")
@@ -346,7 +347,7 @@ static void writeImageWith(const std::string &Path, int Width, int Height,
   const std::string Step = "writing the image '" + Path + "'";
   texcc::whileAllocating(Step.c_str(), [&] {
     std::vector<float> Finite = finiteValues(RGB);
-    writeAtomically(Path, [&](const std::string &Temp) {
+    auto Write = [&](const std::string &Temp) {
       if (Ext == ".exr")
         return writeExr(Path, Temp, Width, Height, Finite);
       // stb's defaults (each row's best of five filters, deflate level 8), or for a preview
@@ -356,8 +357,56 @@ static void writeImageWith(const std::string &Path, int Width, int Height,
       stbi_write_force_png_filter = FastPng ? 0 : -1;
       stbi_write_png_compression_level = FastPng ? 1 : 8;
       writePng(Path, Temp, Width, Height, Finite);
-    });
+    };
+    if (Group)
+      Group->add(Path, Write);
+    else
+      writeAtomically(Path, Write);
   });
+}
+
+OutputGroup::~OutputGroup() {
+  std::error_code Ignored;
+  for (const auto &[Path, Temp] : Pending)
+    std::filesystem::remove(Temp, Ignored);
+}
+
+void OutputGroup::add(const std::string &Path,
+                      const std::function<void(const std::string &)> &Write) {
+  std::string Why;
+  if (!texcc::checkReplaceable(Path, Why))
+    throw Error(Path + ": cannot write: " + Why);
+  const std::filesystem::path Target(Path);
+  texcc::removeStaleTemporaries(Target.parent_path().string(), {Target.filename().string()});
+  const std::string Temp = texcc::temporaryPathFor(Path);
+  Pending.push_back({Path, Temp}); // removed by the destructor if Write throws
+  Write(Temp);
+}
+
+void OutputGroup::addImage(const std::string &Path, int Width, int Height,
+                           const std::vector<float> &RGB) {
+  writeImageWith(Path, Width, Height, RGB, false, this);
+}
+
+void OutputGroup::addText(const std::string &Path, const std::string &Text) {
+  add(Path, [&](const std::string &Temp) {
+    std::string Why;
+    if (!texcc::writeWholeFile(Temp, Text.data(), Text.size(), Why))
+      throw Error(Path + ": cannot write: " + Why);
+  });
+}
+
+void OutputGroup::commit() {
+  std::error_code EC;
+  for (size_t I = 0; I < Pending.size(); ++I) {
+    std::filesystem::rename(Pending[I].second, Pending[I].first, EC);
+    if (EC) {
+      const std::string Path = Pending[I].first;
+      Pending.erase(Pending.begin(), Pending.begin() + long(I)); // those in place stay
+      throw Error(Path + ": cannot write: " + EC.message());
+    }
+  }
+  Pending.clear();
 }
 
 void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {

@@ -499,10 +499,23 @@ int run(int Argc, char **Argv) try {
     std::fprintf(stderr, "texrender: note: --time-limit %g s: stopped after %d of %d samples per "
                          "pixel (%u passes); the image averages those\n",
                  O.TimeLimit, First.Frame.SamplesDone, S.Render.Spp, First.Frame.Passes);
-  if (!O.Variance.empty())
-    writeImage(O.Variance, OutW, OutH, Variance);
   Builds.record(First);
   Frames.push_back(First);
+  if (Script.empty() && !O.Interactive) {
+    // One render: its outputs appear together or not at all (Image.h, OutputGroup).
+    OutputGroup Outputs;
+    if (!O.Variance.empty())
+      Outputs.addImage(O.Variance, OutW, OutH, Variance);
+    Outputs.addImage(O.Output, OutW, OutH, Image);
+    if (!O.Stats.empty())
+      Outputs.addText(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
+    Outputs.commit();
+    if (int Sig = StopSignal.load())
+      return 128 + Sig;
+    return 0;
+  }
+  if (!O.Variance.empty())
+    writeImage(O.Variance, OutW, OutH, Variance);
   if (!Script.empty())
     writeImage(frameName(O.Output, 0), OutW, OutH, Image);
   for (size_t K = 0; K < Script.size() && !StopSignal.load(); ++K) {

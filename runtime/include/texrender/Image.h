@@ -44,6 +44,27 @@ void writePreviewImage(const std::string &Path, int Width, int Height, const std
 void writeAtomically(const std::string &Path, const std::function<void(const std::string &)> &Write);
 /// writeAtomically for a text file (stats.json).
 void writeTextFile(const std::string &Path, const std::string &Text);
+/// Outputs that appear together (texrender's image, --variance and --stats): each add writes
+/// its file to a temporary beside it at once (an error there removes every temporary of the
+/// group and no output changes: a failing --stats no longer leaves a new image beside the
+/// error), and commit() renames them all into place. A group destroyed without commit()
+/// removes its temporaries.
+class OutputGroup {
+public:
+  OutputGroup() = default;
+  OutputGroup(const OutputGroup &) = delete;
+  OutputGroup &operator=(const OutputGroup &) = delete;
+  ~OutputGroup();
+  void addImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
+  void addText(const std::string &Path, const std::string &Text);
+  /// Write(Temp) makes the file (throwing on an error).
+  void add(const std::string &Path, const std::function<void(const std::string &)> &Write);
+  void commit();
+
+private:
+  std::vector<std::pair<std::string, std::string>> Pending; // output, its temporary
+};
+
 /// The whole of a file, byte for byte. Throws Error "PATH: cannot open" + What (e.g.
 /// " kernel source") + ": " + the reason; a FIFO, a device or a folder is refused, never read
 /// (texcc/Support/File.h).

@@ -77,6 +77,8 @@ static fs::path temporaryFor(const fs::path &Target) {
   return Target.parent_path() / Name;
 }
 
+std::string temporaryPathFor(const std::string &Path) { return temporaryFor(Path).string(); }
+
 bool writeAtomicallyWith(const std::string &Path,
                          const std::function<bool(const std::string &, std::string &)> &Write,
                          std::string &Why) {

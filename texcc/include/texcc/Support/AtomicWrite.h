@@ -28,6 +28,10 @@ bool writeWholeFile(const std::string &Path, const void *Data, size_t Size, std:
 /// Renaming a file over /dev/full would replace the device (as root).
 bool checkReplaceable(const std::string &Path, std::string &Why);
 
+/// A fresh temporary's path for Path (".NAME.tmp<pid>[.<n>]" beside it), for writers that rename
+/// several files together (texrender's OutputGroup).
+std::string temporaryPathFor(const std::string &Path);
+
 /// Calls Write with the temporary's path; when it returns true, renames the temporary to Path.
 /// Path is first checked with checkReplaceable (nothing is written when it fails). On any failure (Write returns false or throws, the rename fails) the temporary is removed,
 /// Path keeps its old contents, and the result is false (Why says why; an exception from
