@@ -89,6 +89,30 @@ TEST_F(AtomicWriteTest, AMissingFolderIsAnError) {
   EXPECT_FALSE(Why.empty());
 }
 
+// /dev/full: every write fails with ENOSPC, as on a full disk. writeWholeFile reports it (stdio
+// lost it when fclose()'s result went unchecked, tinyexr's case).
+TEST_F(AtomicWriteTest, AFullDeviceIsAWriteError) {
+  std::string Why;
+  const std::string Big(1 << 20, 'x');
+  EXPECT_FALSE(texcc::writeWholeFile("/dev/full", Big.data(), Big.size(), Why));
+  EXPECT_EQ(Why, "No space left on device");
+  Why.clear();
+  EXPECT_FALSE(texcc::writeWholeFile("/dev/full", "x", 1, Why));
+  EXPECT_EQ(Why, "No space left on device");
+}
+
+// A device as the target is refused before anything is written beside it (renaming over it
+// would replace the device).
+TEST_F(AtomicWriteTest, ADeviceTargetIsRefused) {
+  std::string Why;
+  EXPECT_FALSE(texcc::checkReplaceable("/dev/full", Why));
+  EXPECT_EQ(Why, "it is a device, not a regular file");
+  Why.clear();
+  EXPECT_FALSE(texcc::checkReplaceable(Dir, Why));
+  EXPECT_EQ(Why, "it is a folder");
+  EXPECT_TRUE(texcc::checkReplaceable(path("new.txt"), Why));
+}
+
 TEST_F(AtomicWriteTest, StaleTemporariesOfADeadProcessAreRemoved) {
   // pid 999999999 cannot exist (pid_max is at most 2^22); this process's own are kept.
   const std::string Mine = ".a.txt.tmp" + std::to_string(::getpid()) + ".3";
