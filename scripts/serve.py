@@ -260,7 +260,8 @@ class Server:
             if kind == "ready":
                 self.ready = event
             self.schema = schema
-            self.last_error = None
+            if event.get("what") != "restore":  # a fault's error stays while its state is undone
+                self.last_error = None
             for page in self.pages:
                 page.send(self.hello())
         elif kind == "frame":

@@ -293,6 +293,7 @@ void Session::recoverFromFault(const TextureFault &X) {
     RenderingGood = Dirty = true;
     say("the last good " + Kernel + "graph render again" +
         (Back ? std::string() : " (without the control channel's rewirings made before)"));
+    reloadEvent("restore"); // front ends show the values rendered again
   } catch (const std::exception &E) {
     say("error: " + std::string(E.what()));
     errorEvent(E.what());
