@@ -44,7 +44,8 @@ TEST(Tier, ShapeLayoutNeedsItsFallback) {
   fs::path Dir = fs::temp_directory_path() / ("texrender-tier-" + std::to_string(::getpid()));
   fs::create_directories(Dir);
   std::ofstream(Dir / "layout.json")
-      << R"({"texcc": 1, "mode": "shape", "kernel": {"source": "proctex.cl"}, "materials": []})";
+      << R"({"texcc": 1, "mode": "shape", "kernel": {"source": "proctex.cl"}, "materials": [],
+             "capabilities": {"shapeKeyed": true, "interpFallback": true}})";
   std::ofstream(Dir / "args.bin") << "";
   try {
     loadLayout(Dir.string());
@@ -55,7 +56,7 @@ TEST(Tier, ShapeLayoutNeedsItsFallback) {
   std::ofstream(Dir / "layout.json")
       << R"({"texcc": 1, "mode": "shape", "kernel": {"source": "proctex.cl",
              "interpFallback": "proctex.interp.cl", "shapes": [{"id": 0, "materials": []}]},
-             "materials": []})";
+             "materials": [], "capabilities": {"shapeKeyed": true, "interpFallback": true}})";
   Layout L = loadLayout(Dir.string());
   EXPECT_EQ(L.InterpFallback, (Dir / "proctex.interp.cl").string());
   EXPECT_EQ(L.NumShapes, 1u);

@@ -218,7 +218,7 @@ TEST(Quickened, LayoutRoundTrip) {
   T.clear();
   // A layout.json around the fields under test (the kernel manifest's required ones).
   auto Manifest = [](const std::string &Fields) {
-    return R"({"texcc": 1, "mode": "interp", "kernel": {}, "materials": [])" +
+    return R"({"texcc": 1, "mode": "interp", "kernel": {}, "materials": [], "capabilities": {})" +
            (Fields.empty() ? std::string() : ", " + Fields) + "}";
   };
   EXPECT_TRUE(readLayoutQuickened(Manifest(""), T, Error)); // an older layout.json: none
