@@ -18,7 +18,7 @@ silently: each must equal Cycles within --tol at the point or at one of its six 
 reported too. Every other point must be within --tol of Cycles.
 
     compare.py --texcc T --eval E --src ROOT --work DIR [--host] [--tol 1e-4]
-               [--rows FILE.json] FIXTURE.json ...
+               [--cl-options STR] [--rows FILE.json] FIXTURE.json ...
 
 Prints one line per (variant, output) and exits 1 if any misses the tolerance.
 """
@@ -168,6 +168,8 @@ def evaluate(args, out_dir, host, points, work, tag, texels=()):
     with open(path, "w") as f:
         f.write("".join("%.9g %.9g %.9g\n" % p for p in points))
     cmd = [args.eval, out_dir, "--points", path] + (["--host"] if host else [])
+    if args.cl_options:
+        cmd += ["--cl-options", args.cl_options]
     for t in texels:
         cmd += ["--texels", t]
     values = [[] for _ in points]
@@ -198,6 +200,8 @@ def main():
     ap.add_argument("--src", required=True)
     ap.add_argument("--work", required=True)
     ap.add_argument("--host", action="store_true")
+    ap.add_argument("--cl-options", default="",
+                    help="texcc-eval's --cl-options: extra options of the device build")
     ap.add_argument("--tol", type=float, default=1e-4)
     ap.add_argument("--rows", help="write the per-output results (JSON) here")
     ap.add_argument("fixtures", nargs="+")

@@ -50,6 +50,9 @@ struct Options {
   /// --texels FILE (repeatable): image I's texels instead of the synthetic ones, each file
   /// "W H FLAGS" and W x H x 4 linear RGBA numbers, row 0 at the top (TexccImageInfo).
   std::vector<std::pair<TexccImageInfo, std::vector<cl_float4>>> Texels;
+  /// --cl-options STR: appended to the device build's options (e.g. the kernel built as
+  /// texrender's quick first build, -DTEXCC_FN=__attribute__((noinline))).
+  std::string ClOptions;
 };
 
 /// Every input of one evaluation: the hits (Grid x materials), settings, synthetic images.
@@ -238,11 +241,12 @@ cl::Device firstDevice() {
 /// every folder of one graph), its kernels with their arguments set, texcc_uniforms run.
 struct DeviceRun {
   DeviceRun(const cl::Context &Ctx, const cl::Device &Dev, cl::CommandQueue &Q,
-            const std::string &OutDir, const LayoutInfo &Info, const Inputs &In)
+            const std::string &OutDir, const LayoutInfo &Info, const Inputs &In,
+            const std::string &ClOptions)
       : Info(Info), NumHits(In.Hits.size()) {
     cl::Program Prog(Ctx, readFile(OutDir + "/proctex.cl"));
     try {
-      Prog.build({Dev}, "-cl-std=CL1.2");
+      Prog.build({Dev}, ("-cl-std=CL1.2 " + ClOptions).c_str());
     } catch (const cl::Error &) {
       die("building " + OutDir + "/proctex.cl on '" + Dev.getInfo<CL_DEVICE_NAME>() +
           "' failed:\n" + Prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(Dev));
@@ -340,7 +344,7 @@ std::vector<float> runOpenCL(const LayoutInfo &Info, const Inputs &In, const Opt
   cl::Device Dev = firstDevice();
   cl::Context Ctx(Dev);
   cl::CommandQueue Q(Ctx, Dev);
-  DeviceRun Run(Ctx, Dev, Q, Opts.OutDir, Info, In);
+  DeviceRun Run(Ctx, Dev, Q, Opts.OutDir, Info, In, Opts.ClOptions);
   Run.enqueue(Q);
   std::vector<float> Out = Run.read(Q);
   if (const std::vector<cl_int> F = Run.faults(Q); F[TEXCC_FAULT_KIND] != TEXCC_FAULT_NONE)
@@ -370,7 +374,7 @@ void timeOpenCL(const Options &Opts) {
     LayoutInfo Info = readLayout(Dir);
     if (Info.OutputsPerMaterial != First.OutputsPerMaterial || Info.NumImages != First.NumImages)
       die(Dir + ": not the materials of " + Opts.OutDirs.front() + " (time folders of one graph)");
-    Runs.push_back(std::make_unique<DeviceRun>(Ctx, Dev, Q, Dir, Info, In));
+    Runs.push_back(std::make_unique<DeviceRun>(Ctx, Dev, Q, Dir, Info, In, Opts.ClOptions));
     Runs.back()->enqueue(Q);
     Q.finish();
   }
@@ -483,11 +487,14 @@ Options parseArgs(int Argc, char **Argv) {
         die("--texels: expected WIDTH x HEIGHT texels of four numbers");
       Opts.Texels.emplace_back(Im, std::move(T));
     }
+    else if (A == "--cl-options")
+      Opts.ClOptions = value();
     else if (A == "--time")
       Opts.TimeReps = static_cast<unsigned>(std::stoul(value()));
     else if (A == "--help" || A == "-h") {
       std::cout << "usage: texcc-eval OUTDIR [--grid N | --points FILE] [--seed S] [--host] [--texels FILE]...\n"
-                   "       texcc-eval OUTDIR [OUTDIR ...] --time R [--grid N] [--seed S]\n";
+                   "                  [--cl-options STR]\n"
+                   "       texcc-eval OUTDIR [OUTDIR ...] --time R [--grid N] [--seed S] [--cl-options STR]\n";
       std::exit(0);
     } else if (!A.empty() && A[0] == '-')
       die("unknown option '" + A + "'");
@@ -502,6 +509,8 @@ Options parseArgs(int Argc, char **Argv) {
     die("several texcc output folders are for --time only");
   if (Opts.TimeReps && Opts.Host)
     die("--time measures the OpenCL kernels, not --host");
+  if (!Opts.ClOptions.empty() && Opts.Host)
+    die("--cl-options is for the OpenCL build, not --host");
   if (Opts.OutDir.empty())
     die("no texcc output folder given (usage: texcc-eval OUTDIR [--grid N] [--seed S] "
         "[--host])");
