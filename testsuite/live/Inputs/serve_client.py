@@ -33,8 +33,11 @@ class Session:
         self.tmp = tempfile.mkdtemp(prefix="serve-client-")
         self.log = os.path.join(self.tmp, "control.log")
         env = dict(os.environ, SERVE_FAKE_LOG=self.log, SERVE_FAKE_DELAY_MS=str(delay_ms))
+        # $SERVE_AUDIT_LOG: the server runs under an audit hook that logs every file it opens.
+        audit = [os.path.join(HERE, "serve_audit.py")] if "SERVE_AUDIT_LOG" in os.environ else []
         self.proc = subprocess.Popen(
-            [sys.executable, SERVE, "--port", "0", "--texrender", renderer] + list(server_args)
+            [sys.executable] + audit + [SERVE, "--port", "0", "--texrender", renderer]
+            + list(server_args)
             + ["--"] + render_args, stderr=subprocess.PIPE, text=True, env=env)
         self.lines = []  # the server's log up to the address line, then all of it (a thread)
         for line in self.proc.stderr:
@@ -84,6 +87,8 @@ async def next_of(ws, kind, timeout=20):
     """The next text message of type KIND (frames and their PNGs are skipped)."""
     deadline = time.monotonic() + timeout
     while True:
+        if time.monotonic() > deadline:  # frames keep coming: receive() alone never times out
+            raise TimeoutError(f"no {kind} message within {timeout} s")
         msg = await ws.receive(timeout=max(0.1, deadline - time.monotonic()))
         if msg.type == aiohttp.WSMsgType.TEXT:
             data = json.loads(msg.data)
@@ -497,6 +502,41 @@ async def case_huge_lines(s, http):
     await still_serving(s, http)
     log = "".join(s.lines)
     print(f"the 10 MiB log line passed through: {'x' * 1000 in log}")
+
+
+async def case_graph_not_a_file(s, http):
+    """graph.json replaced by a FIFO, then by a symbolic link to /dev/zero, while the preview
+    runs (the real texrender): the server reads no user file, texrender refuses each with an
+    error that every page shows, new pages are served, and the graph restored renders again."""
+    folder = os.path.dirname(os.path.abspath(sys.argv[sys.argv.index("--") + 1]))
+    graph = os.path.join(folder, "graph.json")
+    with open(graph) as f:
+        good = f.read()
+    ws, _ = await open_page(s, http)
+
+    async def replace(make, what):
+        tmp = graph + ".new"
+        make(tmp)
+        os.replace(tmp, graph)
+        err = await next_of(ws, "error", timeout=60)
+        print(f"{what}: the page shows: {err['message'][err['message'].index('graph.json'):][:80]}")
+        other, hello = await open_page(s, http)
+        print(f"{what}: a new page is served, its hello has the error: {hello['error'] is not None}")
+        await other.close()
+        with open(tmp, "w") as f:
+            f.write(good)
+        os.replace(tmp, graph)
+        hello = await next_of(ws, "hello", timeout=60)
+        print(f"{what}: graph.json restored: a new hello, error {hello['error']}")
+
+    await replace(os.mkfifo, "a FIFO")
+    await replace(lambda p: os.symlink("/dev/zero", p), "a link to /dev/zero")
+    await ws.close()
+    await still_serving(s, http)
+    if "SERVE_AUDIT_LOG" in os.environ:
+        with open(os.environ["SERVE_AUDIT_LOG"]) as f:
+            opened = sorted({p.strip() for p in f if p.startswith(folder + os.sep)})
+        print(f"files the server opened in the scene's folder: {opened}")
 
 
 async def main_async(case, s):
