@@ -398,18 +398,7 @@ namespace {
 /// layout.json's functions[].params[].doc, docs/abi.md).
 nlohmann::ordered_json paramJson(const gr::Param &P, const kernel::ParamDoc &D) {
   nlohmann::ordered_json J = {{"name", P.Name}, {"type", gr::spelling(P.Type)}};
-  if (!D.Default.empty())
-    J["default"] = D.Default;
-  if (!D.DefaultText.empty())
-    J["defaultText"] = D.DefaultText;
-  if (!D.RangeText.empty())
-    J["range"] = D.RangeText;
-  if (D.Min)
-    J["min"] = *D.Min;
-  if (D.Max)
-    J["max"] = *D.Max;
-  if (!D.Text.empty())
-    J["text"] = D.Text;
+  J.update(kernel::paramDocJson(D));
   return J;
 }
 

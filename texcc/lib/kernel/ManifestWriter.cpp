@@ -76,24 +76,6 @@ OJson capabilitiesJson(const Capabilities &C) {
           {"outputsEntry", C.OutputsEntry}};
 }
 
-/// A parameter's table row: only the cells it has.
-OJson paramDocJson(const ParamDoc &D) {
-  OJson J = OJson::object();
-  if (!D.DefaultText.empty())
-    J["defaultText"] = D.DefaultText;
-  if (!D.Default.empty())
-    J["default"] = D.Default;
-  if (!D.RangeText.empty())
-    J["range"] = D.RangeText;
-  if (D.Min)
-    J["min"] = *D.Min;
-  if (D.Max)
-    J["max"] = *D.Max;
-  if (!D.Text.empty())
-    J["text"] = D.Text;
-  return J;
-}
-
 OJson functionJson(const FunctionLayout &F) {
   OJson Params = arrayOf(F.Params, [](const ParamLayout &P) -> OJson {
     OJson J = {{"name", P.Name}, {"type", P.Type}, {"size", P.Size}, {"align", P.Align},
@@ -155,6 +137,24 @@ OJson argJson(const ArgLayout &A) {
 }
 
 } // namespace
+
+OJson paramDocJson(const ParamDoc &D) {
+  OJson J = OJson::object();
+  if (!D.DefaultText.empty())
+    J["defaultText"] = D.DefaultText;
+  if (!D.Default.empty())
+    J["default"] = D.Default;
+  if (!D.RangeText.empty())
+    J["range"] = D.RangeText;
+  if (D.Min)
+    J["min"] = *D.Min;
+  if (D.Max)
+    J["max"] = *D.Max;
+  if (!D.Text.empty())
+    J["text"] = D.Text;
+  return J;
+}
+
 
 std::string writeManifest(const Manifest &M) {
   OJson J;

@@ -5,6 +5,8 @@
 // one writer. texcc's code generation writes it, the runtime, texcc-eval and the graph editor
 // read it; nobody else parses layout.json. No LLVM, Clang nor graph library here.
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -73,6 +75,10 @@ struct ParamDoc {
   bool empty() const { return DefaultText.empty() && RangeText.empty() && Text.empty(); }
   bool operator==(const ParamDoc &O) const;
 };
+
+/// D as layout.json's functions[].params[].doc spells it (only the cells it has); also what
+/// `texcc --list-nodes --json` prints per parameter.
+nlohmann::ordered_json paramDocJson(const ParamDoc &D);
 
 struct ParamLayout {
   std::string Name, Type; // Type as OpenCL spells it ("float3", "__global float*")
