@@ -102,6 +102,21 @@ static bool hasExrExtension(const std::string &Path) {
   return Ext == ".exr";
 }
 
+/// stb_image's RGBA result D (nullptr: its failure) as Img's pixels, each divided by Scale
+/// (255 or 65535; 1 for floats); D is freed.
+template <class T>
+static void takeStbPixels(T *D, const std::string &Path, float Scale, ImageRGBA &Img) {
+  if (!D && stbiOutOfMemory())
+    throw std::bad_alloc(); // named by loadTexture's step
+  if (!D)
+    throw Error(Path + ": cannot load image: " + stbi_failure_reason());
+  const size_t Count = size_t(Img.Width) * Img.Height * 4;
+  Img.Pixels.resize(Count);
+  for (size_t I = 0; I < Count; ++I)
+    Img.Pixels[I] = float(D[I]) / Scale;
+  stbi_image_free(D);
+}
+
 /// The file's values as stored (8- and 16-bit normalised to 0..1, float as is), RGBA; Float
 /// tells whether the file holds floats (EXR, Radiance HDR): Blender's default colour space of
 /// those is linear, of the others sRGB.
@@ -113,39 +128,14 @@ static ImageRGBA readTexels(const std::string &Path, bool &Float, bool &Bytes) {
   if (hasExrExtension(Path))
     return readExr(Path);
   if (Float) {
-    float *D = stbi_loadf(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
-    if (!D && stbiOutOfMemory())
-      throw std::bad_alloc(); // named by loadTexture's step
-    if (!D)
-      throw Error(Path + ": cannot load image: " + stbi_failure_reason());
-    Img.Pixels.assign(D, D + size_t(Img.Width) * Img.Height * 4);
-    stbi_image_free(D);
-    return Img;
+    takeStbPixels(stbi_loadf(Path.c_str(), &Img.Width, &Img.Height, &N, 4), Path, 1.0f, Img);
+  } else if (stbi_is_16_bit(Path.c_str())) {
+    takeStbPixels(stbi_load_16(Path.c_str(), &Img.Width, &Img.Height, &N, 4), Path, 65535.0f,
+                  Img);
+  } else {
+    Bytes = true;
+    takeStbPixels(stbi_load(Path.c_str(), &Img.Width, &Img.Height, &N, 4), Path, 255.0f, Img);
   }
-  if (stbi_is_16_bit(Path.c_str())) {
-    stbi_us *D = stbi_load_16(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
-    if (!D && stbiOutOfMemory())
-      throw std::bad_alloc();
-    if (!D)
-      throw Error(Path + ": cannot load image: " + stbi_failure_reason());
-    size_t Count = size_t(Img.Width) * Img.Height * 4;
-    Img.Pixels.resize(Count);
-    for (size_t I = 0; I < Count; ++I)
-      Img.Pixels[I] = D[I] / 65535.0f;
-    stbi_image_free(D);
-    return Img;
-  }
-  unsigned char *D = stbi_load(Path.c_str(), &Img.Width, &Img.Height, &N, 4);
-  if (!D && stbiOutOfMemory())
-    throw std::bad_alloc(); // named by loadTexture's step
-  if (!D)
-    throw Error(Path + ": cannot load image: " + stbi_failure_reason());
-  Bytes = true;
-  size_t Count = size_t(Img.Width) * Img.Height * 4;
-  Img.Pixels.resize(Count);
-  for (size_t I = 0; I < Count; ++I)
-    Img.Pixels[I] = D[I] / 255.0f;
-  stbi_image_free(D);
   return Img;
 }
 
