@@ -540,7 +540,10 @@ async def case_graph_not_a_file(s, http):
 
 
 async def main_async(case, s):
-    async with aiohttp.ClientSession() as http:
+    # A new connection per request: the server closes idle keep-alive connections
+    # (--idle-timeout; 1 s in the token case), and a pooled connection reused as the server
+    # closes it fails the request, a race that a loaded machine wins.
+    async with aiohttp.ClientSession(connector=aiohttp.TCPConnector(force_close=True)) as http:
         await globals()["case_" + case.replace("-", "_")](s, http)
 
 
