@@ -173,6 +173,16 @@ void Session::writeProgress(const std::vector<float> &Image, int Spp, int Factor
 bool Session::cutPass() {
   if (!Cuttable)
     return false;
+  // $TEXRENDER_HOLD_PASS (tests of the cut, docs/live.md): the second full-resolution pass of
+  // the first frame starts whatever came after the first (afterPass) and waits at its first
+  // bounce for a change, so that the change finds a pass in flight whatever the machine's speed.
+  if (HoldPass && PassesInFrame == 1) {
+    HoldPass = false;
+    while (!stopping() && !work()) {
+      Waker->waitFor(100);
+      poll();
+    }
+  }
   if (nowSeconds() - LastPoll >= 0.1)
     poll();
   return !stopping() && work();
@@ -181,6 +191,7 @@ bool Session::cutPass() {
 bool Session::afterPass(const PassProgress &P) {
   double Now = nowSeconds();
   PassEnd = Now;
+  ++PassesInFrame;
   Times.record(double(O.Width) * O.Height, Now - PassResume);
   // The first image after a change is written at once; the others at most 4 times a second.
   if (Now - LastWrite >= 0.25 || ChangeAt > 0 || EditAt > 0)
@@ -189,6 +200,8 @@ bool Session::afterPass(const PassProgress &P) {
   if (Now - LastPoll >= 0.1)
     poll();
   PassResume = nowSeconds();
+  if (HoldPass && PassesInFrame == 1)
+    return !stopping(); // pass 2 starts whatever came: cutPass holds it for a change
   return !stopping() && !work();
 }
 
@@ -213,6 +226,7 @@ void Session::renderFrame() {
     say("the background build is done: accumulation restarts with its kernel" + After);
   }
   PassStart = PassResume = nowSeconds();
+  PassesInFrame = 0;
   Cuttable = true;
   std::vector<float> Image;
   try {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <functional>
 #include <filesystem>
@@ -327,6 +328,11 @@ private:
   double PassResume = 0;
   bool Cuttable = false;
   unsigned PassesCut = 0;
+  unsigned PassesInFrame = 0; // full-resolution passes done in the frame being rendered
+  bool HoldPass = [] {
+    const char *E = std::getenv("TEXRENDER_HOLD_PASS");
+    return E && *E && std::string(E) != "0";
+  }();
 };
 
 } // namespace watch

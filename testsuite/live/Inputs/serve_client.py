@@ -443,7 +443,9 @@ async def case_token(s, http):
     warned = any("warning: listening on 0.0.0.0" in line for line in s.lines)
     token = re.fullmatch(r"\?token=([A-Za-z0-9_-]{20,})", s.query)
     print(f"warning printed: {warned}; token in the address: {bool(token)}")
-    for what, query in (("no token", ""), ("a wrong token", "?token=x" + token.group(1)[1:]),
+    real = token.group(1)
+    wrong = ("y" if real[0] == "x" else "x") + real[1:]  # differs from the token in one place
+    for what, query in (("no token", ""), ("a wrong token", "?token=" + wrong),
                         ("the token", "?" + s.query[1:])):
         page = await http.get(s.url + "/" + query)
         try:
