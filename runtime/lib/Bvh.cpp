@@ -1,5 +1,6 @@
 #include "texrender/Bvh.h"
 #include "texrender/Error.h"
+#include "texrender/Threads.h"
 #include "texcc/OutOfMemory.h"
 
 #include <embree3/rtcore.h>
@@ -176,7 +177,7 @@ static Bvh buildBvhSteps(const std::vector<Vec3> &Positions, unsigned MaxLeaf) {
       All.lower_z = std::min(All.lower_z, P.lower_z), All.upper_z = std::max(All.upper_z, P.upper_z);
     }
     Builder B;
-    B.Device = rtcNewDevice(nullptr);
+    B.Device = rtcNewDevice(embreeDeviceConfig().c_str()); // renderThreads() threads
     if (!B.Device && rtcGetDeviceError(nullptr) == RTC_ERROR_OUT_OF_MEMORY)
       throw std::bad_alloc(); // named by buildBvh's step (Embree's threads did not start)
     if (!B.Device)

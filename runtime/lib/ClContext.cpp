@@ -1,12 +1,16 @@
 #include "texrender/ClContext.h"
 #include "texrender/Error.h"
+#include "texrender/Threads.h"
 #include "texcc/Support/AtomicWrite.h"
 #include "texcc/Support/File.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <sched.h>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -59,6 +63,55 @@ std::string defaultCacheDir() {
   return "";
 }
 
+namespace {
+unsigned ThreadsGiven = 0;        // setRenderThreads's N; 0: not called
+bool PlatformQueried = false;     // the first OpenCL call happened (PoCL sized its pool)
+std::once_flag PoclThreadsOnce;
+} // namespace
+
+static unsigned coresAvailable() {
+  cpu_set_t Set;
+  CPU_ZERO(&Set);
+  if (sched_getaffinity(0, sizeof Set, &Set) == 0 && CPU_COUNT(&Set) > 0)
+    return unsigned(CPU_COUNT(&Set));
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+void setRenderThreads(unsigned N) {
+  if (N < 1)
+    throw Error("the thread count must be at least 1");
+  if (PlatformQueried)
+    throw Error("the thread count must be set before the first OpenCL call (PoCL sizes its "
+                "pool then)");
+  ThreadsGiven = N;
+}
+
+unsigned renderThreads() { return ThreadsGiven ? ThreadsGiven : coresAvailable(); }
+
+bool renderThreadsGiven() { return ThreadsGiven != 0; }
+
+std::string embreeDeviceConfig() { return "threads=" + std::to_string(renderThreads()); }
+
+/// PoCL's pthread device starts one worker per compute unit, and takes the count from
+/// POCL_MAX_PTHREAD_COUNT (PoCL 3; later versions also read POCL_CPU_MAX_CU_COUNT when it is
+/// unset) when the platform is first queried, raised to POCL_PTHREAD_MIN_THREADS /
+/// POCL_CPU_MIN_CU_COUNT. --threads sets them; without it, a POCL_MAX_PTHREAD_COUNT already in
+/// the environment is kept (bench/per_hit.py runs PoCL on one thread that way), else it is set
+/// to the cores this process may run on (PoCL itself counts every core of the machine, also
+/// those outside the affinity mask).
+static void sizePoclPool() {
+  std::call_once(PoclThreadsOnce, [] {
+    PlatformQueried = true;
+    if (!ThreadsGiven && std::getenv("POCL_MAX_PTHREAD_COUNT"))
+      return;
+    const std::string N = std::to_string(renderThreads());
+    setenv("POCL_MAX_PTHREAD_COUNT", N.c_str(), 1);
+    setenv("POCL_CPU_MAX_CU_COUNT", N.c_str(), 1);
+    unsetenv("POCL_PTHREAD_MIN_THREADS");
+    unsetenv("POCL_CPU_MIN_CU_COUNT");
+  });
+}
+
 /// The first call of device discovery that failed, and how.
 struct DiscoveryFailure {
   std::string Call;
@@ -73,6 +126,7 @@ allDevices(DiscoveryFailure *Failure = nullptr) {
     if (Failure && Failure->Code == CL_SUCCESS)
       *Failure = {Call, E.err()};
   };
+  sizePoclPool();
   try {
     cl::Platform::get(&Platforms);
   } catch (const cl::Error &E) {

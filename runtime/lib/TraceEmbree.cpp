@@ -1,9 +1,9 @@
 // The Embree trace backend (the default on CPU devices): Embree 3 builds the BVH over the
 // scene's triangles (in SceneData's order, so that Embree's primID is the triangle id the other
 // stages use) and answers closest_hit and shadow with ray streams (rtcIntersect1M,
-// rtcOccluded1M) and ao_trace with ray packets (rtcOccluded8), on every core. It reads and
-// writes the very buffers the OpenCL stages use, mapped in place (on a CPU device the map is
-// the buffer's memory: no copy per bounce). The AO
+// rtcOccluded1M) and ao_trace with ray packets (rtcOccluded8), on renderThreads() threads
+// (texrender --threads, Threads.h). It reads and writes the very buffers the OpenCL stages use,
+// mapped in place (on a CPU device the map is the buffer's memory: no copy per bounce). The AO
 // rays are made by the OpenCL kernel ao_rays (the same rays ao_trace traces); Embree traces
 // each hit's rays as one 8-wide packet (rtcOccluded8): they share an origin, so the packet
 // walks the BVH's nodes near it once for all of them (bench/cycles.md, 2026-12-04: faster
@@ -12,6 +12,7 @@
 
 #include "texrender/Trace.h"
 #include "texrender/Error.h"
+#include "texrender/Threads.h"
 #include "texcc/OutOfMemory.h"
 
 #include <embree3/rtcore.h>
@@ -33,11 +34,12 @@ double seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-/// Runs Fn(Begin, End) over [0, N) in chunks of Chunk, on every hardware thread.
+/// Runs Fn(Begin, End) over [0, N) in chunks of Chunk, on renderThreads() threads (the calling
+/// one among them; Threads.h): the OpenCL stages have finished, so PoCL's pool of as many
+/// threads is idle meanwhile.
 template <typename F> void parallelChunks(size_t N, size_t Chunk, F &&Fn) {
   const size_t Chunks = (N + Chunk - 1) / Chunk;
-  const size_t Threads =
-      std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), Chunks);
+  const size_t Threads = std::min<size_t>(renderThreads(), Chunks);
   std::atomic<size_t> Next{0};
   auto Work = [&] {
     for (size_t C; (C = Next++) < Chunks;)
@@ -104,7 +106,7 @@ class EmbreeTrace final : public Trace {
 public:
   explicit EmbreeTrace(const TraceContext &C) : C(C) {
     double T0 = seconds();
-    Device = rtcNewDevice(nullptr);
+    Device = rtcNewDevice(embreeDeviceConfig().c_str()); // its pool builds the BVH
     if (!Device && rtcGetDeviceError(nullptr) == RTC_ERROR_OUT_OF_MEMORY)
       throw std::bad_alloc(); // named by makeEmbreeTrace's step (Embree's threads did not start)
     if (!Device)

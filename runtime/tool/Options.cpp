@@ -54,6 +54,9 @@ const char *Usage =
     "                       fallback only; shape: wait for the shape kernel's build\n"
     "                       (default: auto with --edit-script or --interactive, else shape)\n"
     "  --device N           OpenCL device (default 0; --list-devices lists them)\n"
+    "  --threads N          threads that render (1..1024; default: every core this process\n"
+    "                       may run on): the CPU device's pool and the trace backend's\n"
+    "                       (Embree), which take turns within a frame\n"
     "  --stats FILE         write stats.json\n"
     "  --check-nan          stop with an error at the first NaN or infinite texture output,\n"
     "                       naming the material, the node and the pixel\n"
@@ -231,6 +234,16 @@ Options parseArgs(int Argc, char **Argv) {
       O.Tier = parseTierPolicy(Next());
     } else if (A == "--device") {
       O.Device = toInt(A, Next());
+    } else if (A == "--threads") {
+      const std::string S = Next();
+      try {
+        O.Threads = toInt(A, S);
+      } catch (const Error &) {
+        O.Threads = 0; // out of int range: the same message as any number outside 1..1024
+      }
+      if (*O.Threads < 1 || *O.Threads > MaxThreads)
+        throw Error("--threads: expected an integer from 1 to " + std::to_string(MaxThreads) +
+                    ", got " + quoted(S));
     } else if (A == "--list-devices") {
       O.ListDevices = true;
     } else if (A == "--trace") {

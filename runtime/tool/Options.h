@@ -25,6 +25,7 @@ struct Options {
   double TimeLimit = 0; // --time-limit seconds; 0: none
   std::vector<std::string> Sets;
   int Device = 0;
+  std::optional<int> Threads; // --threads N (1..MaxThreads); default: every core (Threads.h)
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
   bool Watch = false, Control = false, ReducedFirstPass = true;
@@ -37,6 +38,9 @@ struct Options {
   std::vector<std::string> Forward;
   bool Quiet = false, ForceProgress = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
+
+/// --threads' upper bound.
+constexpr int MaxThreads = 1024;
 
 /// The options of texrender's command line, checked against each other and each output's
 /// folder checked; -h/--help and --version print and exit 0, any error throws Error.

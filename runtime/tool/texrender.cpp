@@ -15,6 +15,7 @@
 #include "texrender/Renderer.h"
 #include "texrender/SlowStep.h"
 #include "texrender/Stats.h"
+#include "texrender/Threads.h"
 #include "texrender/Watch.h"
 
 #include <array>
@@ -378,9 +379,24 @@ Scene loadSceneWithOptions(const Options &O) {
   return S;
 }
 
+/// stats.json: statsJson's, with the threads that rendered: "pool", the count each pool was
+/// given (--threads, else every core), and "openclComputeUnits", the device's own count (on
+/// PoCL's CPU device, its pool's threads).
+nlohmann::json statsWithThreads(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Frames,
+                                double Seconds) {
+  nlohmann::json J = statsJson(R, L, Frames, Seconds);
+  J["threads"] = {{"pool", renderThreads()},
+                  {"given", renderThreadsGiven()},
+                  {"openclComputeUnits", R.cl().device().getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>()}};
+  return J;
+}
+
 int run(int Argc, char **Argv) try {
   double T0 = now();
   Options O = parseArgs(Argc, Argv);
+  // Before any OpenCL call: PoCL sizes its pool when the platform is first queried.
+  if (O.Threads)
+    setRenderThreads(unsigned(*O.Threads));
   if (O.ListDevices) {
     auto Devs = listDevices();
     if (Devs.empty())
@@ -508,7 +524,7 @@ int run(int Argc, char **Argv) try {
       Outputs.addImage(O.Variance, OutW, OutH, Variance);
     Outputs.addImage(O.Output, OutW, OutH, Image);
     if (!O.Stats.empty())
-      Outputs.addText(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
+      Outputs.addText(O.Stats, statsWithThreads(R, L, Frames, now() - T0).dump(2) + "\n");
     Outputs.commit();
     if (int Sig = StopSignal.load())
       return 128 + Sig;
@@ -526,7 +542,7 @@ int run(int Argc, char **Argv) try {
   bool SessionOk = !O.Interactive || StopSignal.load() ||
                    interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty())
-    writeTextFile(O.Stats, statsJson(R, L, Frames, now() - T0).dump(2) + "\n");
+    writeTextFile(O.Stats, statsWithThreads(R, L, Frames, now() - T0).dump(2) + "\n");
   if (int Sig = StopSignal.load())
     return 128 + Sig;
   return SessionOk ? 0 : 1;

@@ -1,0 +1,31 @@
+#ifndef TEXRENDER_THREADS_H
+#define TEXRENDER_THREADS_H
+
+// How many threads render a frame (texrender --threads, docs/cli.md). A frame's stages take
+// turns: an OpenCL stage runs on the CPU device's pool (PoCL's pthread device), then a trace
+// stage on the trace backend's threads (TraceEmbree.cpp's ray chunks; Embree's own pool builds
+// its BVHs). Each pool gets the same count, and only one of them works at a time. Implemented
+// in ClContext.cpp, which owns the first OpenCL call.
+
+#include <string>
+
+namespace texrender {
+
+/// Sets the thread count of every pool (N >= 1). PoCL reads its pool size from the
+/// environment when the OpenCL platform is first queried, so this must come before the first
+/// OpenCL call of the process: afterwards it throws Error. The count is fixed per process.
+void setRenderThreads(unsigned N);
+
+/// The thread count of every pool: setRenderThreads's N, else the cores this process may run on
+/// (its CPU affinity mask; at least 1).
+unsigned renderThreads();
+
+/// Whether setRenderThreads was called (texrender --threads given).
+bool renderThreadsGiven();
+
+/// The configuration string of rtcNewDevice: "threads=N" with N = renderThreads().
+std::string embreeDeviceConfig();
+
+} // namespace texrender
+
+#endif
