@@ -1,9 +1,11 @@
-/* shade.cl: one path vertex per active hit. Adds emission (area lights with MIS against light
- * sampling; sky and sun on a miss; a principled leaf's emission), picks a BSDF leaf of the material's tree (a blend chooses
+/* shade.cl: one path vertex per active hit. Adds emission (the lamps the segment crossed and
+ * emissive meshes, with MIS against light sampling; sky and sun on a miss; a principled leaf's
+ * emission), picks a BSDF leaf of the material's tree (a blend chooses
  * `b` with probability mask), makes one next-event-estimation shadow ray (light chosen by the
  * light CDF, the sun and the sky sharing their part by contribution; MIS, power heuristic), samples the next direction, applies Russian roulette and
  * writes the next ray. Path length follows Mitsuba's max_depth. */
 #include "rt_bsdf.h"
+#include "rt_lamps.h"
 #include "rt_surface.h"
 
 /* Bench-only split of the image by light and by path length (bench/sampling.py,
@@ -15,6 +17,7 @@
 #define RT_SPLIT_SUN 2
 #define RT_SPLIT_SKY 4
 #define RT_SPLIT_MATERIAL 8 /* emission of materials (emission leaves, principled emission) */
+#define RT_SPLIT_LAMP 16    /* point, spot and area lamps */
 #ifdef RT_SPLIT_LIGHTS
 #ifndef RT_SPLIT_MIN_LENGTH
 #define RT_SPLIT_MIN_LENGTH 0
@@ -177,12 +180,13 @@ static inline float rt_rescale(float u, float lo, float width) {
  * coordinate of the point on it (so the points of one light stay stratified); u.z (an
  * independent number) replaces it when the interval is too narrow for the float's bits. With
  * the sun and sky split by q, their joint CDF interval is divided again by q. Returns the
- * direction, the distance limit, the emitted radiance and the solid-angle pdf (0: no
- * contribution). */
+ * direction, the distance limit (0: a lamp that casts no shadow; no shadow ray is traced),
+ * the emitted radiance and the solid-angle pdf (0: no contribution); *delta = 1 for a point
+ * or spot lamp of radius 0 (then le / pdf is its irradiance, and no MIS applies). */
 static inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
                              __global const RtTri *tris, RtShadeParams prm, float3 p,
                              float3 n, uint q, float3 u, float3 *wi, float *tmax, float3 *le,
-                             int *type) {
+                             int *type, int *delta) {
 #ifdef RT_SAMPLER_PCG
   int li = rt_pick_light(cdf, prm.numLights, u.z); /* the stream's order of before */
   float u1 = u.x, u2 = u.y;
@@ -219,6 +223,13 @@ static inline float rt_sample_light(__global const RtLight *lights, __global con
   RtLight l = lights[li];
   *type = l.type;
   *le = l.radiance.xyz;
+  *delta = 0;
+  if (l.type >= RT_LIGHT_POINT) {
+    float dist = 0.0f;
+    float pdf = rt_lamp_sample(l, p, u1, u2, wi, &dist, le, delta);
+    *tmax = (l.tri & RT_LAMP_NO_SHADOW) ? 0.0f : dist * (1.0f - 1e-3f);
+    return l.select * pdf;
+  }
   if (l.type == RT_LIGHT_TRIANGLE) {
     __global const RtTri *t = &tris[l.tri];
     float2 b = rt_sample_triangle(u1, u2);
@@ -263,6 +274,19 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   float3 thr = p.throughput.xyz;
   shadowRays[i].contrib = (float4)(0.0f);
   p.flags &= ~RT_PATH_ALIVE;
+
+  /* The lamps this segment crosses, up to the surface it hits (or all the way): a lamp is
+   * transparent, so the path goes on to that surface (Cycles' shade_light). A BSDF sample's
+   * radiance is MIS-weighted against next-event estimation's pdf for the same direction. */
+  for (int k = 0; k < prm.numLamps; ++k) {
+    RtLight l = lights[prm.lampFirst + k];
+    float lpdf;
+    float3 le = rt_lamp_hit(l, p.origin.xyz, d, h.tri < 0 ? INFINITY : h.t, &lpdf);
+    if (rt_max3(le) > 0.0f) {
+      float w = specular ? 1.0f : rt_mis(bsdfPdf, l.select * lpdf);
+      p.radiance.xyz += thr * le * w * RT_KEEP(RT_SPLIT_LAMP, p.depth);
+    }
+  }
 
   if (h.tri < 0) {
     p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, p.radiance.w,
@@ -384,12 +408,12 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   if (canExtend && prm.numLights > 0 && leaf.type != RT_BSDF_MIRROR) {
     float3 wi, le;
     float tmax;
-    int type;
+    int type, delta;
     float choice = RT_SAMPLE1(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT_CHOICE(p.depth)));
     float2 lu = RT_SAMPLE2(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT(p.depth)));
     float3 u = (float3)(lu, choice);
     float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, s.ns, sunShare, u, &wi, &tmax,
-                               &le, &type);
+                               &le, &type, &delta);
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
       float3 f = leaf.type == RT_BSDF_PRINCIPLED
@@ -398,11 +422,12 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       float cosI = dot(wi, s.ns);
       if (bumped && leaf.type == RT_BSDF_DIFFUSE)
         f *= rt_bump_shadowing(nSmooth, s.ns, wi);
-      float3 c = thr * f * le * (cosI * rt_mis(lp, bp) / lp);
+      float3 c = thr * f * le * (cosI * (delta ? 1.0f : rt_mis(lp, bp)) / lp);
 #ifdef RT_SPLIT_LIGHTS
       c *= RT_KEEP(type == RT_LIGHT_TRIANGLE ? RT_SPLIT_MESH
                    : type == RT_LIGHT_SUN    ? RT_SPLIT_SUN
-                                             : RT_SPLIT_SKY,
+                   : type == RT_LIGHT_SKY    ? RT_SPLIT_SKY
+                                             : RT_SPLIT_LAMP,
                    p.depth + 1);
 #endif
       if (!rt_finite3(c)) {

@@ -40,6 +40,9 @@
 #define RT_LIGHT_TRIANGLE 0
 #define RT_LIGHT_SUN 1
 #define RT_LIGHT_SKY 2
+#define RT_LIGHT_POINT 3 /* Blender's point lamp (Cycles' soft falloff: a disk facing the point) */
+#define RT_LIGHT_SPOT 4  /* a point lamp inside a cone with a smoothstep edge */
+#define RT_LIGHT_AREA 5  /* a one-sided rectangle or ellipse */
 
 /* Path flags. */
 #define RT_PATH_ALIVE 1
@@ -128,7 +131,14 @@ typedef struct RtMaterial {
 
 /* A light for next-event estimation; chosen with probability `select` (the CDF is a separate
  * float array). Triangle: tri = BVH-order triangle index. Sun: dir.xyz towards the sun,
- * dir.w = cos(angular radius). */
+ * dir.w = cos(angular radius). Lamps (point, spot, area; scene.json's units converted by the
+ * host, docs/scene.md): radiance is the emitted radiance (a point or spot of radius 0: the
+ * radiant intensity, W/sr), pos.xyz the centre, pos.w the radius (point, spot); spot: dir.xyz
+ * the way it shines, dir.w cos(half the cone angle), u.w the smoothstep scale
+ * 1 / ((1 - cos) * blend) (INFINITY for blend 0); area: dir.xyz the side it lights, u.xyz and
+ * v.xyz the half extents, area its area; tri: RT_LAMP_* flags. */
+#define RT_LAMP_ELLIPSE 1   /* area: an ellipse (else a rectangle) */
+#define RT_LAMP_NO_SHADOW 2 /* casts no shadow: its shadow rays are not traced */
 typedef struct RtLight {
   int type;
   int tri;
@@ -136,6 +146,9 @@ typedef struct RtLight {
   float area;
   RT_F4 radiance;
   RT_F4 dir;
+  RT_F4 pos;
+  RT_F4 u;
+  RT_F4 v;
 } RtLight;
 
 /* The pinhole camera: rays through pixel (x, y) go along forward + (2u-1)*right - (2v-1)*up,
@@ -182,8 +195,8 @@ typedef struct RtShadeParams {
   int skyLight; /* index of the sky in the light table, or -1 */
   int sunLight; /* index of the sun, or -1 */
   float epsilon; /* relative ray-origin offset */
-  float pad1;
-  float pad2;
+  int lampFirst; /* the lamps (point, spot, area) are lights [lampFirst, lampFirst + numLamps) */
+  int numLamps;
 } RtShadeParams;
 
 #endif

@@ -468,6 +468,8 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     Prm.skyLight = Data.SkyLight;
     Prm.sunLight = Data.SunLight;
     Prm.epsilon = 1e-4f;
+    Prm.lampFirst = Data.LampFirst;
+    Prm.numLamps = Data.NumLamps;
     Cl->write(B["shadeParams"], &Prm, sizeof Prm);
     cl_uint Counters[RT_COUNT_SLOTS] = {};
     Cl->write(B["counters"], Counters, sizeof Counters);

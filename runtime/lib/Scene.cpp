@@ -82,6 +82,21 @@ public:
     return V;
   }
 
+  /// A lamp's power (watts per channel): no component is negative.
+  Vec3 power(const json &J, const std::string &Path) const {
+    Vec3 V = vec3(J, Path);
+    for (int I = 0; I < 3; ++I)
+      if (V[I] < 0)
+        fail(Path + "/" + std::to_string(I), "expected a non-negative power, got " + J[I].dump());
+    return V;
+  }
+
+  bool boolean(const json &J, const std::string &Path) const {
+    if (!J.is_boolean())
+      fail(Path, "expected true or false, got " + J.dump());
+    return J.get<bool>();
+  }
+
   std::string string(const json &J, const std::string &Path) const {
     if (!J.is_string())
       fail(Path, "expected a string, got " + std::string(J.type_name()));
@@ -186,29 +201,114 @@ void parseRender(const Reader &R, const json &J, RenderSettings &S) {
   if (S.AoSamples < 1) R.fail("/render/aoSamples", "expected at least 1");
 }
 
+/// A direction that has a normal form (in double, so that no finite non-zero vector underflows
+/// to zero): a zero one would make the light's frame NaN.
+Vec3 direction(const Reader &R, const json &J, const std::string &Path, const std::string &What) {
+  Vec3 D = R.vec3(J, Path);
+  if (std::hypot(double(D[0]), double(D[1]), double(D[2])) == 0)
+    R.fail(Path, "the " + What + " is zero");
+  return D;
+}
+
+/// Point, spot and area lamps (Blender's, in Cycles' units; docs/scene.md).
+void parseLamp(const Reader &R, const json &J, const std::string &Path, Light &L) {
+  std::set<std::string> Keys{"type", "position", "power", "castShadow"};
+  if (L.Type == "point" || L.Type == "spot")
+    Keys.insert("radius");
+  if (L.Type == "spot")
+    Keys.insert({"direction", "spotSize", "spotBlend"});
+  if (L.Type == "area")
+    Keys.insert({"direction", "shape", "size", "axisU"});
+  R.checkKeys(J, Path, Keys);
+  for (const char *Need : {"position", "power"})
+    if (!J.contains(Need))
+      R.fail(Path, "a " + L.Type + " lamp needs a \"" + Need + "\"");
+  L.Position = R.vec3(J["position"], Path + "/position");
+  L.Power = R.power(J["power"], Path + "/power");
+  if (J.contains("castShadow"))
+    L.CastShadow = R.boolean(J["castShadow"], Path + "/castShadow");
+  if (J.contains("radius")) {
+    L.Radius = R.number(J["radius"], Path + "/radius");
+    if (!(L.Radius >= 0))
+      R.fail(Path + "/radius", "expected a radius >= 0 (0: a point)");
+  }
+  if (L.Type == "spot" || L.Type == "area") {
+    if (!J.contains("direction"))
+      R.fail(Path, "a " + L.Type + " lamp needs a \"direction\" (the way it shines)");
+    L.Direction = direction(R, J["direction"], Path + "/direction", "direction");
+  }
+  if (L.Type == "spot") {
+    if (J.contains("spotSize"))
+      L.SpotSizeDegrees = R.number(J["spotSize"], Path + "/spotSize");
+    if (!(L.SpotSizeDegrees > 0 && L.SpotSizeDegrees <= 180))
+      R.fail(Path + "/spotSize", "expected the cone's full angle in degrees, in (0, 180]");
+    if (J.contains("spotBlend"))
+      L.SpotBlend = R.number(J["spotBlend"], Path + "/spotBlend");
+    if (!(L.SpotBlend >= 0 && L.SpotBlend <= 1))
+      R.fail(Path + "/spotBlend", "expected a blend in [0, 1]");
+  }
+  if (L.Type == "area") {
+    if (J.contains("shape")) {
+      L.Shape = R.string(J["shape"], Path + "/shape");
+      if (L.Shape != "rectangle" && L.Shape != "ellipse")
+        R.fail(Path + "/shape",
+               "unknown shape '" + L.Shape + "' (expected rectangle or ellipse)");
+    }
+    if (J.contains("size")) {
+      const json &Z = J["size"];
+      if (Z.is_number()) {
+        L.Width = L.Height = R.number(Z, Path + "/size");
+      } else {
+        if (!Z.is_array() || Z.size() != 2)
+          R.fail(Path + "/size", "expected a number or [width, height], got " + Z.dump());
+        L.Width = R.number(Z[0], Path + "/size/0");
+        L.Height = R.number(Z[1], Path + "/size/1");
+      }
+      if (!(L.Width > 0 && L.Height > 0))
+        R.fail(Path + "/size", "expected sizes > 0, got " + Z.dump());
+    }
+    if (J.contains("axisU")) {
+      L.AxisU = direction(R, J["axisU"], Path + "/axisU", "axisU");
+      const Vec3 &D = L.Direction, &U = L.AxisU;
+      double C[3] = {double(D[1]) * U[2] - double(D[2]) * U[1],
+                     double(D[2]) * U[0] - double(D[0]) * U[2],
+                     double(D[0]) * U[1] - double(D[1]) * U[0]};
+      double Sin = std::hypot(C[0], C[1], C[2]) /
+                   (std::hypot(double(D[0]), double(D[1]), double(D[2])) *
+                    std::hypot(double(U[0]), double(U[1]), double(U[2])));
+      if (!(Sin > 1e-3))
+        R.fail(Path + "/axisU", "axisU is parallel to the direction: it must lie in the lamp's "
+                                "plane");
+    } else {
+      L.AxisU = {0, 0, 0}; // any axis of the plane (SceneData picks one)
+    }
+  }
+}
+
 Light parseLight(const Reader &R, const json &J, const std::string &Path) {
   if (!J.is_object() || !J.contains("type"))
-    R.fail(Path, "a light needs a \"type\" (sky or sun)");
+    R.fail(Path, "a light needs a \"type\" (sky, sun, point, spot or area)");
   Light L;
   L.Type = R.string(J["type"], Path + "/type");
+  if (L.Type == "point" || L.Type == "spot" || L.Type == "area") {
+    parseLamp(R, J, Path, L);
+    return L;
+  }
   if (L.Type == "sky") {
     R.checkKeys(J, Path, {"type", "radiance"});
   } else if (L.Type == "sun") {
     R.checkKeys(J, Path, {"type", "radiance", "direction", "angularRadius"});
     if (!J.contains("direction"))
       R.fail(Path, "a sun needs a \"direction\"");
-    L.Direction = R.vec3(J["direction"], Path + "/direction");
-    // A zero direction has no normal form: the sun's cone would be NaN (in double, so that
-    // no finite non-zero direction underflows to zero).
-    if (std::hypot(double(L.Direction[0]), double(L.Direction[1]), double(L.Direction[2])) == 0)
-      R.fail(Path + "/direction", "the sun direction is zero");
+    L.Direction = direction(R, J["direction"], Path + "/direction", "sun direction");
     if (J.contains("angularRadius"))
       L.AngularRadiusDegrees = R.number(J["angularRadius"], Path + "/angularRadius");
     if (L.AngularRadiusDegrees <= 0 || L.AngularRadiusDegrees >= 90)
       R.fail(Path + "/angularRadius", "expected degrees in (0, 90)");
   } else {
     R.fail(Path + "/type", "unknown light type '" + L.Type +
-                               "' (expected sky or sun; area lights are meshes with \"emission\")");
+                               "' (expected sky, sun, point, spot or area; emissive meshes are "
+                               "meshes with \"emission\")");
   }
   if (!J.contains("radiance"))
     R.fail(Path, "a " + L.Type + " needs a \"radiance\"");

@@ -191,6 +191,54 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
   }
 }
 
+/// A point, spot or area lamp with Cycles' conversion of watts to radiance (scene/light.cpp
+/// of Cycles 5.0: eval_fac = 1 / (pi * area), area = 4 pi r^2 for a point or spot, 4 for one of
+/// radius 0; an area lamp's own area): a point or spot of radius r > 0 is a disk facing the lit
+/// point of radiance P / (4 pi^2 r^2), one of radius 0 a point of intensity P / (4 pi) W/sr; an
+/// area lamp has the radiance P / (pi A) on the side it lights.
+RtLight makeLamp(const Light &Li) {
+  RtLight L{};
+  L.tri = Li.CastShadow ? 0 : RT_LAMP_NO_SHADOW;
+  L.pos = f4(Li.Position, Li.Type == "area" ? 0.0f : Li.Radius);
+  const float Pi = float(M_PI);
+  Vec3 P = Li.Power;
+  float Scale;
+  if (Li.Type == "area") {
+    L.type = RT_LIGHT_AREA;
+    Vec3 N = normalizeInDouble(Li.Direction);
+    Vec3 U = Li.AxisU;
+    float Along = U[0] * N[0] + U[1] * N[1] + U[2] * N[2];
+    U = {U[0] - Along * N[0], U[1] - Along * N[1], U[2] - Along * N[2]};
+    if (!(U[0] != 0 || U[1] != 0 || U[2] != 0)) // no axisU: any axis of the plane
+      U = std::fabs(N[0]) < 0.9f ? cross(N, {1, 0, 0}) : cross(N, {0, 1, 0});
+    U = normalizeInDouble(U);
+    Vec3 V = normalize(cross(N, U));
+    float HU = 0.5f * Li.Width, HV = 0.5f * Li.Height;
+    L.dir = f4(N);
+    L.u = f4(U[0] * HU, U[1] * HU, U[2] * HU);
+    L.v = f4(V[0] * HV, V[1] * HV, V[2] * HV);
+    bool Ellipse = Li.Shape == "ellipse";
+    if (Ellipse)
+      L.tri |= RT_LAMP_ELLIPSE;
+    L.area = Li.Width * Li.Height * (Ellipse ? Pi / 4.0f : 1.0f);
+    Scale = 1.0f / (Pi * L.area);
+  } else {
+    L.type = Li.Type == "spot" ? RT_LIGHT_SPOT : RT_LIGHT_POINT;
+    float R = Li.Radius;
+    L.area = Pi * R * R;
+    Scale = R > 0 ? 1.0f / (4.0f * Pi * Pi * R * R) : 1.0f / (4.0f * Pi);
+    if (Li.Type == "spot") {
+      float CosHalf = std::cos(0.5f * Li.SpotSizeDegrees * Pi / 180.0f);
+      L.dir = f4(normalizeInDouble(Li.Direction), CosHalf);
+      // Cycles: smoothstep((cos - cosHalf) / ((1 - cosHalf) * blend)); blend 0: a hard edge.
+      float Den = (1.0f - CosHalf) * Li.SpotBlend;
+      L.u = f4(0, 0, 0, Den > 0 ? 1.0f / Den : 1e30f);
+    }
+  }
+  L.radiance = f4(P[0] * Scale, P[1] * Scale, P[2] * Scale);
+  return L;
+}
+
 void buildLights(const Scene &S, SceneData &D) {
   std::vector<float> Weights;
   for (size_t T = 0; T < D.TriAttrs.size(); ++T) {
@@ -213,7 +261,11 @@ void buildLights(const Scene &S, SceneData &D) {
     Weights.push_back(Area * std::max(luminance(E), 1e-6f) * float(M_PI));
   }
   float Cross = float(M_PI) * D.SceneRadius * D.SceneRadius;
+  // The sky and the sun first (next to each other: shade.cl splits their joint share), then the
+  // lamps (shade.cl intersects every path segment with them).
   for (const Light &Li : S.Lights) {
+    if (Li.Type != "sky" && Li.Type != "sun")
+      continue;
     RtLight L{};
     L.tri = -1;
     L.radiance = f4(Li.Radiance);
@@ -231,6 +283,16 @@ void buildLights(const Scene &S, SceneData &D) {
     }
     D.Lights.push_back(L);
   }
+  D.LampFirst = int(D.Lights.size());
+  for (const Light &Li : S.Lights) {
+    if (Li.Type == "sky" || Li.Type == "sun")
+      continue;
+    D.Lights.push_back(makeLamp(Li));
+    // Its power (a spot's: the part inside its cone) chooses it.
+    float Share = Li.Type == "spot" ? 0.5f * (1.0f - D.Lights.back().dir.s[3]) : 1.0f;
+    Weights.push_back(std::max(luminance(Li.Power) * std::max(Share, 1e-3f), 1e-6f));
+  }
+  D.NumLamps = int(D.Lights.size()) - D.LampFirst;
   double Total = 0;
   for (float W : Weights)
     Total += W;

@@ -51,10 +51,19 @@ struct Camera {
 };
 
 struct Light {
-  std::string Type; // sky | sun
-  Vec3 Radiance{0, 0, 0};
-  Vec3 Direction{0, 1, 0};
+  std::string Type; // sky | sun | point | spot | area
+  Vec3 Radiance{0, 0, 0};  // sky, sun
+  Vec3 Direction{0, 1, 0}; // sun: towards it; spot: the way it shines; area: the side it lights
   float AngularRadiusDegrees = 0.27f;
+  // Lamps (point, spot, area), in Cycles' units (docs/scene.md).
+  Vec3 Position{0, 0, 0};
+  Vec3 Power{0, 0, 0}; // watts: Blender's Color x Power
+  float Radius = 0;    // point, spot
+  float SpotSizeDegrees = 45, SpotBlend = 0.15f;
+  std::string Shape = "rectangle"; // area: rectangle | ellipse
+  float Width = 1, Height = 1;     // area
+  Vec3 AxisU{1, 0, 0};             // area: the direction of its width
+  bool CastShadow = true;
 };
 
 struct MeshInstance {

@@ -28,6 +28,7 @@ struct SceneData {
   std::vector<RtLight> Lights;
   std::vector<float> LightCdf;
   int SkyLight = -1, SunLight = -1;
+  int LampFirst = 0, NumLamps = 0; // point, spot and area lamps: Lights[LampFirst, +NumLamps)
   float SceneRadius = 1.0f;
 };
 
