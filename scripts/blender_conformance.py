@@ -28,7 +28,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bpy_env import BPY_VERSION, ensure_bpy  # noqa: E402
-from blender_nodes import MATH_OPS, VECTOR_MATH_OPS  # noqa: E402
+from blender_nodes import MATH_OPS, NODES, VECTOR_MATH_OPS  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "testsuite", "Inputs", "blender")
@@ -50,11 +50,15 @@ VARIANTS = []
 
 
 def variant(name, node, props, inputs, feeds, source, outputs, args, setup=None, describe=None,
-            image=None):
+            image=None, exporter_args=()):
     """setup(node) configures what properties cannot (a ramp's stops); describe records it.
-    image: the node's image, made in Blender (make_image) and written into the fixture."""
+    image: the node's image, made in Blender (make_image) and written into the fixture.
+    exporter_args: texcc arguments the exporter's own table (blender_nodes.NODES props)
+    computes from the node once set up (a curve's table), so the fixture checks that code too.
+    An argument "INCOMING" is the bake's incoming direction (baked, as the points are)."""
     VARIANTS.append(dict(name=name, node=node, props=props, inputs=inputs, feeds=feeds,
-                         source=source, outputs=outputs, args=args))
+                         source=source, outputs=outputs, args=args,
+                         exporter_args=list(exporter_args)))
     if setup:
         VARIANTS[-1]["setup"] = setup
         VARIANTS[-1]["describe"] = describe
@@ -497,6 +501,114 @@ variant("image-srgb-alpha-linear-repeat-straight", "ShaderNodeTexImage",
         image=image_spec("srgb-alpha"))
 
 
+# Color Ramp in HSV and HSL colour modes (ramp.cl blColorRampHue*): the same four stops, each
+# hue interpolation; Blender mixes linearly between stops there whatever the interpolation says,
+# which only decides whether the table lookup interpolates (Constant: not).
+HUE_MODES = ["NEAR", "FAR", "CW", "CCW"]
+
+
+def ramp_hue_setup(color_mode, hue, interpolation):
+    def setup(node):
+        ramp_setup(interpolation)(node)
+        node.color_ramp.color_mode = color_mode
+        node.color_ramp.hue_interpolation = hue
+    return setup
+
+
+for color_mode, hue, interpolation in [("HSV", h, "LINEAR") for h in HUE_MODES] + \
+        [("HSL", h, "LINEAR") for h in HUE_MODES] + [("HSV", "NEAR", "CONSTANT"),
+                                                      ("HSL", "FAR", "EASE")]:
+    name = "colorramp-%s-%s" % (color_mode.lower(), hue.lower())
+    if interpolation != "LINEAR":
+        name += "-" + interpolation.lower()
+    variant(name, "ShaderNodeValToRGB", {}, {}, {"Fac": "P.x*0.3+0.35"}, "ramp.cl",
+            [("Color", "blColorRampHueColor", 3), ("Alpha", "blColorRampHueAlpha", 1)],
+            {"fac": "P.x*0.3+0.35", "colors": [list(c) for _, c in RAMP_STOPS],
+             "positions": [p for p, _ in RAMP_STOPS], "count": len(RAMP_STOPS),
+             "interpolation": RAMP_MODES.index(interpolation),
+             "colorMode": ["RGB", "HSV", "HSL"].index(color_mode),
+             "hueInterpolation": HUE_MODES.index(hue)},
+            setup=ramp_hue_setup(color_mode, hue, interpolation),
+            describe={"interpolation": interpolation, "color_mode": color_mode,
+                      "hue_interpolation": hue,
+                      "stops": [[p] + list(c) for p, c in RAMP_STOPS]})
+
+
+# Float, RGB and Vector Curves (curves.cl): curves with Auto, Auto Clamped and Vector handles,
+# inputs running past the table's range on both sides (Extend Extrapolated and Horizontal). The
+# table, its range and the extension are what the exporter computes (exporter_args).
+CURVE_ARGS = ["table", "size", "minX", "maxX", "extrapolate"]
+
+
+def curve_setup(curves, extend, clip=True):
+    """curves: per curve of the mapping, its points (x, y, handle type)."""
+    def setup(node):
+        mapping = node.mapping
+        mapping.use_clip = clip
+        mapping.extend = extend
+        for curve, points in zip(mapping.curves, curves):
+            while len(curve.points) < len(points):
+                curve.points.new(0.5, 0.5)
+            for point, (x, y, handle) in zip(curve.points, points):
+                point.location = (x, y)
+                point.handle_type = handle
+        mapping.update()
+    return setup
+
+
+FLOAT_CURVE = [[(0.0, 0.1, "AUTO"), (0.3, 0.65, "AUTO"), (0.6, 0.2, "VECTOR"),
+                (1.0, 0.9, "AUTO_CLAMPED")]]
+FLOAT_CURVE_WIDE = [[(-1.0, 0.5, "AUTO"), (0.5, -0.4, "AUTO"), (2.0, 1.7, "AUTO")]]
+for name, curves, extend, clip, feed in (
+        ("floatcurve", FLOAT_CURVE, "EXTRAPOLATED", True, "P.x*0.4+0.5"),
+        ("floatcurve-horizontal", FLOAT_CURVE, "HORIZONTAL", True, "P.x*0.5+0.4"),
+        ("floatcurve-wide", FLOAT_CURVE_WIDE, "EXTRAPOLATED", False, "P.x*1.0+0.2")):
+    variant(name, "ShaderNodeFloatCurve", {}, {"Factor": 0.85}, {"Value": feed}, "curves.cl",
+            [("Value", "blFloatCurve", 1)], {"factor": 0.85, "value": feed},
+            setup=curve_setup(curves, extend, clip),
+            describe={"extend": extend, "use_clip": clip, "curves": curves},
+            exporter_args=CURVE_ARGS)
+
+RGB_CURVES = [[(0.0, 0.05, "AUTO"), (0.4, 0.55, "AUTO"), (1.0, 0.95, "AUTO")],  # R
+              [(0.0, 0.0, "AUTO"), (1.0, 1.0, "AUTO")],  # G: identity
+              [(0.0, 0.2, "VECTOR"), (0.5, 0.3, "VECTOR"), (1.0, 1.0, "AUTO_CLAMPED")],  # B
+              [(0.0, 0.0, "AUTO"), (0.35, 0.5, "AUTO"), (1.0, 1.0, "AUTO")]]  # C (combined)
+VECTOR_CURVES = [[(-1.0, -0.8, "AUTO"), (0.0, 0.3, "AUTO"), (1.0, 0.9, "AUTO")],
+                 [(-1.0, 1.0, "VECTOR"), (1.0, -1.0, "VECTOR")],
+                 [(-1.0, -1.0, "AUTO"), (-0.2, 0.4, "AUTO_CLAMPED"), (0.6, -0.1, "AUTO"),
+                  (1.0, 1.0, "AUTO")]]
+for name, node, fn, socket, param, curves, extend, feed, fac in (
+        ("rgbcurves", "ShaderNodeRGBCurve", "blRgbCurves", "Color", "color", RGB_CURVES,
+         "EXTRAPOLATED", COLOR_IN, 0.9),
+        ("rgbcurves-horizontal", "ShaderNodeRGBCurve", "blRgbCurves", "Color", "color",
+         RGB_CURVES, "HORIZONTAL", COLOR_IN, 1.0),
+        ("vectorcurves", "ShaderNodeVectorCurve", "blVectorCurves", "Vector", "vector",
+         VECTOR_CURVES, "EXTRAPOLATED", "P*0.5+-0.3", 0.75),
+        ("vectorcurves-horizontal", "ShaderNodeVectorCurve", "blVectorCurves", "Vector",
+         "vector", VECTOR_CURVES, "HORIZONTAL", "P*0.5+-0.3", 1.0)):
+    variant(name, node, {}, {"Fac": fac}, {socket: feed}, "curves.cl", [(socket, fn, 3)],
+            {"fac": fac, param: feed}, setup=curve_setup(curves, extend),
+            describe={"extend": extend, "curves": curves}, exporter_args=CURVE_ARGS)
+
+
+# Fresnel and Layer Weight (input.cl): the incoming direction is the bake's (fixed: the plane's
+# normal), so the fixtures compare the *Incoming functions that blFresnel and blLayerWeight*
+# call with ViewDir. The Normal input is fed one coordinate of the position (a float into a
+# vector socket: (v, v, v) in both renderers; an affine map of the whole position would keep
+# its dot product with the plane's normal constant), so that the cosine runs from -0.3 to 0.93.
+NORMAL_FEED = "P.x*0.3+0.1"
+for name, ior in (("fresnel", 1.45), ("fresnel-below-one", 0.7)):
+    variant(name, "ShaderNodeFresnel", {}, {"IOR": ior}, {"Normal": NORMAL_FEED}, "input.cl",
+            [("Fac", "blFresnelIncoming", 1)],
+            {"ior": ior, "normal": NORMAL_FEED, "incoming": "INCOMING"})
+for blend in (0.5, 0.2, 0.85):
+    variant("layerweight-%g" % blend, "ShaderNodeLayerWeight", {}, {"Blend": blend},
+            {"Normal": NORMAL_FEED}, "input.cl",
+            [("Fresnel", "blLayerWeightFresnelIncoming", 1),
+             ("Facing", "blLayerWeightFacingIncoming", 1)],
+            {"blend": blend, "normal": NORMAL_FEED, "incoming": "INCOMING"})
+
+
 # --- Baking ---------------------------------------------------------------------------------
 
 def setup_scene(size):
@@ -568,6 +680,8 @@ def build_variant(v, socket):
             setattr(node, key, value)
         if "setup" in v:
             v["setup"](node)
+        for param in v["exporter_args"]:
+            v["args"][param] = NODES[v["node"]]["props"][param](node)
         if "image" in v:
             node.image = make_image(v["image"])
         separate = None
@@ -685,6 +799,15 @@ def main():
         f.write("".join("%.9g %.9g %.9g\n" % tuple(float(c) for c in p) for p in points))
     chosen = [v for v in VARIANTS
               if not args.only or any(v["name"].startswith(o) for o in args.only)]
+    # The incoming direction Cycles shades with in a bake: one direction (the plane's normal).
+    incoming = bake(material, image, lambda tree, position: tree.nodes.new(
+        "ShaderNodeNewGeometry").outputs["Incoming"])
+    if float(np.abs(incoming - incoming[0]).max()) > 1e-6:
+        sys.exit("blender_conformance: the baked incoming direction varies over the plane")
+    for v in chosen:
+        for key, value in v["args"].items():
+            if value == "INCOMING":
+                v["args"][key] = [float(c) for c in incoming[0]]
     for v in chosen:
         outputs = []
         for socket, fn, channels, *drop in v["outputs"]:

@@ -368,6 +368,9 @@ class MaterialTranslator:
             if socket is None:
                 args[param] = self.export.object_constants(self.obj)[param]
                 continue
+            if param in spec.get("unlinked_attr", {}) and self.link_source(socket) is None:
+                args[param] = {"attr": spec["unlinked_attr"][param]}
+                continue
             if spec.get("texture") == "uv" and param == "vector" and \
                     self.link_source(socket) is None:
                 # Cycles: an unlinked Vector of an Image Texture is the UV map.
@@ -389,10 +392,6 @@ class MaterialTranslator:
             if node.projection != "FLAT":
                 self.refuse("%s: projection '%s' is not supported; supported: FLAT"
                             % (self.node_where(node), node.projection), "using FLAT")
-        if node.bl_idname == "ShaderNodeValToRGB" and node.color_ramp.color_mode != "RGB":
-            self.refuse("%s: colour mode '%s' is not supported; supported: RGB"
-                        % (self.node_where(node), node.color_ramp.color_mode),
-                        "interpolating in RGB")
         if node.bl_idname == "ShaderNodeTexCoord" and node.object is not None:
             self.refuse("%s: 'From' another object ('%s') is not supported"
                         % (self.node_where(node), node.object.name),

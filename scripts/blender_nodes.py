@@ -8,6 +8,7 @@ files, against which the table is checked when the exporter starts.
 
 import os
 import re
+import struct
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LIBRARY = os.path.join(ROOT, "textures", "blender")
@@ -39,7 +40,9 @@ def library_signatures():
 # Per Blender node type: `fn` maps an output socket's identifier to a library function (a
 # callable of the node when a setting picks the variant); `sockets` maps a function parameter to
 # the input socket (identifier) that feeds it, or a callable of the node returning one; `props`
-# maps a parameter to a callable of the node returning its constant (settings, ramps). A
+# maps a parameter to a callable of the node returning its constant (settings, ramps, curve
+# tables); `unlinked_attr` maps a parameter to the attribute that feeds it while its socket is
+# unlinked (a hidden-value Normal is the shading normal). A
 # parameter the function takes and the table does not name is an error in the table itself
 # (checked against the library's signatures when the exporter starts).
 
@@ -65,6 +68,10 @@ MAP_RANGE_TYPES = ["LINEAR", "STEPPED", "SMOOTHSTEP", "SMOOTHERSTEP"]
 GRADIENT_TYPES = ["LINEAR", "QUADRATIC", "EASING", "DIAGONAL", "RADIAL", "QUADRATIC_SPHERE",
                   "SPHERICAL"]
 COLOR_MODES = ["RGB", "HSV", "HSL"]
+HUE_INTERPOLATIONS = ["NEAR", "FAR", "CW", "CCW"]
+# Blender samples a curve mapping into a table of CURVE_TABLE_SIZE entries for Cycles (its
+# RAMP_TABLE_SIZE + 1); textures/blender/curves.cl looks the input up in it.
+CURVE_TABLE_SIZE = 257
 # Image Texture settings texrender's tex2DFiltered has, in its numbering (Smart is Cubic: Cycles'
 # SVM gives the same values, image-srgb-smart-repeat).
 IMAGE_INTERPOLATIONS = ["Linear", "Closest", "Cubic"]
@@ -118,6 +125,55 @@ def _mix_socket(kind):
 
 def _ramp_colors(node):
     return [list(e.color) for e in node.color_ramp.elements]
+
+
+def _f32(x):
+    """x rounded to a float32, as Blender's C code computes."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def curve_range(node, count):
+    """(minX, maxX) of a curve node's table: the smallest first and largest last point x over
+    its first `count` curves (Cycles' curvemapping_minmax: 1 Float, 3 Vector, 4 RGB with C)."""
+    mapping = node.mapping
+    mapping.update()  # sorts the points and rebuilds Blender's own tables, as Cycles' sync does
+    curves = list(mapping.curves)[:count]
+    return (_f32(min(c.points[0].location[0] for c in curves)),
+            _f32(max(c.points[-1].location[0] for c in curves)))
+
+
+def curve_table(node, count):
+    """The table Blender gives Cycles for a Float (count 1), Vector (3) or RGB (4) Curves node:
+    entry i at x = minX + i / 256 * (maxX - minX) (float32 arithmetic, as Blender's), each
+    channel through its curve; RGB's channels after the combined curve C (curves[3]). Vector and
+    RGB rows are float4 (w 0): textures/blender/curves.cl reads __global const float4* rows."""
+    lo, hi = curve_range(node, count)
+    mapping = node.mapping
+    mapping.initialize()
+    curves = list(mapping.curves)
+    span = _f32(hi - lo)
+    size = CURVE_TABLE_SIZE - 1
+    table = []
+    for i in range(CURVE_TABLE_SIZE):
+        x = _f32(lo + _f32(_f32(i / size) * span))
+        if count == 1:
+            table.append(mapping.evaluate(curves[0], x))
+            continue
+        if count == 4:
+            x = mapping.evaluate(curves[3], x)
+        table.append([mapping.evaluate(curves[k], x) for k in range(3)] + [0.0])  # float4 rows
+    return table
+
+
+def _curve_props(count):
+    return {"table": lambda n: curve_table(n, count), "size": lambda n: CURVE_TABLE_SIZE,
+            "minX": lambda n: curve_range(n, count)[0], "maxX": lambda n: curve_range(n, count)[1],
+            "extrapolate": lambda n: 1 if n.mapping.extend == "EXTRAPOLATED" else 0}
+
+
+def _ramp_fn(output):
+    return lambda node: ("blColorRamp%s" if node.color_ramp.color_mode == "RGB" else
+                         "blColorRampHue%s") % output
 
 
 def _map_range_socket(name):
@@ -178,12 +234,35 @@ NODES = {
             "Cubic" if n.interpolation == "Smart" else n.interpolation),  # Cycles' SVM: the same
                "extension": _index(IMAGE_EXTENSIONS, "extension"),
                "alphaLinked": lambda n: 1 if n.outputs["Alpha"].is_linked else 0}),
+    # RGB colour mode: blColorRampColor/Alpha; HSV and HSL: blColorRampHueColor/Alpha.
     "ShaderNodeValToRGB": dict(
-        fn={"Color": "blColorRampColor", "Alpha": "blColorRampAlpha"}, sockets={"fac": "Fac"},
+        fn={"Color": _ramp_fn("Color"), "Alpha": _ramp_fn("Alpha")}, sockets={"fac": "Fac"},
+        variants=["blColorRampColor", "blColorRampAlpha", "blColorRampHueColor",
+                  "blColorRampHueAlpha"],
         props={"colors": _ramp_colors,
                "positions": lambda n: [e.position for e in n.color_ramp.elements],
                "count": lambda n: len(n.color_ramp.elements),
-               "interpolation": lambda n: RAMP_MODES.index(n.color_ramp.interpolation)}),
+               "interpolation": lambda n: RAMP_MODES.index(n.color_ramp.interpolation),
+               "colorMode": lambda n: COLOR_MODES.index(n.color_ramp.color_mode),
+               "hueInterpolation": lambda n: HUE_INTERPOLATIONS.index(
+                   n.color_ramp.hue_interpolation)}),
+    # The curves: the table Blender samples for Cycles (curve_table), looked up as Cycles does.
+    "ShaderNodeFloatCurve": dict(
+        fn={"Value": "blFloatCurve"}, sockets={"factor": "Factor", "value": "Value"},
+        props=_curve_props(1)),
+    "ShaderNodeRGBCurve": dict(
+        fn={"Color": "blRgbCurves"}, sockets={"fac": "Fac", "color": "Color"},
+        props=_curve_props(4)),
+    "ShaderNodeVectorCurve": dict(
+        fn={"Vector": "blVectorCurves"}, sockets={"fac": "Fac", "vector": "Vector"},
+        props=_curve_props(3)),
+    # Fresnel and Layer Weight: an unlinked Normal is the shading normal (attribute Normal).
+    "ShaderNodeFresnel": dict(
+        fn={"Fac": "blFresnel"}, sockets={"ior": "IOR", "normal": "Normal"},
+        unlinked_attr={"normal": "Normal"}),
+    "ShaderNodeLayerWeight": dict(
+        fn={"Fresnel": "blLayerWeightFresnel", "Facing": "blLayerWeightFacing"},
+        sockets={"blend": "Blend", "normal": "Normal"}, unlinked_attr={"normal": "Normal"}),
     "ShaderNodeMath": dict(
         fn={"Value": "blMath"}, sockets={"a": "Value", "b": "Value_001", "c": "Value_002"},
         props={"operation": _index(MATH_OPS, "operation"), "useClamp": _flag("use_clamp")}),
@@ -265,7 +344,7 @@ PASS_THROUGH = {"NodeReroute"}
 def check_table(signatures):
     """Every function the table names exists, and the table feeds each of its parameters."""
     for idname, spec in NODES.items():
-        names = set()
+        names = set(spec.get("variants", []))  # the functions a callable `fn` picks from
         for fn in spec["fn"].values():
             if isinstance(fn, str):
                 names.add(fn)

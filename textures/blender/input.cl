@@ -22,10 +22,27 @@
  *   float  blAmbientOcclusionAO()    Ambient Occlusion's AO: the AO attribute (1 = open)
  *   float3 blAmbientOcclusionColor(float3 color)
  *                                    its Color: color * AO
+ *   float  blFresnel(float ior, float3 normal)
+ *                                    Fresnel's Fac: the dielectric reflectance for the angle
+ *                                    between ViewDir and normal (Cycles' fresnel_dielectric_cos)
+ *   float  blLayerWeightFresnel(float blend, float3 normal)
+ *                                    Layer Weight's Fresnel: the same with IOR 1 / (1 - blend)
+ *   float  blLayerWeightFacing(float blend, float3 normal)
+ *                                    its Facing: 1 - |cos|, the cosine raised to a power that
+ *                                    blend sets (2 blend below 0.5, 0.5 / (1 - blend) above)
+ *   blFresnelIncoming, blLayerWeightFresnelIncoming, blLayerWeightFacingIncoming: the same
+ *                                    three with the incoming direction as their last argument
+ *                                    (float3 incoming) instead of ViewDir (what the Cycles
+ *                                    fixtures compare: a bake's incoming direction is fixed)
  *
  * The Ambient Occlusion node's Samples and Distance are the scene's render.aoSamples and
  * render.aoDistance (texrender's AO kernel traces them for every hit that reads AO); the Blender
  * exporter sets them from the node. Inside and Only Local have no counterpart.
+ *
+ * Fresnel and Layer Weight: Cycles inverts the IOR on a back face (a face seen from behind its
+ * winding); texrender's Normal always faces the viewer and no attribute says whether the face was
+ * turned, so a back face gets the front face's value. The exporter's Normal, unlinked, is the
+ * Normal attribute (Cycles' shading normal).
  *
  * Parameters (the exporter passes the object's bounds and axes: no runtime attribute needed):
  *
@@ -37,6 +54,10 @@
  *   | axisY   | float3 | 0, 1, 0     | its second column                               |
  *   | axisZ   | float3 | 0, 0, 1     | its third column                                |
  *   | color   | float3 | 1, 1, 1     | the AO node's Color input                       |
+ *   | ior     | float  | 1.5         | Fresnel's index of refraction (at least 1e-5)   |
+ *   | blend   | float  | 0.5         | Layer Weight's Blend                            |
+ *   | normal  | float3 | Normal      | the normal the angle is measured from           |
+ *   | incoming| float3 | ViewDir     | unit, from the point towards the viewer         |
  */
 
 /* One axis of Blender's auto texture space: half the extent, 1 when flat, at least 1e-5. */
@@ -81,3 +102,45 @@ float3 blGeometryIncoming() { return readAttr("ViewDir"); }
 float blAmbientOcclusionAO() { return readAttr("AO"); }
 
 float3 blAmbientOcclusionColor(float3 color) { return color * readAttr("AO"); }
+
+/* Reflectance of a dielectric of relative IOR eta at the cosine cosi of the angle of incidence
+ * (either side: |cosi|); 1 under total internal reflection. */
+float blFresnelDielectric(float cosi, float eta) {
+  float c = fabs(cosi);
+  float g = eta * eta - 1.0f + c * c;
+  if (!(g > 0.0f))
+    return 1.0f;
+  g = sqrt(g);
+  float a = (g - c) / (g + c);
+  float b = (c * (g + c) - 1.0f) / (c * (g - c) + 1.0f);
+  return 0.5f * a * a * (1.0f + b * b);
+}
+
+float blFresnelIncoming(float ior, float3 normal, float3 incoming) {
+  return blFresnelDielectric(dot(incoming, normal), fmax(ior, 1e-5f));
+}
+
+float blLayerWeightFresnelIncoming(float blend, float3 normal, float3 incoming) {
+  return blFresnelDielectric(dot(incoming, normal), 1.0f / fmax(1.0f - blend, 1e-5f));
+}
+
+float blLayerWeightFacingIncoming(float blend, float3 normal, float3 incoming) {
+  float facing = fabs(dot(incoming, normal));
+  if (blend != 0.5f) {
+    blend = clamp(blend, 0.0f, 1.0f - 1e-5f);
+    facing = pow(facing, blend < 0.5f ? 2.0f * blend : 0.5f / (1.0f - blend));
+  }
+  return 1.0f - facing;
+}
+
+float blFresnel(float ior, float3 normal) {
+  return blFresnelIncoming(ior, normal, readAttr("ViewDir"));
+}
+
+float blLayerWeightFresnel(float blend, float3 normal) {
+  return blLayerWeightFresnelIncoming(blend, normal, readAttr("ViewDir"));
+}
+
+float blLayerWeightFacing(float blend, float3 normal) {
+  return blLayerWeightFacingIncoming(blend, normal, readAttr("ViewDir"));
+}

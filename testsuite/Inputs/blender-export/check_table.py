@@ -6,8 +6,9 @@ Each fixture (testsuite/Inputs/blender/<variant>.json, made by scripts/blender_c
 names a Blender node with its settings and, per output, the library function and the arguments
 that reproduce Cycles' values. This builds that node with bpy, feeds the same inputs from the
 Geometry node's Position, translates each output with the exporter, and checks the function and
-every argument that is not fed from the position (settings, constants, ramps) equal the
-fixture's. Prints one line per mismatch, then "N outputs of M variants: K mismatches".
+every argument that is not fed from the position (settings, constants, ramps, curve tables) equal
+the fixture's. A fixture's *Incoming function (Fresnel, Layer Weight: the bake's incoming
+direction as an argument) is the exporter's function of the same name without it (ViewDir). Prints one line per mismatch, then "N outputs of M variants: K mismatches".
 """
 import argparse
 import glob
@@ -39,14 +40,27 @@ def build(tree, node_spec, image=None):
     for key, value in node_spec["properties"].items():
         setattr(node, key, value)
     setup = node_spec.get("setup")
-    if setup:
+    if setup and "stops" in setup:  # a Color Ramp's stops and modes
         ramp = node.color_ramp
         ramp.interpolation = setup["interpolation"]
+        ramp.color_mode = setup.get("color_mode", "RGB")
+        ramp.hue_interpolation = setup.get("hue_interpolation", "NEAR")
         while len(ramp.elements) < len(setup["stops"]):
             ramp.elements.new(0.5)
         for element, stop in zip(ramp.elements, setup["stops"]):
             element.position = stop[0]
             element.color = stop[1:]
+    if setup and "curves" in setup:  # a curve mapping's points, handles and extension
+        mapping = node.mapping
+        mapping.use_clip = setup.get("use_clip", True)
+        mapping.extend = setup["extend"]
+        for curve, points in zip(mapping.curves, setup["curves"]):
+            while len(curve.points) < len(points):
+                curve.points.new(0.5, 0.5)
+            for point, (x, y, handle) in zip(curve.points, points):
+                point.location = (x, y)
+                point.handle_type = handle
+        mapping.update()
     position = tree.nodes.new("ShaderNodeNewGeometry").outputs["Position"]
     emission = tree.nodes.new("ShaderNodeEmission")
     for key in node_spec["fed_from_position"]:
@@ -95,11 +109,14 @@ def main():
             value = tr.output_value(node, out, emission, emission.inputs["Color"])
             got = next(n for n in nodes if n["id"] == value[1])
             where = "%s %s" % (fixture["variant"], output["socket"])
-            if got["fn"] != output["fn"]:
+            fn, drop = output["fn"], set(output.get("drop", []))
+            if fn.endswith("Incoming"):  # the fixture's incoming direction is ViewDir's
+                fn, drop = fn[:-len("Incoming")], drop | {"incoming"}
+            if got["fn"] != fn:
                 print("%s: function %s, fixture %s" % (where, got["fn"], output["fn"]))
                 bad += 1
                 continue
-            want = {k: v for k, v in fixture["args"].items() if k not in output.get("drop", [])}
+            want = {k: v for k, v in fixture["args"].items() if k not in drop}
             if set(want) != set(got["args"]):
                 print("%s: arguments %s, fixture %s" % (where, sorted(got["args"]), sorted(want)))
                 bad += 1
