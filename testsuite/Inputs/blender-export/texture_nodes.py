@@ -1,0 +1,143 @@
+"""texture_nodes.py: the .blend of export-texture-nodes.test and its Cycles reference (bpy; run
+with .venv's Python).
+
+    texture_nodes.py OUT.blend            writes the scene
+    texture_nodes.py --reference [--spp N] renders it with Cycles (cycles_render.py) and writes
+                                          cycles-texture-nodes.json (region_means.py --write
+                                          --edges: 8x8 block means, silhouette blocks marked)
+
+The scene: a smooth UV sphere seen by a camera, no lights, a black world, 128x96, an Emission
+material that uses the texture-side nodes of issue 37 item 3, each on what Cycles gives it while
+rendering: Layer Weight (Blend 0.35, Normal unlinked: the shading normal) Facing plus the sphere's
+Object z through Vector Curves (Extend Extrapolated) picks a colour of a Color Ramp in HSV mode
+(Far hue interpolation); RGB Curves (C and R bent) then a Mix by Layer Weight's Fresnel towards
+green make the Color; Fresnel (IOR 1.45) through a Float Curve (0 -> 0.4, 1 -> 2.5) is the
+Strength. Fresnel and Layer Weight read the incoming direction (texrender's ViewDir) and the
+normal, so the image checks them where the fixtures (a bake, one incoming direction) cannot.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import bpy
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from make_blend import reproducible  # noqa: E402
+
+
+def ident(sockets, identifier):
+    return next(s for s in sockets if s.identifier == identifier)
+
+
+def curve(mapping, index, points, extend="EXTRAPOLATED"):
+    mapping.extend = extend
+    c = mapping.curves[index]
+    while len(c.points) < len(points):
+        c.points.new(0.5, 0.5)
+    for point, (x, y) in zip(c.points, points):
+        point.location = (x, y)
+    mapping.update()
+
+
+def material():
+    m = bpy.data.materials.new("Nodes")
+    m.use_nodes = True
+    t = m.node_tree
+    t.nodes.clear()
+    new = t.nodes.new
+    out = new("ShaderNodeOutputMaterial")
+    weight = new("ShaderNodeLayerWeight")
+    weight.name = "Weight"
+    weight.inputs["Blend"].default_value = 0.35
+    coords = new("ShaderNodeTexCoord")
+    vcurves = new("ShaderNodeVectorCurve")
+    vcurves.name = "VCurves"
+    curve(vcurves.mapping, 2, [(-1.0, -0.6), (0.0, 0.2), (1.0, 0.4)])
+    separate = new("ShaderNodeSeparateXYZ")
+    add = new("ShaderNodeMath")
+    add.operation = "ADD"
+    ramp = new("ShaderNodeValToRGB")
+    ramp.name = "Ramp"
+    ramp.color_ramp.color_mode = "HSV"
+    ramp.color_ramp.hue_interpolation = "FAR"
+    ramp.color_ramp.elements[0].position = 0.1
+    ramp.color_ramp.elements[0].color = (0.9, 0.15, 0.1, 1.0)
+    ramp.color_ramp.elements[1].position = 0.9
+    ramp.color_ramp.elements[1].color = (0.1, 0.2, 0.85, 1.0)
+    rgb = new("ShaderNodeRGBCurve")
+    rgb.name = "RGBCurves"
+    curve(rgb.mapping, 3, [(0.0, 0.0), (0.4, 0.6), (1.0, 1.0)])
+    curve(rgb.mapping, 0, [(0.0, 0.1), (1.0, 0.8)])
+    mix = new("ShaderNodeMix")
+    mix.data_type = "RGBA"
+    ident(mix.inputs, "B_Color").default_value = (0.1, 0.8, 0.2, 1.0)
+    fresnel = new("ShaderNodeFresnel")
+    fresnel.name = "Fresnel"
+    fresnel.inputs["IOR"].default_value = 1.45
+    fcurve = new("ShaderNodeFloatCurve")
+    fcurve.name = "FCurve"
+    curve(fcurve.mapping, 0, [(0.0, 0.4), (0.5, 1.2), (1.0, 2.5)])
+    emission = new("ShaderNodeEmission")
+    link = t.links.new
+    link(coords.outputs["Object"], vcurves.inputs["Vector"])
+    link(vcurves.outputs["Vector"], separate.inputs["Vector"])
+    link(weight.outputs["Facing"], add.inputs[0])
+    link(separate.outputs["Z"], add.inputs[1])
+    link(add.outputs["Value"], ramp.inputs["Fac"])
+    link(ramp.outputs["Color"], rgb.inputs["Color"])
+    link(rgb.outputs["Color"], ident(mix.inputs, "A_Color"))
+    link(weight.outputs["Fresnel"], ident(mix.inputs, "Factor_Float"))
+    link(ident(mix.outputs, "Result_Color"), emission.inputs["Color"])
+    link(fresnel.outputs["Fac"], fcurve.inputs["Value"])
+    link(fcurve.outputs["Value"], emission.inputs["Strength"])
+    link(emission.outputs["Emission"], out.inputs["Surface"])
+    return m
+
+
+def make(path):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    scene.render.resolution_x, scene.render.resolution_y = 128, 96
+    scene.render.resolution_percentage = 100
+    scene.cycles.samples = 16
+    scene.cycles.max_bounces = 6
+    reproducible(scene)
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = True
+    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+    scene.world = world
+    cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
+    cam.location = (0.0, -4.0, 0.0)
+    cam.rotation_euler = (1.5707963, 0.0, 0.0)
+    scene.collection.objects.link(cam)
+    scene.camera = cam
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=48, ring_count=24, radius=1.0)
+    sphere = bpy.context.active_object
+    sphere.name = "Sphere"
+    bpy.ops.object.shade_smooth()
+    sphere.data.materials.append(material())
+    bpy.ops.wm.save_as_mainfile(filepath=path)
+
+
+def reference(spp):
+    from cycles_render import render_npy
+    work = tempfile.mkdtemp()
+    blend = os.path.join(work, "nodes.blend")
+    make(blend)
+    exr = blend + ".exr"
+    render_npy(bpy.context.scene, spp, exr, exr + ".npy", True)
+    expected = os.path.join(HERE, "cycles-texture-nodes.json")
+    subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"), exr + ".npy",
+                           expected, "--write", "--edges"])
+    print("texture_nodes: %s (%d spp)" % (expected, spp))
+
+
+if __name__ == "__main__":
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else sys.argv[1:]
+    if argv[:1] == ["--reference"]:
+        reference(int(argv[argv.index("--spp") + 1]) if "--spp" in argv else 1024)
+    else:
+        make(argv[0])
