@@ -2,12 +2,16 @@
 """farm.py: renders frames and tiles of a texrender scene on a Ray cluster (docs/farm.md).
 
   farm.py render scene.json --textures T [--frames 1-48] [--tiles 4x4] -o out/frame.####.exr
-          [--address ADDR] [--workers N] [--sweep NODE.ARG=A:B:N] [texrender options ...]
+          [--address ADDR] [--workers N] [--task-threads N] [--sweep NODE.ARG=A:B:N]
+          [texrender options ...]
   farm.py stitch --size WxH -o OUT.exr TILE.exr@X,Y ...
 
 render: one Ray task per (frame, tile) runs `texrender --region X,Y,W,H --frame N` with the
 texrender options given (--size, --spp, --seed, --max-depth, --set, ...), so that the stitched
-frame equals `texrender` run alone with the same options, bit for bit. The scene.json, the OBJ
+frame equals `texrender` run alone with the same options, bit for bit. Each task is given its
+share of its node's cores: it reserves --task-threads CPUs of the node (Ray's num_cpus) and runs
+texrender --threads with as many, so the tasks a node runs at once never have more threads than
+it has cores (tasks x threads <= CPUs). The scene.json, the OBJ
 files it names, the texcc output folder and the images its layout binds travel to the workers
 through Ray's object store (no shared file system). A task whose worker dies is retried; each
 frame is written atomically once all its tiles are there. --sweep renders one frame per value
@@ -193,6 +197,7 @@ MAX_FRAME = 2 ** 31 - 1
 MAX_TASKS = 1000000
 MAX_SWEEP = 10000
 MAX_RETRIES = 100
+MAX_TASK_THREADS = 1024  # texrender --threads' bound
 FRAME_PART = re.compile(r"(\d+)(?:-(\d+))?$")
 
 
@@ -287,6 +292,9 @@ def check_passthrough(options):
     k = 0
     while k < len(options):
         name = options[k].split("=", 1)[0]
+        if name == "--threads":
+            raise FarmError("--threads: not passed to the tasks (farm.py gives each task its "
+                            "share of its node's cores; --task-threads N sets the share)")
         if name in OWN_OPTIONS:
             raise FarmError("%s: not passed to the tasks (farm.py sets -o, --region, --frame and "
                             "--textures itself; --stats, --variance, --edit-script, "
@@ -379,6 +387,36 @@ def check_cluster_options(args):
         raise FarmError("--workers %d: expected 1 to 4096 CPUs" % args.workers)
     if not 0 <= args.retries <= MAX_RETRIES:
         raise FarmError("--retries %d: expected 0 to %d" % (args.retries, MAX_RETRIES))
+    if args.task_threads is not None:
+        text = args.task_threads
+        if not re.fullmatch(r"[0-9]+", text) or not 1 <= int(text) <= MAX_TASK_THREADS:
+            raise FarmError("--task-threads: expected an integer from 1 to %d, got '%s'"
+                            % (MAX_TASK_THREADS, text))
+        args.task_threads = int(text)
+        cpus = args.workers or os.cpu_count()
+        if args.address is None and args.task_threads > cpus:
+            raise FarmError("--task-threads %d: more than the local cluster's %d CPUs%s: no task "
+                            "could start" % (args.task_threads, cpus,
+                                             " (--workers)" if args.workers else ""))
+
+
+def task_share(ray, args, tasks):
+    """Threads (and reserved CPUs) per task: --task-threads, else the smallest live node's CPUs
+    divided by the tasks each node gets when they are spread evenly (at least 1): one task
+    alone on a node uses all its cores, as many tasks as cores use one each."""
+    cpus = [int(n.get("Resources", {}).get("CPU", 0)) for n in ray.nodes() if n.get("Alive")]
+    cpus = [c for c in cpus if c > 0]
+    if not cpus:
+        raise FarmError("the Ray cluster has no node with a CPU")
+    if args.task_threads is not None:
+        if args.task_threads > max(cpus):
+            raise FarmError("--task-threads %d: no node of the cluster has that many CPUs (the "
+                            "largest has %d): no task could start" % (args.task_threads,
+                                                                      max(cpus)))
+        return args.task_threads
+    smallest = min(cpus)
+    per_node = min(smallest, -(-tasks // len(cpus)))
+    return max(1, smallest // per_node)
 
 
 def read_scene(path):
@@ -441,7 +479,9 @@ def render(args, options):
     except Exception as e:  # Ray's own errors (a wrong --address, a node that cannot start)
         raise FarmError("Ray did not start%s: %s" % (
             " at --address " + args.address if args.address else "", first_line(e)))
-    task = ray.remote(num_cpus=1, max_retries=args.retries)(render_tile)
+    share = task_share(ray, args, len(frames) * len(tiles))
+    task = ray.remote(num_cpus=share, max_retries=args.retries)(render_tile)
+    options = options + ["--threads", str(share)]
     files_ref = ray.put(files)
     crash = os.environ.get("FARM_TEST_CRASH_ONCE", "")
     pending = {}
@@ -522,6 +562,10 @@ def main(argv):
     r.add_argument("--address", help="an existing Ray cluster (default: start a local one)")
     r.add_argument("--workers", type=int,
                    help="CPUs of the local cluster, 1 to 4096 (default: all)")
+    r.add_argument("--task-threads", metavar="N",
+                   help="threads of each texrender task, and CPUs it reserves on its node, 1 to "
+                        "%d (default: a node's CPUs divided by the tasks it gets)"
+                        % MAX_TASK_THREADS)
     r.add_argument("--retries", type=int, default=3, help="retries of a task whose worker dies, 0 to %d (default 3)" % MAX_RETRIES)
     r.add_argument("--sweep", help="NODE.ARG=A:B:N: one image per value (live edits)")
     r.add_argument("--texrender", help="texrender on every node (default: PATH, then build/bin)")
