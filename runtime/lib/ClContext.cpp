@@ -64,9 +64,9 @@ std::string defaultCacheDir() {
 }
 
 namespace {
-unsigned ThreadsGiven = 0;        // setRenderThreads's N; 0: not called
-bool PlatformQueried = false;     // the first OpenCL call happened (PoCL sized its pool)
-std::once_flag PoclThreadsOnce;
+unsigned ThreadsGiven = 0; // setRenderThreads's N; 0: every core
+bool PoolSized = false;    // sizePoclPool ran: the count is fixed for the process
+std::mutex PoolMutex;
 } // namespace
 
 static unsigned coresAvailable() {
@@ -75,15 +75,6 @@ static unsigned coresAvailable() {
   if (sched_getaffinity(0, sizeof Set, &Set) == 0 && CPU_COUNT(&Set) > 0)
     return unsigned(CPU_COUNT(&Set));
   return std::max(1u, std::thread::hardware_concurrency());
-}
-
-void setRenderThreads(unsigned N) {
-  if (N < 1)
-    throw Error("the thread count must be at least 1");
-  if (PlatformQueried)
-    throw Error("the thread count must be set before the first OpenCL call (PoCL sizes its "
-                "pool then)");
-  ThreadsGiven = N;
 }
 
 unsigned renderThreads() { return ThreadsGiven ? ThreadsGiven : coresAvailable(); }
@@ -98,18 +89,32 @@ std::string embreeDeviceConfig() { return "threads=" + std::to_string(renderThre
 /// POCL_CPU_MIN_CU_COUNT. --threads sets them; without it, a POCL_MAX_PTHREAD_COUNT already in
 /// the environment is kept (bench/per_hit.py runs PoCL on one thread that way), else it is set
 /// to the cores this process may run on (PoCL itself counts every core of the machine, also
-/// those outside the affinity mask).
-static void sizePoclPool() {
-  std::call_once(PoclThreadsOnce, [] {
-    PlatformQueried = true;
-    if (!ThreadsGiven && std::getenv("POCL_MAX_PTHREAD_COUNT"))
-      return;
-    const std::string N = std::to_string(renderThreads());
-    setenv("POCL_MAX_PTHREAD_COUNT", N.c_str(), 1);
-    setenv("POCL_CPU_MAX_CU_COUNT", N.c_str(), 1);
-    unsetenv("POCL_PTHREAD_MIN_THREADS");
-    unsetenv("POCL_CPU_MIN_CU_COUNT");
-  });
+/// those outside the affinity mask). Runs once: by setRenderThreads, or by the first device
+/// discovery. The environment is changed here only, before PoCL or texrender start threads
+/// that could read it (texrender calls setRenderThreads right after parsing its options).
+static void sizePoclPool(unsigned N) {
+  std::lock_guard<std::mutex> Lock(PoolMutex);
+  if (PoolSized)
+    return;
+  PoolSized = true;
+  ThreadsGiven = N;
+  if (!N && std::getenv("POCL_MAX_PTHREAD_COUNT"))
+    return;
+  const std::string Count = std::to_string(renderThreads());
+  setenv("POCL_MAX_PTHREAD_COUNT", Count.c_str(), 1);
+  setenv("POCL_CPU_MAX_CU_COUNT", Count.c_str(), 1);
+  unsetenv("POCL_PTHREAD_MIN_THREADS");
+  unsetenv("POCL_CPU_MIN_CU_COUNT");
+}
+
+void setRenderThreads(unsigned N) {
+  {
+    std::lock_guard<std::mutex> Lock(PoolMutex);
+    if (PoolSized)
+      throw Error("the thread count is set once, before the first OpenCL call (PoCL sizes its "
+                  "pool then)");
+  }
+  sizePoclPool(N);
 }
 
 /// The first call of device discovery that failed, and how.
@@ -126,7 +131,7 @@ allDevices(DiscoveryFailure *Failure = nullptr) {
     if (Failure && Failure->Code == CL_SUCCESS)
       *Failure = {Call, E.err()};
   };
-  sizePoclPool();
+  sizePoclPool(0); // the default, unless setRenderThreads came first
   try {
     cl::Platform::get(&Platforms);
   } catch (const cl::Error &E) {

@@ -394,9 +394,9 @@ nlohmann::json statsWithThreads(Renderer &R, const Layout &L, const std::vector<
 int run(int Argc, char **Argv) try {
   double T0 = now();
   Options O = parseArgs(Argc, Argv);
-  // Before any OpenCL call: PoCL sizes its pool when the platform is first queried.
-  if (O.Threads)
-    setRenderThreads(unsigned(*O.Threads));
+  // Before any OpenCL call and any thread: PoCL sizes its pool from the environment when the
+  // platform is first queried (Threads.h).
+  setRenderThreads(unsigned(O.Threads.value_or(0)));
   if (O.ListDevices) {
     auto Devs = listDevices();
     if (Devs.empty())

@@ -11,16 +11,18 @@
 
 namespace texrender {
 
-/// Sets the thread count of every pool (N >= 1). PoCL reads its pool size from the
-/// environment when the OpenCL platform is first queried, so this must come before the first
-/// OpenCL call of the process: afterwards it throws Error. The count is fixed per process.
+/// Sets the thread count of every pool: N, or with N = 0 every core (the default). PoCL reads
+/// its pool size from the environment (set here) when the OpenCL platform is first queried, so
+/// this must come once, before the first OpenCL call of the process and before threads that
+/// read the environment start: afterwards it throws Error. The first device discovery applies
+/// the default when nothing called it. The count is fixed per process.
 void setRenderThreads(unsigned N);
 
 /// The thread count of every pool: setRenderThreads's N, else the cores this process may run on
 /// (its CPU affinity mask; at least 1).
 unsigned renderThreads();
 
-/// Whether setRenderThreads was called (texrender --threads given).
+/// Whether a count was given (setRenderThreads with N >= 1: texrender --threads).
 bool renderThreadsGiven();
 
 /// The configuration string of rtcNewDevice: "threads=N" with N = renderThreads().
