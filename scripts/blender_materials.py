@@ -11,7 +11,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blender_nodes import (  # noqa: E402
     DEFAULT_SURFACE, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED,
-    PRINCIPLED_INPUTS, SHADERS, VECTOR_MATH_OPS, supported_nodes_text)
+    PRINCIPLED_INPUTS, SHADERS, VECTOR_MATH_OPS, instancers, object_info, supported_nodes_text)
 
 
 class ExportError(Exception):
@@ -33,8 +33,12 @@ class Problems:
     def __init__(self, lenient):
         self.lenient = lenient
         self.errors = []
+        self.seen = set()
 
     def refuse(self, message, fallback_text):
+        if (message, fallback_text) in self.seen:  # the same problem found again (a material
+            return                                 # translated for a second object): once
+        self.seen.add((message, fallback_text))
         if self.lenient:
             sys.stderr.write("blender_export: warning: %s; %s\n" % (message, fallback_text))
         else:
@@ -282,8 +286,8 @@ class MaterialTranslator:
 
     def param_socket(self, node, spec, param):
         """The input socket feeding `param`; None for a setting or an object constant."""
-        if param in spec.get("props", {}) or (spec.get("object_props")
-                                              and param in OBJECT_PARAMS):
+        if param in spec.get("props", {}) or spec.get("object_info") or \
+                (spec.get("object_props") and param in OBJECT_PARAMS):
             return None
         if param not in spec["sockets"]:  # an image (sam2D): bound, not fed
             return None
@@ -364,6 +368,9 @@ class MaterialTranslator:
                     value = replace_non_finite(value)
                 args[param] = value
                 continue
+            if spec.get("object_info"):
+                args[param] = object_info(self.obj, self.material)[param]
+                continue
             socket = self.param_socket(node, spec, param)
             if socket is None:
                 args[param] = self.export.object_constants(self.obj)[param]
@@ -392,10 +399,50 @@ class MaterialTranslator:
             if node.projection != "FLAT":
                 self.refuse("%s: projection '%s' is not supported; supported: FLAT"
                             % (self.node_where(node), node.projection), "using FLAT")
+        if node.bl_idname == "ShaderNodeObjectInfo" and self.obj is not None:
+            used = [o.name for o in node.outputs if o.name in ("Location", "Random")
+                    and self.links_from(o)]
+            found = instancers(self.obj) if used else []
+            if found:
+                self.refuse("%s: %s of object '%s', which '%s' instances; supported: objects "
+                            "that are not instanced (Cycles gives each instance its own, the "
+                            "exporter translates a material once per object)"
+                            % (self.node_where(node), " and ".join(used), self.obj.name,
+                               found[0]), "using the object's own")
+        if node.bl_idname == "ShaderNodeAttribute":
+            self.attribute_checks(node)
         if node.bl_idname == "ShaderNodeTexCoord" and node.object is not None:
             self.refuse("%s: 'From' another object ('%s') is not supported"
                         % (self.node_where(node), node.object.name),
                         "using this object's own coordinates")
+
+    def links_from(self, socket):
+        tree = socket.id_data
+        return [link for link in tree.links if link.from_socket == socket and not link.is_muted]
+
+    def attribute_checks(self, node):
+        """The Attribute node reads the UV map texrender exports (the render UV map, TexCoord0):
+        texrender's meshes carry no other per-vertex attribute (colour attributes, other UV maps,
+        generic attributes) and no object or view-layer attributes."""
+        mesh = getattr(self.obj, "data", None)
+        layers = getattr(mesh, "uv_layers", None) or []
+        render = next((l for l in layers if l.active_render), None) or \
+            (layers.active if layers else None)
+        name = node.attribute_name
+        if node.attribute_type == "GEOMETRY" and render is not None and name == render.name:
+            return
+        what = "attribute '%s'" % name
+        if node.attribute_type != "GEOMETRY":
+            what = "%s attribute '%s'" % (node.attribute_type.lower().replace("_", " "), name)
+        elif mesh is not None and name in getattr(mesh, "color_attributes", {}):
+            what = "colour attribute '%s'" % name
+        elif any(l.name == name for l in layers):
+            what = "UV map '%s' (not the one that renders)" % name
+        self.refuse("%s: %s is not supported; supported: the mesh's render UV map%s "
+                    "(texrender's meshes carry no other attribute)"
+                    % (self.node_where(node), what,
+                       " '%s'" % render.name if render is not None else ", which it lacks"),
+                    "using the UV map")
 
     # --- Shaders ---
     def shader(self, socket, where_text):

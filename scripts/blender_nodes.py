@@ -324,6 +324,91 @@ NODES = {
         sockets={"color": "Color"}),
 }
 
+# Object Info: each output's function takes the object's value (object_info, below).
+OBJECT_INFO_OUTPUTS = {"Location": ("blObjectInfoLocation", "location"),
+                       "Color": ("blObjectInfoColor", "objectColor"),
+                       "Alpha": ("blObjectInfoAlpha", "objectAlpha"),
+                       "Object Index": ("blObjectInfoObjectIndex", "objectIndex"),
+                       "Material Index": ("blObjectInfoMaterialIndex", "materialIndex"),
+                       "Random": ("blObjectInfoRandom", "objectRandom")}
+NODES["ShaderNodeObjectInfo"] = dict(fn={o: fn for o, (fn, _) in OBJECT_INFO_OUTPUTS.items()},
+                                     object_info=True)
+# Attribute: the UV map texrender exports (TexCoord0) only; blender_materials refuses the rest.
+NODES["ShaderNodeAttribute"] = dict(fn={"Vector": "blAttributeUV", "Color": "blAttributeUV",
+                                        "Fac": "blAttributeUVFac", "Alpha": "blAttributeUVAlpha"})
+
+_MASK = 0xFFFFFFFF
+
+
+def _rot(x, k):
+    return ((x << k) | (x >> (32 - k))) & _MASK
+
+
+def cycles_hash_uint2(kx, ky):
+    """Cycles' hash of two uints (util/hash.h: Bob Jenkins' lookup3 final mix)."""
+    a = b = c = (0xDEADBEEF + (2 << 2) + 13) & _MASK
+    a, b = (a + kx) & _MASK, (b + ky) & _MASK
+    for x, y, z, k in ((2, 1, 0, 14), (0, 2, 1, 11), (1, 0, 2, 25), (2, 1, 0, 16),
+                       (0, 2, 1, 4), (1, 0, 2, 14), (2, 1, 0, 24)):
+        v = [a, b, c]
+        v[x] = ((v[x] ^ v[y]) - _rot(v[y], k)) & _MASK
+        a, b, c = v
+    return c
+
+
+def cycles_hash_string(text):
+    """Cycles' hash_string: i * 37 + each byte of the UTF-8 name, as an unsigned number (what
+    Cycles 5.0.1 gives 'Würfel.001'; a signed char would not)."""
+    i = 0
+    for byte in text.encode("utf-8"):
+        i = (i * 37 + byte) & _MASK
+    return i
+
+
+def object_random(name):
+    """Object Info's Random of an object that is not an instance: Cycles' random_id
+    hash_uint2(hash_string(name), 0), times 1 / 0xFFFFFFFF in float32."""
+    rid = cycles_hash_uint2(cycles_hash_string(name), 0)
+    return _f32(_f32(float(rid)) * _f32(1.0 / 0xFFFFFFFF))
+
+
+def object_info(obj, material):
+    """Object Info's values for `obj` (None: Blender's defaults) with `material`."""
+    if obj is None:
+        return {"location": [0.0, 0.0, 0.0], "objectColor": [1.0, 1.0, 1.0],
+                "objectAlpha": 1.0, "objectIndex": 0.0,
+                "materialIndex": float(material.pass_index) if material else 0.0,
+                "objectRandom": 0.0}
+    original = getattr(obj, "original", obj)
+    return {"location": [float(v) for v in obj.matrix_world.translation],
+            "objectColor": [float(v) for v in obj.color[:3]], "objectAlpha": float(obj.color[3]),
+            "objectIndex": float(original.pass_index),
+            "materialIndex": float(material.pass_index) if material else 0.0,
+            "objectRandom": object_random(original.name)}
+
+
+def instancers(obj):
+    """Names of the objects that instance `obj` (collection instances holding it, a parent
+    that instances its children on vertices or faces, particle systems rendering it): Cycles
+    gives each instance its own location and random number."""
+    import bpy
+    original = getattr(obj, "original", obj)
+    found = []
+    if original.parent is not None and original.parent.instance_type in ("VERTS", "FACES"):
+        found.append(original.parent.name)
+    for other in bpy.data.objects:
+        coll = other.instance_collection if other.instance_type == "COLLECTION" else None
+        if coll is not None and original.name in coll.all_objects:
+            found.append(other.name)
+        for system in getattr(other, "particle_systems", []):
+            settings = system.settings
+            if (settings.render_type == "OBJECT" and settings.instance_object == original) or \
+                    (settings.render_type == "COLLECTION" and settings.instance_collection and
+                     original.name in settings.instance_collection.all_objects):
+                found.append(other.name)
+    return found
+
+
 # Shader nodes: what each becomes in graph.json's material tree (docs/graph.md's BSDFs).
 SHADERS = {
     "ShaderNodeBsdfDiffuse": "diffuse", "ShaderNodeBsdfAnisotropic": "glossy",
@@ -358,6 +443,8 @@ def check_table(signatures):
                 known = set(spec.get("sockets", {})) | set(spec.get("props", {}))
                 if spec.get("object_props"):
                     known |= {"bboxMin", "bboxMax", "axisX", "axisY", "axisZ"}
+                if spec.get("object_info"):
+                    known |= {p for _, p in OBJECT_INFO_OUTPUTS.values()}
                 if param not in known:
                     raise SystemExit("blender_export: internal: %s: %s(%s) is not fed"
                                      % (idname, name, param))

@@ -21,7 +21,8 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# Outputs of the issue's nodes that textures/blender/ implements without a fixture, and why.
+# Outputs of the issue's nodes that textures/blender/ implements without a point fixture (or
+# whose exported form the fixtures do not evaluate), how they are checked, and what is refused.
 NOT_YET = [
     ("Texture Coordinate UV and Normal (`blTexCoordUV`, `blTexCoordNormal`)",
      "implemented (TexCoord0; the shading normal through the object's axes, passed as "
@@ -33,6 +34,26 @@ NOT_YET = [
      "same reason. Tangent is texrender's dP/du of the mesh's UVs; Cycles' Geometry Tangent is "
      "radial about Z when the mesh has no UV map, so they agree only with one. Backfacing, "
      "Parametric, Pointiness and Random Per Island have no texrender attribute"),
+    ("Fresnel and Layer Weight with ViewDir (`blFresnel`, `blLayerWeightFresnel`, "
+     "`blLayerWeightFacing`)",
+     "their fixtures above (fresnel-*, layerweight-*) compare the `*Incoming` functions these "
+     "call, with the bake's incoming direction as an argument (a bake shades every point from "
+     "one direction); blender-export/export-texture-nodes.test renders them, with Color Ramp "
+     "HSV, Float, RGB and Vector Curves, on a sphere against Cycles (every 8x8 block off the "
+     "silhouette within 0.2%). An unlinked Normal is the Normal attribute. Refused silently "
+     "by nature: Cycles inverts the IOR on a back face (a face seen from behind its winding); "
+     "texrender's Normal faces the viewer and no attribute says the face was turned, so a back "
+     "face gets the front face's value (closed meshes seen from outside have none)"),
+    ("Object Info (`blObjectInfo{Location,Color,Alpha,ObjectIndex,MaterialIndex,Random}`) and "
+     "Attribute (`blAttributeUV`, `blAttributeUVFac`, `blAttributeUVAlpha`)",
+     "the object's values are constants the exporter passes (Random: Cycles' hash of the "
+     "object's name), so there is no point fixture; blender-export/object-info.test bakes every "
+     "output with Cycles on four objects (names, locations, colours, pass indices; one name not "
+     "ASCII) and compares the exporter's values: all equal. Attribute reads the render UV map "
+     "only (texrender's meshes carry no other attribute): a colour attribute, another UV map or "
+     "an object, instancer or view-layer attribute is refused, and so are Object Info Location "
+     "and Random of an instanced object (Cycles gives each instance its own; the exporter "
+     "translates a material once per object; error-texture-nodes.test)"),
     ("Ambient Occlusion (`blAmbientOcclusionAO`, `blAmbientOcclusionColor`)",
      "implemented through texrender's AO attribute; Samples and Distance are the scene's "
      "render.aoSamples and render.aoDistance (the Blender exporter sets them from the node). "
@@ -119,7 +140,7 @@ def main():
     else:
         lines.append("None: every output above is within 1e-4 of Cycles on %s." %
                      ("both targets" if device else "the host target (OpenCL not run)"))
-    lines += ["", "## Nodes of the issue without a fixture", ""]
+    lines += ["", "## Nodes checked apart from the point fixtures", ""]
     lines += ["- %s: %s." % (name, why) for name, why in NOT_YET]
     out = os.path.join(ROOT, "docs", "blender-nodes.md")
     with open(out, "w") as f:

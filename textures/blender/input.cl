@@ -30,6 +30,15 @@
  *   float  blLayerWeightFacing(float blend, float3 normal)
  *                                    its Facing: 1 - |cos|, the cosine raised to a power that
  *                                    blend sets (2 blend below 0.5, 0.5 / (1 - blend) above)
+ *   float3 blObjectInfoLocation(float3 location)   Object Info's outputs: the object's values,
+ *   float3 blObjectInfoColor(float3 objectColor)    which the exporter passes (texrender has no
+ *   float  blObjectInfoAlpha(float objectAlpha)     per-object attribute): its world location,
+ *   float  blObjectInfoObjectIndex(float objectIndex) Object Color and alpha, Pass Index, the
+ *   float  blObjectInfoMaterialIndex(float materialIndex) material's Pass Index, and Cycles'
+ *   float  blObjectInfoRandom(float objectRandom)   random number of the object (a hash of its name)
+ *   float3 blAttributeUV()                          Attribute (the UV map's name): Vector and
+ *   float  blAttributeUVFac()                       Color (u, v, 0) as UV, Fac u, Alpha 1, as
+ *   float  blAttributeUVAlpha()                     Cycles reads a 2D attribute
  *   blFresnelIncoming, blLayerWeightFresnelIncoming, blLayerWeightFacingIncoming: the same
  *                                    three with the incoming direction as their last argument
  *                                    (float3 incoming) instead of ViewDir (what the Cycles
@@ -58,6 +67,12 @@
  *   | blend   | float  | 0.5         | Layer Weight's Blend                            |
  *   | normal  | float3 | Normal      | the normal the angle is measured from           |
  *   | incoming| float3 | ViewDir     | unit, from the point towards the viewer         |
+ *   | location | float3 | 0, 0, 0    | Object Info: the object's world location        |
+ *   | objectColor | float3 | 1, 1, 1 | Object Info: the object's colour (Object Color)  |
+ *   | objectAlpha | float | 1.0      | Object Info: its alpha                          |
+ *   | objectIndex | float | 0.0      | Object Info: the object's Pass Index            |
+ *   | materialIndex | float | 0.0    | Object Info: the material's Pass Index          |
+ *   | objectRandom | float | 0.0     | Object Info: the object's random number in [0, 1] |
  */
 
 /* One axis of Blender's auto texture space: half the extent, 1 when flat, at least 1e-5. */
@@ -144,3 +159,21 @@ float blLayerWeightFresnel(float blend, float3 normal) {
 float blLayerWeightFacing(float blend, float3 normal) {
   return blLayerWeightFacingIncoming(blend, normal, readAttr("ViewDir"));
 }
+
+float3 blObjectInfoLocation(float3 location) { return location; }
+
+float3 blObjectInfoColor(float3 objectColor) { return objectColor; }
+
+float blObjectInfoAlpha(float objectAlpha) { return objectAlpha; }
+
+float blObjectInfoObjectIndex(float objectIndex) { return objectIndex; }
+
+float blObjectInfoMaterialIndex(float materialIndex) { return materialIndex; }
+
+float blObjectInfoRandom(float objectRandom) { return objectRandom; }
+
+float3 blAttributeUV() { return (float3)(readAttr("TexCoord0"), 0.0f); }
+
+float blAttributeUVFac() { return readAttr("TexCoord0").x; }
+
+float blAttributeUVAlpha() { return 1.0f; }

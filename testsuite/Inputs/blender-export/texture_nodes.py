@@ -2,6 +2,7 @@
 with .venv's Python).
 
     texture_nodes.py OUT.blend            writes the scene
+    texture_nodes.py OUT.blend refusals   writes the scene of the refused cases (make_refusals)
     texture_nodes.py --reference [--spp N] renders it with Cycles (cycles_render.py) and writes
                                           cycles-texture-nodes.json (region_means.py --write
                                           --edges: 8x8 block means, silhouette blocks marked)
@@ -122,6 +123,44 @@ def make(path):
     bpy.ops.wm.save_as_mainfile(filepath=path)
 
 
+def make_refusals(path):
+    """The scene whose texture nodes the exporter refuses, each once: the sphere's colour from an
+    Attribute node reading a colour attribute "Col", its strength from one reading the second
+    UV map "Second" (not the render one), and a cube whose Object Info Random is its colour,
+    instanced by a collection instance "Copies"."""
+    make(path)
+    sphere = bpy.data.objects["Sphere"]
+    sphere.data.color_attributes.new("Col", "FLOAT_COLOR", "POINT")
+    sphere.data.uv_layers.new(name="Second")
+    sphere.data.uv_layers[0].active_render = True
+    t = sphere.data.materials[0].node_tree
+    emission = next(n for n in t.nodes if n.bl_idname == "ShaderNodeEmission")
+    colour = t.nodes.new("ShaderNodeAttribute")
+    colour.name, colour.attribute_name = "Colour", "Col"
+    t.links.new(colour.outputs["Color"], emission.inputs["Color"])
+    second = t.nodes.new("ShaderNodeAttribute")
+    second.name, second.attribute_name = "SecondUV", "Second"
+    t.links.new(second.outputs["Fac"], emission.inputs["Strength"])
+    copies = bpy.data.collections.new("Copied")
+    bpy.context.scene.collection.children.link(copies)
+    mesh = bpy.data.meshes.new("cube")
+    mesh.from_pydata([(0, 0, 0), (0.3, 0, 0), (0, 0.3, 0)], [], [(0, 1, 2)])
+    cube = bpy.data.objects.new("Cube", mesh)
+    copies.objects.link(cube)
+    m = bpy.data.materials.new("Random")
+    m.use_nodes = True
+    info = m.node_tree.nodes.new("ShaderNodeObjectInfo")
+    info.name = "Info"
+    diffuse = m.node_tree.nodes["Principled BSDF"]
+    m.node_tree.links.new(info.outputs["Random"], diffuse.inputs["Base Color"])
+    mesh.materials.append(m)
+    empty = bpy.data.objects.new("Copies", None)
+    empty.instance_type, empty.instance_collection = "COLLECTION", copies
+    empty.location = (0.0, 0.0, 1.2)
+    bpy.context.scene.collection.objects.link(empty)
+    bpy.ops.wm.save_as_mainfile(filepath=path)
+
+
 def reference(spp):
     from cycles_render import render_npy
     work = tempfile.mkdtemp()
@@ -139,5 +178,7 @@ if __name__ == "__main__":
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else sys.argv[1:]
     if argv[:1] == ["--reference"]:
         reference(int(argv[argv.index("--spp") + 1]) if "--spp" in argv else 1024)
+    elif argv[1:2] == ["refusals"]:
+        make_refusals(argv[0])
     else:
         make(argv[0])
