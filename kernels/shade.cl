@@ -280,6 +280,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
    * radiance is MIS-weighted against next-event estimation's pdf for the same direction. */
   for (int k = 0; k < prm.numLamps; ++k) {
     RtLight l = lights[prm.lampFirst + k];
+    if (p.depth == 1 && !(l.tri & RT_LAMP_CAMERA))
+      continue;
     float lpdf;
     float3 le = rt_lamp_hit(l, p.origin.xyz, d, h.tri < 0 ? INFINITY : h.t, &lpdf);
     if (rt_max3(le) > 0.0f) {

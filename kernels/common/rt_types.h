@@ -139,6 +139,7 @@ typedef struct RtMaterial {
  * v.xyz the half extents, area its area; tri: RT_LAMP_* flags. */
 #define RT_LAMP_ELLIPSE 1   /* area: an ellipse (else a rectangle) */
 #define RT_LAMP_NO_SHADOW 2 /* casts no shadow: its shadow rays are not traced */
+#define RT_LAMP_CAMERA 4    /* camera rays see it (Blender 5.0 light objects: off by default) */
 typedef struct RtLight {
   int type;
   int tri;

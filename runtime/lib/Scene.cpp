@@ -212,7 +212,7 @@ Vec3 direction(const Reader &R, const json &J, const std::string &Path, const st
 
 /// Point, spot and area lamps (Blender's, in Cycles' units; docs/scene.md).
 void parseLamp(const Reader &R, const json &J, const std::string &Path, Light &L) {
-  std::set<std::string> Keys{"type", "position", "power", "castShadow"};
+  std::set<std::string> Keys{"type", "position", "power", "castShadow", "visibleToCamera"};
   if (L.Type == "point" || L.Type == "spot")
     Keys.insert("radius");
   if (L.Type == "spot")
@@ -227,6 +227,8 @@ void parseLamp(const Reader &R, const json &J, const std::string &Path, Light &L
   L.Power = R.power(J["power"], Path + "/power");
   if (J.contains("castShadow"))
     L.CastShadow = R.boolean(J["castShadow"], Path + "/castShadow");
+  if (J.contains("visibleToCamera"))
+    L.VisibleToCamera = R.boolean(J["visibleToCamera"], Path + "/visibleToCamera");
   if (J.contains("radius")) {
     L.Radius = R.number(J["radius"], Path + "/radius");
     if (!(L.Radius >= 0))

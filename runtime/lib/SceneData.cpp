@@ -198,7 +198,7 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
 /// area lamp has the radiance P / (pi A) on the side it lights.
 RtLight makeLamp(const Light &Li) {
   RtLight L{};
-  L.tri = Li.CastShadow ? 0 : RT_LAMP_NO_SHADOW;
+  L.tri = (Li.CastShadow ? 0 : RT_LAMP_NO_SHADOW) | (Li.VisibleToCamera ? RT_LAMP_CAMERA : 0);
   L.pos = f4(Li.Position, Li.Type == "area" ? 0.0f : Li.Radius);
   const float Pi = float(M_PI);
   Vec3 P = Li.Power;

@@ -12,9 +12,10 @@ The floor is a plane, so it receives only the lamp's direct light: its radiance 
 times the irradiance, integrated here over the lamp's surface in Cycles' units (a point or
 spot lamp of power P: intensity P / (4 pi) at radius 0, else a disk of radius r facing the lit
 point with radiance P / (4 pi^2 r^2); a spot's smoothstep edge; an area lamp's radiance
-P / (pi A) on the side it lights). Camera rays that cross a lamp add its radiance (a point
-lamp of radius > 0 is a disk facing the camera; a spot seen from outside its cone and an area
-lamp seen from its back add nothing). A block passes within 1.5% (or 1e-3 of the brightest
+P / (pi A) on the side it lights). Camera rays that cross a lamp with "visibleToCamera" add its
+radiance (a point lamp of radius > 0 is a disk facing the camera; a spot seen from outside its
+cone and an area lamp seen from its back add nothing); without it (Blender's default) the
+camera does not see the lamp ("point-hidden"). A block passes within 1.5% (or 1e-3 of the brightest
 block) and 4 standard errors of its expectation; blocks expected dark must be exactly 0.
 Inverse-square falloff, the cone's edge and the lamps' units all have to be right.
 """
@@ -32,7 +33,9 @@ CAMERA_H, FOV, SIZE, SPP = 5.0, 60.0, 32, 64
 SCENES = {
     "point": {"type": "point", "position": [0.3, 1.0, 0.0], "power": [100, 80, 60]},
     "point-disk": {"type": "point", "position": [0.0, 1.0, 0.0], "power": [100, 100, 100],
-                   "radius": 0.25},
+                   "radius": 0.25, "visibleToCamera": True},
+    "point-hidden": {"type": "point", "position": [0.0, 1.0, 0.0], "power": [100, 100, 100],
+                     "radius": 0.25},
     "spot": {"type": "spot", "position": [0.0, 1.5, 0.0], "direction": [0.2, -1.0, 0.0],
              "power": [200, 200, 200], "radius": 0.1, "spotSize": 50.0, "spotBlend": 0.3},
     "spot-hard": {"type": "spot", "position": [0.0, 1.0, 0.0], "direction": [0, -1, 0],
@@ -204,7 +207,7 @@ def expected(lamp):
     flat = camera_points(n_sub).reshape(-1, 3)
     rad = RHO / math.pi * irradiance(lamp, flat)
     rad = rad.reshape(SIZE, n_sub, SIZE, n_sub, 3).mean(axis=(1, 3))
-    if lamp["type"] == "point" and lamp.get("radius", 0) > 0:
+    if lamp.get("visibleToCamera") and lamp.get("radius", 0) > 0:
         # the disk facing the camera, crossed by the camera rays at its centre's height
         n_sub = 8
         flat = camera_points(n_sub).reshape(-1, 3)
