@@ -15,7 +15,9 @@ point with radiance P / (4 pi^2 r^2); a spot's smoothstep edge; an area lamp's r
 P / (pi A) on the side it lights). Camera rays that cross a lamp with "visibleToCamera" add its
 radiance (a point lamp of radius > 0 is a disk facing the camera; a spot seen from outside its
 cone and an area lamp seen from its back add nothing); without it (Blender's default) the
-camera does not see the lamp ("point-hidden"). A block passes within 1.5% (or 1e-3 of the brightest
+camera does not see the lamp ("point-hidden"). "point-shadow" and "point-noshadow" put a black
+square between a point lamp and the floor: its shadow is exactly 0 with castShadow (the
+default) and not there without it. A block passes within 1.5% (or 1e-3 of the brightest
 block) and 4 standard errors of its expectation; blocks expected dark must be exactly 0.
 Inverse-square falloff, the cone's edge and the lamps' units all have to be right.
 """
@@ -36,6 +38,9 @@ SCENES = {
                    "radius": 0.25, "visibleToCamera": True},
     "point-hidden": {"type": "point", "position": [0.0, 1.0, 0.0], "power": [100, 100, 100],
                      "radius": 0.25},
+    "point-shadow": {"type": "point", "position": [0.3, 1.0, 0.0], "power": [100, 100, 100]},
+    "point-noshadow": {"type": "point", "position": [0.3, 1.0, 0.0], "power": [100, 100, 100],
+                       "castShadow": False},
     "spot": {"type": "spot", "position": [0.0, 1.5, 0.0], "direction": [0.2, -1.0, 0.0],
              "power": [200, 200, 200], "radius": 0.1, "spotSize": 50.0, "spotBlend": 0.3},
     "spot-hard": {"type": "spot", "position": [0.0, 1.0, 0.0], "direction": [0, -1, 0],
@@ -47,6 +52,11 @@ SCENES = {
                      "shape": "ellipse", "size": [1.0, 0.6], "axisU": [0, 0, 1],
                      "power": [40, 50, 60]},
 }
+# Scenes with a black square (side 2 OCC_HALF, facing up and down) at height OCC_Y between the
+# lamp and the floor: with castShadow its shadow is black, without it the floor is lit as if
+# it were not there; the square itself is black (albedo 0) wherever the camera sees it.
+OCCLUDED = ("point-shadow", "point-noshadow")
+OCC_X, OCC_Y, OCC_HALF = 1.0, 0.5, 0.2
 
 # Invalid lamps: each case changes one field of a valid lamp.
 BAD = {
@@ -87,16 +97,24 @@ def make(out):
     with open(os.path.join(out, "floor.obj"), "w") as f:
         f.write("v -20 0 -20\nv 20 0 -20\nv 20 0 20\nv -20 0 20\nvn 0 1 0\n"
                 "f 1//1 3//1 2//1\nf 1//1 4//1 3//1\n")
+    x0, x1, y, h = OCC_X - OCC_HALF, OCC_X + OCC_HALF, OCC_Y, OCC_HALF
+    with open(os.path.join(out, "occluder.obj"), "w") as f:
+        f.write("v %g %g %g\nv %g %g %g\nv %g %g %g\nv %g %g %g\n"
+                "f 1 3 2\nf 1 4 3\n" % (x0, y, -h, x1, y, -h, x1, y, h, x0, y, h))
     write_json(os.path.join(out, "graph.json"),
                {"texcc": 1, "sources": [], "nodes": [],
-                "materials": {"white": {"bsdf": "diffuse", "color": [RHO, RHO, RHO]}}})
+                "materials": {"white": {"bsdf": "diffuse", "color": [RHO, RHO, RHO]},
+                              "black": {"bsdf": "diffuse", "color": [0, 0, 0]}}})
     for name, lamp in SCENES.items():
+        meshes = [{"obj": "floor.obj", "material": "white"}]
+        if name in OCCLUDED:
+            meshes.append({"obj": "occluder.obj", "material": "black"})
         write_json(os.path.join(out, name + ".json"), {
             "texrender": 1,
             "camera": {"position": [0, CAMERA_H, 0], "target": [0, 0, 0], "up": [0, 0, -1],
                        "fov": FOV},
             "film": {"width": SIZE, "height": SIZE}, "render": {"spp": SPP},
-            "lights": [lamp], "meshes": [{"obj": "floor.obj", "material": "white"}]})
+            "lights": [lamp], "meshes": meshes})
 
 
 def unit(v):
@@ -159,23 +177,27 @@ def irradiance(lamp, x):
         normals = np.broadcast_to(n, q.shape)
         fac = np.ones(len(q))
         return _integrate(x, q, normals, fac, da) [:, None] * radiance
-    # a disk of radius r facing each point
+    # a disk of radius r facing each point (all points at once: frames per point)
     r = lamp["radius"]
-    nr, na = 24, 48
+    nr, na = 12, 24
     rr = r * np.sqrt((np.arange(nr) + 0.5) / nr)
     ph = (np.arange(na) + 0.5) / na * 2 * math.pi
     R, P = np.meshgrid(rr, ph)
+    du, dv = (R * np.cos(P)).ravel(), (R * np.sin(P)).ravel()
     da = math.pi * r * r / (nr * na)
     radiance = power / (4 * math.pi ** 2 * r * r)
-    out = np.zeros((len(x), 3))
-    for i, p in enumerate(x):
-        n = unit(p - c)
-        t, b = frame(n)
-        q = c + np.outer((R * np.cos(P)).ravel(), t) + np.outer((R * np.sin(P)).ravel(), b)
-        w = unit_rows(p - q)
-        fac = spot_factor(lamp, w) * np.ones(len(q))
-        out[i] = _integrate(p[None], q, np.broadcast_to(n, q.shape), fac, da)[0] * radiance
-    return out
+    n = unit_rows(x - c)  # (N, 3)
+    a = np.where(np.abs(n[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0, 1.0, 0]]))
+    t = unit_rows(np.cross(n, a))
+    b = np.cross(n, t)
+    q = c + du[None, :, None] * t[:, None, :] + dv[None, :, None] * b[:, None, :]  # (N, M, 3)
+    v = q - x[:, None, :]
+    d2 = (v * v).sum(-1)
+    w = v / np.sqrt(d2)[..., None]  # from the lit point to the lamp point
+    cos_x = np.maximum(w[..., 1], 0)
+    cos_q = np.maximum(-(w * n[:, None, :]).sum(-1), 0)  # the disk faces the point
+    e = (cos_x * cos_q / d2 * spot_factor(lamp, -w) * da).sum(-1)
+    return e[:, None] * radiance
 
 
 def unit_rows(v):
@@ -199,13 +221,35 @@ def camera_points(n_sub):
     return np.stack([X, np.zeros_like(X), Z], -1)
 
 
-def expected(lamp):
+def in_occluder(p):
+    """Whether points p (..., 3) at height OCC_Y lie on the occluder."""
+    return (np.abs(p[..., 0] - OCC_X) <= OCC_HALF) & (np.abs(p[..., 2]) <= OCC_HALF)
+
+
+def occlusion(name, lamp, flat):
+    """1 where a floor point sees the lamp (radius 0) past the occluder, and the camera sees
+    the floor point; 0 where the camera sees the black occluder or, with castShadow, the
+    occluder hides the lamp."""
+    cam = np.array([0, CAMERA_H, 0.0])
+    f = (CAMERA_H - OCC_Y) / CAMERA_H
+    seen = ~in_occluder(cam + f * (flat - cam))
+    if not lamp.get("castShadow", True):
+        return seen.astype(float)
+    c = np.array(lamp["position"], dtype=float)
+    g = OCC_Y / c[1]
+    lit = ~in_occluder(flat + g * (c - flat))
+    return (seen & lit).astype(float)
+
+
+def expected(lamp, name=None):
     """Per pixel: the mean over n x n points (8 x 8 for a point, whose field is cheap and may
     have a hard edge; the camera's view of a disk lamp's edge also 8 x 8)."""
     small = lamp["type"] != "area" and lamp.get("radius", 0) == 0
     n_sub = 8 if small else 2
     flat = camera_points(n_sub).reshape(-1, 3)
     rad = RHO / math.pi * irradiance(lamp, flat)
+    if name in OCCLUDED:
+        rad *= occlusion(name, lamp, flat)[:, None]
     rad = rad.reshape(SIZE, n_sub, SIZE, n_sub, 3).mean(axis=(1, 3))
     if lamp.get("visibleToCamera") and lamp.get("radius", 0) > 0:
         # the disk facing the camera, crossed by the camera rays at its centre's height
@@ -232,7 +276,7 @@ def check(out, name):
     lamp = SCENES[name]
     img = read_image(os.path.join(out, name + ".exr"))[:, :, :3]
     var = read_image(os.path.join(out, name + "-var.exr"))[:, :, :3]
-    exp = expected(lamp)
+    exp = expected(lamp, name)
     n = 16
     got, want = blocks(img) / n, blocks(exp) / n
     se = np.sqrt(blocks(var)) / n
