@@ -248,6 +248,12 @@ class MaterialTranslator:
             return ("const", self.checked(out, "output",
                                           [float(v) for v in out.default_value][:3]))
         spec = NODES.get(node.bl_idname)
+        if node.bl_idname == "ShaderNodeBump":
+            self.refuse("%s feeds '%s' of '%s'; supported: a Bump's Normal into a BSDF's, a "
+                        "Fresnel's, a Layer Weight's or another Bump's Normal"
+                        % (self.node_where(node), user_socket.name, user.name),
+                        "using input '%s''s own value" % user_socket.name)
+            return None
         if spec is None:
             self.refuse("%s is not supported (it feeds '%s' of '%s'); supported nodes: %s"
                         % (self.node_where(node), user_socket.name, user.name,
@@ -375,9 +381,16 @@ class MaterialTranslator:
             if socket is None:
                 args[param] = self.export.object_constants(self.obj)[param]
                 continue
-            if param in spec.get("unlinked_attr", {}) and self.link_source(socket) is None:
-                args[param] = {"attr": spec["unlinked_attr"][param]}
-                continue
+            if param in spec.get("unlinked_attr", {}):
+                source = self.link_source(socket)
+                if source is None:
+                    args[param] = {"attr": spec["unlinked_attr"][param]}
+                    continue
+                if source.node is not None and source.node.bl_idname == "ShaderNodeBump" \
+                        and not source.node.mute:  # a bumped normal (graph.md "Bump")
+                    with self.inside(source.path):
+                        args[param] = {"node": self.bump(source.node)}
+                    continue
             if spec.get("texture") == "uv" and param == "vector" and \
                     self.link_source(socket) is None:
                 # Cycles: an unlinked Vector of an Image Texture is the UV map.

@@ -3,6 +3,9 @@ with .venv's Python).
 
     texture_nodes.py OUT.blend            writes the scene
     texture_nodes.py OUT.blend refusals   writes the scene of the refused cases (make_refusals)
+    texture_nodes.py OUT.blend bumped     writes the scene with a Bump into Fresnel's and Layer
+                                          Weight's Normal (make_bumped)
+    texture_nodes.py --reference bumped   its reference: cycles-texture-nodes-bumped.json
     texture_nodes.py --reference [--spp N] renders it with Cycles (cycles_render.py) and writes
                                           cycles-texture-nodes.json (region_means.py --write
                                           --edges: 8x8 block means, silhouette blocks marked)
@@ -123,11 +126,28 @@ def make(path):
     bpy.ops.wm.save_as_mainfile(filepath=path)
 
 
+def make_bumped(path):
+    """The scene with Fresnel's and Layer Weight's Normal from a Bump node (a Noise height,
+    Strength 0.4, Distance 0.05) instead of the shading normal."""
+    make(path)
+    t = bpy.data.objects["Sphere"].data.materials[0].node_tree
+    noise = t.nodes.new("ShaderNodeTexNoise")
+    noise.inputs["Scale"].default_value = 4.0
+    bump = t.nodes.new("ShaderNodeBump")
+    bump.name = "Bump"
+    bump.inputs["Strength"].default_value = 0.4
+    bump.inputs["Distance"].default_value = 0.05
+    t.links.new(noise.outputs["Fac"], bump.inputs["Height"])
+    for name in ("Weight", "Fresnel"):
+        t.links.new(bump.outputs["Normal"], t.nodes[name].inputs["Normal"])
+    bpy.ops.wm.save_as_mainfile(filepath=path)
+
+
 def make_refusals(path):
     """The scene whose texture nodes the exporter refuses, each once: the sphere's colour from an
     Attribute node reading a colour attribute "Col", its strength from one reading the second
-    UV map "Second" (not the render one), and a cube whose Object Info Random is its colour,
-    instanced by a collection instance "Copies"."""
+    UV map "Second" (not the render one), a Bump's Normal into Fresnel's IOR, and a cube whose
+    Object Info Random is its colour, instanced by a collection instance "Copies"."""
     make(path)
     sphere = bpy.data.objects["Sphere"]
     sphere.data.color_attributes.new("Col", "FLOAT_COLOR", "POINT")
@@ -153,6 +173,9 @@ def make_refusals(path):
     info.name = "Info"
     diffuse = m.node_tree.nodes["Principled BSDF"]
     m.node_tree.links.new(info.outputs["Random"], diffuse.inputs["Base Color"])
+    bump = m.node_tree.nodes.new("ShaderNodeBump")  # a bumped normal as a roughness
+    bump.name = "Bump"
+    m.node_tree.links.new(bump.outputs["Normal"], diffuse.inputs["Roughness"])
     mesh.materials.append(m)
     empty = bpy.data.objects.new("Copies", None)
     empty.instance_type, empty.instance_collection = "COLLECTION", copies
@@ -161,14 +184,14 @@ def make_refusals(path):
     bpy.ops.wm.save_as_mainfile(filepath=path)
 
 
-def reference(spp):
+def reference(spp, case):
     from cycles_render import render_npy
     work = tempfile.mkdtemp()
     blend = os.path.join(work, "nodes.blend")
-    make(blend)
+    (make_bumped if case == "bumped" else make)(blend)
     exr = blend + ".exr"
     render_npy(bpy.context.scene, spp, exr, exr + ".npy", True)
-    expected = os.path.join(HERE, "cycles-texture-nodes.json")
+    expected = os.path.join(HERE, "cycles-texture-nodes%s.json" % ("-bumped" if case else ""))
     subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"), exr + ".npy",
                            expected, "--write", "--edges"])
     print("texture_nodes: %s (%d spp)" % (expected, spp))
@@ -177,8 +200,11 @@ def reference(spp):
 if __name__ == "__main__":
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else sys.argv[1:]
     if argv[:1] == ["--reference"]:
-        reference(int(argv[argv.index("--spp") + 1]) if "--spp" in argv else 1024)
+        reference(int(argv[argv.index("--spp") + 1]) if "--spp" in argv else 1024,
+                  "bumped" if "bumped" in argv else "")
     elif argv[1:2] == ["refusals"]:
         make_refusals(argv[0])
+    elif argv[1:2] == ["bumped"]:
+        make_bumped(argv[0])
     else:
         make(argv[0])
