@@ -397,6 +397,8 @@ def instancers(obj):
     if original.parent is not None and original.parent.instance_type in ("VERTS", "FACES"):
         found.append(original.parent.name)
     for other in bpy.data.objects:
+        if not other.users_scene:  # in no scene: instances nothing that renders
+            continue
         coll = other.instance_collection if other.instance_type == "COLLECTION" else None
         if coll is not None and original.name in coll.all_objects:
             found.append(other.name)

@@ -40,8 +40,9 @@ NOT_YET = [
      "call, with the bake's incoming direction as an argument (a bake shades every point from "
      "one direction); blender-export/export-texture-nodes.test renders them, with Color Ramp "
      "HSV, Float, RGB and Vector Curves, on a sphere against Cycles (every 8x8 block off the "
-     "silhouette within 0.2%). An unlinked Normal is the Normal attribute. Refused silently "
-     "by nature: Cycles inverts the IOR on a back face (a face seen from behind its winding); "
+     "silhouette within 0.2%; export-texture-nodes-bumped.test with a Bump node's Normal into "
+     "both, the same). An unlinked Normal is the Normal attribute, a Bump's Normal the graph's "
+     "bump node. Not reproduced: Cycles inverts the IOR on a back face (a face seen from behind its winding); "
      "texrender's Normal faces the viewer and no attribute says the face was turned, so a back "
      "face gets the front face's value (closed meshes seen from outside have none)"),
     ("Object Info (`blObjectInfo{Location,Color,Alpha,ObjectIndex,MaterialIndex,Random}`) and "
