@@ -8,7 +8,9 @@
  * table's first or last step (Extend Extrapolated) or holds its end value (Extend Horizontal).
  * The Blender exporter (scripts/blender_nodes.py) writes the table Blender makes, so these
  * functions only do Cycles' lookup and mix. RGB Curves' table already holds each channel's
- * curve applied after the combined (C) curve, as Blender builds it for Cycles.
+ * curve applied after the combined (C) curve, as Blender builds it for Cycles; its Black and
+ * White Levels change nothing in Cycles (a bake with levels 0.1 and 0.8 equals one without),
+ * nor here.
  *
  *   float  blFloatCurve(float factor, float value, __global const float *table, int size,
  *                       float minX, float maxX, int extrapolate)
