@@ -626,6 +626,96 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
     return data
 
 
+# --- Lamps (issue 37 item 2): Blender's point, spot and area lamps against Cycles -------------
+
+LAMP_BLEND = os.path.join(common.ROOT, "testsuite", "Inputs", "blender-export",
+                          "make_lamp_blend.py")
+LAMP_CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "interior")
+# Renders a .blend with Cycles at a size, spp and seed (CPU, the make_lamp_blend.py settings:
+# no denoising, no adaptive sampling, box filter 1 px); prints the render's seconds.
+LAMP_CYCLES = """
+import sys, time
+sys.path.insert(0, %r)
+import bpy
+from cycles_render import render_npy
+blend, w, h, spp, seed, npy = sys.argv[-6:]
+bpy.ops.wm.open_mainfile(filepath=blend)
+scene = bpy.context.scene
+scene.render.resolution_x, scene.render.resolution_y = int(w), int(h)
+scene.cycles.seed = int(seed)
+t0 = time.perf_counter()
+render_npy(scene, int(spp), npy + ".exr", npy)
+print("CYCLESSECONDS %%f" %% (time.perf_counter() - t0))
+""" % os.path.dirname(LAMP_BLEND)
+
+
+def lamp_figure(tools, size, spp, seeds, cases, block=16, tol=0.01):
+    """Per case: Cycles and texrender (the exporter's scene) at `spp` and each seed; the mean
+    images over the seeds compared: whole-image means per channel, and the 16x16 blocks within
+    `tol` (of max(Cycles' block mean, 5% of Cycles' image mean), every channel); each block's
+    difference against its standard error from both renderers' seed-to-seed spread; frame
+    times (Cycles' render call, which includes its scene sync and BVH build; texrender's
+    renderSeconds)."""
+    import numpy as np
+    sys.path.insert(0, os.path.join(common.ROOT, "scripts"))
+    import texexr
+    w, h = (int(x) for x in size.split("x"))
+    out = {}
+    for case in cases:
+        blend = os.path.join(tools.work, "lamp-%s.blend" % case)
+        common.run([VENV_PYTHON, LAMP_BLEND, blend, case])
+        scene, textures = exported(tools, blend, "lamp-" + case)
+        cyc, tex, cyc_t, tex_t = [], [], [], []
+        for seed in seeds:
+            npy = os.path.join(tools.work, "lamp-%s-cycles-%d.npy" % (case, seed))
+            _, text = common.run([VENV_PYTHON, "-c", LAMP_CYCLES, blend, str(w), str(h),
+                                  str(spp), str(seed), npy])
+            cyc_t.append(float(text.split("CYCLESSECONDS")[1].split()[0]))
+            cyc.append(np.load(npy)[..., :3].astype(np.float64))
+            stats, img, _ = common.texrender(tools, scene, textures, "lamp-%s-%d" % (case, seed),
+                                             ["--size", size, "--spp", str(spp), "--seed",
+                                              str(seed)], image="exr")
+            tex_t.append(stats["renderSeconds"])
+            with open(img, "rb") as f:
+                image = texexr.read_exr(f.read())
+            image = image[0] if isinstance(image, tuple) else image
+            tex.append(np.asarray(image, np.float64)[..., :3])
+        a, b = np.mean(cyc, axis=0), np.mean(tex, axis=0)
+
+        def tiles(x):
+            return x.reshape(h // block, block, w // block, block, 3).mean(axis=(1, 3))
+
+        ta, tb = tiles(a), tiles(b)
+        floor = 0.05 * a.mean()
+        rel = np.abs(tb - ta) / np.maximum(ta, floor)
+        within = (rel <= tol).all(axis=-1)
+        n = len(seeds)
+        if n > 1:  # the standard error of each renderer's seed mean, per block and channel
+            se2 = sum(np.var([tiles(x) for x in xs], axis=0, ddof=1) / n for xs in (cyc, tex))
+            z = (tb - ta) / np.sqrt(np.maximum(se2, 1e-30))
+        else:
+            z = None
+        out[case] = {
+            "meanCycles": a.mean(axis=(0, 1)).tolist(), "meanTexrender": b.mean(axis=(0, 1)).tolist(),
+            "meanRelDiffPercent": (100 * (b.mean(axis=(0, 1)) / a.mean(axis=(0, 1)) - 1)).tolist(),
+            "blocks": int(within.size), "blocksWithin": int(within.sum()),
+            "blocksWithinPercent": 100.0 * within.mean(),
+            "worstBlockRelDiffPercent": 100 * float(rel.max()),
+            "blockZ": None if z is None else {
+                "rms": float(np.sqrt((z * z).mean())), "maxAbs": float(np.abs(z).max()),
+                "over3": int((np.abs(z) > 3).sum()), "values": int(z.size)},
+            "cyclesSeconds": cyc_t, "texrenderSeconds": tex_t,
+            "frameTimeRatio": float(np.mean(cyc_t) / np.mean(tex_t))}
+        r = out[case]
+        print("%-12s means %+.2f/%+.2f/%+.2f%%  blocks within %.0f%%: %d/%d  worst %.2f%%  "
+              "z rms %s  Cycles %.2f s  texrender %.2f s" % (
+                  case, *r["meanRelDiffPercent"], 100 * tol, r["blocksWithin"], r["blocks"],
+                  r["worstBlockRelDiffPercent"],
+                  "%.2f" % r["blockZ"]["rms"] if r["blockZ"] else "-",
+                  np.mean(cyc_t), np.mean(tex_t)), flush=True)
+    return out
+
+
 def main():
     import argparse
     import tempfile
@@ -673,7 +763,28 @@ def main():
                     help="with --texture-only, rust-model: the AO node's output alone (ao), its "
                     "square (ao-squared) or the colour with AO replaced by a constant 0.5 (constant-ao); bisects issue 22's "
                     "rust blocks (make_scene.py --texture-probe)")
+    ap.add_argument("--lamps", action="store_true",
+                    help="only issue 37's lamp figure (testsuite/Inputs/blender-export/"
+                    "make_lamp_blend.py's cases through the exporter) at --agree-size (default "
+                    "128x96) and --agree-spp (default 256) over --agree-seeds; --lamp-cases "
+                    "picks cases; results in bench/results/cycles_lamps.json")
+    ap.add_argument("--lamp-cases", default=",".join(LAMP_CASES))
     args = ap.parse_args()
+    if args.lamps:
+        ensure_bpy()
+        tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-lamps-"))
+        t0, load0 = time.perf_counter(), os.getloadavg()
+        data = {"size": args.agree_size or "128x96", "spp": args.agree_spp or 256,
+                "seeds": list(args.agree_seeds)}
+        data["results"] = lamp_figure(tools, data["size"], data["spp"], data["seeds"],
+                                      args.lamp_cases.split(","))
+        data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
+                     "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+                     "machine": common.machine(), "loadAverageBefore": load0,
+                     "loadAverageAfter": os.getloadavg(),
+                     "command": "python3 bench/cycles.py " + " ".join(sys.argv[1:])})
+        common.save("cycles_lamps", data, args.out)
+        return
     if args.seed in args.noise_seed:
         ap.error("--noise-seed must not repeat --seed (%d)" % args.seed)
     variants, renderers = args.variants.split(","), args.renderers.split(",")

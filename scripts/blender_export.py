@@ -572,12 +572,9 @@ class Export:
             return math.sqrt(sum(x * x for x in v))
 
         if kind in ("POINT", "SPOT"):
-            if not getattr(light, "use_soft_falloff", True):
-                self.problems.refuse("%s: Soft Falloff is off; supported: on (texrender's %s "
-                                     "lamp is Cycles' soft-falloff one: a disk facing the lit "
-                                     "point, not a sphere)" % (where, kind.lower()),
-                                     "rendering it with soft falloff")
             lamp["radius"] = float(light.shadow_soft_size)
+            if not getattr(light, "use_soft_falloff", True):
+                lamp["softFalloff"] = False  # Cycles' sphere lamp
         if kind == "SPOT":
             if getattr(light, "use_square", False):
                 self.problems.refuse("%s: Square is on; supported: off (a round cone)" % where,

@@ -4,7 +4,8 @@
  * go on through them (Cycles treats a lamp as a transparent surface). With Cycles' default
  * soft falloff, a point or spot lamp of radius r is a disk of radius r facing the point it
  * lights (a different disk for every point); of radius 0 it is a true point (a delta light,
- * which no ray hits). An area lamp is a one-sided rectangle or ellipse. OpenCL C 1.2. */
+ * which no ray hits); with Soft Falloff off (RT_LAMP_SPHERE) it is a sphere of radius r. An
+ * area lamp is a one-sided rectangle or ellipse. OpenCL C 1.2. */
 #ifndef RT_LAMPS_H
 #define RT_LAMPS_H
 
@@ -44,6 +45,36 @@ static inline float2 rt_sample_disk(float u1, float u2) {
   return (float2)(r * cos(phi), r * sin(phi));
 }
 
+/* The nearest t in (0, tmax) where the ray o + t d (unit d) meets the sphere of centre c and
+ * radius r (from inside: where it leaves it); -1 if none. */
+static inline float rt_sphere_hit(float3 o, float3 d, float3 c, float r, float tmax) {
+  float3 oc = o - c;
+  float b = dot(oc, d);
+  float cc = dot(oc, oc) - r * r;
+  float disc = b * b - cc;
+  if (!(disc >= 0.0f))
+    return -1.0f;
+  float sq = sqrt(disc);
+  float t = -b - sq;
+  if (!(t > 0.0f))
+    t = -b + sq;
+  return t > 0.0f && t < tmax ? t : -1.0f;
+}
+
+/* A sphere lamp (a point or spot with Soft Falloff off, Cycles' is_sphere): from outside,
+ * directions uniform in the cone the sphere subtends; from inside, uniform on the sphere of
+ * directions (Cycles' choice for a surface with transmission; the same image). The
+ * solid-angle pdf of d from o, as rt_lamp_sample draws it. */
+static inline float rt_sphere_pdf(RtLight l, float3 o) {
+  float3 v = o - l.pos.xyz;
+  float d2 = dot(v, v), r2 = l.pos.w * l.pos.w;
+  if (d2 <= r2)
+    return 1.0f / (4.0f * RT_PI);
+  float cosMax = sqrt(fmax(0.0f, 1.0f - r2 / d2));
+  /* 1 - cosMax without cancellation: (r2 / d2) / (1 + cosMax) */
+  return 1.0f / (2.0f * RT_PI * ((r2 / d2) / (1.0f + cosMax)));
+}
+
 /* Samples a point of lamp l seen from p (u1, u2 in [0, 1)): the direction wi, the distance,
  * the radiance le (a delta lamp: its intensity times the spot factor, with *delta = 1) and
  * the solid-angle pdf (a delta lamp: the squared distance, so that le / pdf is the
@@ -52,6 +83,32 @@ static inline float rt_lamp_sample(RtLight l, float3 p, float u1, float u2, floa
                                    float *dist, float3 *le, int *delta) {
   *delta = 0;
   *le = l.radiance.xyz;
+  if (l.tri & RT_LAMP_SPHERE) {
+    float3 toC = l.pos.xyz - p;
+    float d2 = dot(toC, toC), r2 = l.pos.w * l.pos.w;
+    int inside = d2 <= r2;
+    if (inside) {
+      *wi = rt_sample_sphere(u1, u2);
+    } else {
+      float dc = sqrt(d2);
+      float oneMinusCos = (r2 / d2) / (1.0f + sqrt(fmax(0.0f, 1.0f - r2 / d2)));
+      float z = 1.0f - u1 * oneMinusCos;
+      float s = sqrt(fmax(0.0f, 1.0f - z * z));
+      float phi = 2.0f * RT_PI * u2;
+      *wi = rt_to_world((float3)(s * cos(phi), s * sin(phi), z), toC / dc);
+    }
+    float t = rt_sphere_hit(p, *wi, l.pos.xyz, l.pos.w, INFINITY);
+    if (!(t > 0.0f))
+      t = inside ? 0.0f : sqrt(fmax(0.0f, d2 - r2)); /* grazing: the tangent distance */
+    *dist = t;
+    if (l.type == RT_LIGHT_SPOT && !inside) {
+      float a = rt_spot_factor(l, -*wi);
+      if (a <= 0.0f)
+        return 0.0f;
+      *le *= a;
+    }
+    return t > 0.0f ? rt_sphere_pdf(l, p) : 0.0f;
+  }
   float3 q;
   float3 n; /* the emitting side's normal at q */
   float area;
@@ -134,6 +191,23 @@ static inline float3 rt_lamp_hit(RtLight l, float3 o, float3 d, float tmax, floa
   if (!(r > 0.0f))
     return none;
   float3 toO = o - l.pos.xyz;
+  if (l.tri & RT_LAMP_SPHERE) {
+    /* A spot's sphere is one-sided as Cycles': only rays heading towards its centre. */
+    if (l.type == RT_LIGHT_SPOT && !(dot(d, toO) < 0.0f))
+      return none;
+    float t = rt_sphere_hit(o, d, l.pos.xyz, r, tmax);
+    if (!(t > 0.0f))
+      return none;
+    float3 le = l.radiance.xyz;
+    if (l.type == RT_LIGHT_SPOT && dot(toO, toO) > r * r) {
+      float a = rt_spot_factor(l, -d);
+      if (a <= 0.0f)
+        return none;
+      le *= a;
+    }
+    *pdf = rt_sphere_pdf(l, o);
+    return le;
+  }
   float dc = length(toO);
   if (!(dc > 0.0f))
     return none;

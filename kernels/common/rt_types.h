@@ -140,6 +140,7 @@ typedef struct RtMaterial {
 #define RT_LAMP_ELLIPSE 1   /* area: an ellipse (else a rectangle) */
 #define RT_LAMP_NO_SHADOW 2 /* casts no shadow: its shadow rays are not traced */
 #define RT_LAMP_CAMERA 4    /* camera rays see it (Blender 5.0 light objects: off by default) */
+#define RT_LAMP_SPHERE 8    /* point, spot of radius > 0: a sphere (Soft Falloff off) */
 typedef struct RtLight {
   int type;
   int tri;

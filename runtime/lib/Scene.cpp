@@ -214,7 +214,7 @@ Vec3 direction(const Reader &R, const json &J, const std::string &Path, const st
 void parseLamp(const Reader &R, const json &J, const std::string &Path, Light &L) {
   std::set<std::string> Keys{"type", "position", "power", "castShadow", "visibleToCamera"};
   if (L.Type == "point" || L.Type == "spot")
-    Keys.insert("radius");
+    Keys.insert({"radius", "softFalloff"});
   if (L.Type == "spot")
     Keys.insert({"direction", "spotSize", "spotBlend"});
   if (L.Type == "area")
@@ -227,6 +227,8 @@ void parseLamp(const Reader &R, const json &J, const std::string &Path, Light &L
   L.Power = R.power(J["power"], Path + "/power");
   if (J.contains("castShadow"))
     L.CastShadow = R.boolean(J["castShadow"], Path + "/castShadow");
+  if (J.contains("softFalloff"))
+    L.SoftFalloff = R.boolean(J["softFalloff"], Path + "/softFalloff");
   if (J.contains("visibleToCamera"))
     L.VisibleToCamera = R.boolean(J["visibleToCamera"], Path + "/visibleToCamera");
   if (J.contains("radius")) {

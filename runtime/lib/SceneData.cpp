@@ -225,6 +225,8 @@ RtLight makeLamp(const Light &Li) {
   } else {
     L.type = Li.Type == "spot" ? RT_LIGHT_SPOT : RT_LIGHT_POINT;
     float R = Li.Radius;
+    if (!Li.SoftFalloff && R > 0) // Cycles' is_sphere: the same radiance on a sphere
+      L.tri |= RT_LAMP_SPHERE;
     L.area = Pi * R * R;
     Scale = R > 0 ? 1.0f / (4.0f * Pi * Pi * R * R) : 1.0f / (4.0f * Pi);
     if (Li.Type == "spot") {

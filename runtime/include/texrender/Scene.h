@@ -64,6 +64,7 @@ struct Light {
   float Width = 1, Height = 1;     // area
   Vec3 AxisU{1, 0, 0};             // area: the direction of its width
   bool CastShadow = true;
+  bool SoftFalloff = true;       // point, spot: false makes a radius > 0 a sphere
   bool VisibleToCamera = false; // Blender 5.0's default for a light object
 };
 

@@ -173,7 +173,7 @@ def defaults():
     tree.links.new(sky.outputs["Color"], bsdf.inputs["Color"])
     plane(scene, "PlaneDefaults", m, 0.0).visible_shadow = False
     lamp = bpy.data.objects.new("Lamp", bpy.data.lights.new("Lamp", "POINT"))
-    lamp.data.use_soft_falloff = False  # a sphere lamp: texrender's point lamp is a disk
+    lamp.data.normalize = False  # texrender's lamps are normalized
     scene.collection.objects.link(lamp)
 
 

@@ -13,9 +13,11 @@ lamp is above the camera's view (the image shows what they light, not the lamps)
 "point" (radius 0.2, 300 W, warm), "spot" (radius 0.1, 800 W, 40 deg, blend 0.3, aimed at the
 cube), "area-rect" (1.5 m x 0.6 m, the object scaled 1.2 in X, tilted, 150 W), "area-disk"
 (1 m disk, 120 W, bluish), "three-point" (a key area rectangle, a fill point lamp and a rim
-spot behind the cube); "refused" (for the error test: a point lamp without Soft Falloff, a
+spot behind the cube), "sphere" (a point lamp of radius 0.4 with Soft Falloff off, 0.9 m from
+the cube: Cycles' sphere lamp, in view of the camera but not visible to it); "refused" (for the error test: a point lamp without Soft Falloff, a
 square spot scaled (1, 2, 1), an area lamp of Spread 90 deg and Max Bounces 2, a point lamp
-with Light Linking and Glossy visibility off, and a portal).
+with Light Linking and Glossy visibility off, and a portal); "interior" (bench only: the
+three-lamp interior, a closed room lit by an area key, a point fill and a spot accent).
 
 --reference renders each case with Cycles (CPU, N spp, default 4096; cycles_render.py) and
 writes the 16x16-pixel block means into cycles-lamp-CASE.json (region_means.py --write).
@@ -29,7 +31,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-CASES = ("point", "spot", "area-rect", "area-disk", "three-point")
+CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "sphere")
 
 
 def aim(obj, target):
@@ -103,6 +105,11 @@ def make(out, case):
              shadow_soft_size=0.3)
         lamp(scene, "Rim", "SPOT", (0.5, 2.0, 3.5), (0.0, 0.0, 0.8), 500.0, (1.0, 1.0, 0.9),
              shadow_soft_size=0.05, spot_size=math.radians(35.0), spot_blend=0.15)
+    elif case == "sphere":
+        lamp(scene, "Ball", "POINT", (1.0, -0.6, 1.5), None, 150.0, (1.0, 0.9, 0.8),
+             shadow_soft_size=0.4, use_soft_falloff=False)
+    elif case == "interior":
+        interior(scene, cam, floor, wall, box)
     elif case == "refused":
         lamp(scene, "Sphere", "POINT", (1.5, -1.0, 3.0), None, 100.0, shadow_soft_size=0.2,
              use_soft_falloff=False)
@@ -121,6 +128,38 @@ def make(out, case):
         raise SystemExit("make_lamp_blend.py: unknown case '%s' (cases: %s)"
                          % (case, ", ".join(CASES)))
     bpy.ops.wm.save_as_mainfile(filepath=out)
+
+
+def interior(scene, cam, floor, wall, box):
+    """The three-lamp interior: the floor and wall of make() become a closed room (6 x 5 x 3 m,
+    walls and ceiling pale), a second box, the camera inside (24 mm lens) and three lamps: an
+    area key on the ceiling, a point fill and a spot accent on the cube."""
+    import bpy
+    from make_blend import add_mesh, cube_mesh, quad
+    for name in ("Floor", "Wall", "Cube"):
+        bpy.data.objects.remove(bpy.data.objects[name])
+    ceiling_mat = bpy.data.materials["Wall"]
+    add_mesh("Floor", quad("floor", 1.0, 0.0), floor).scale = (6.0, 5.0, 1.0)
+    c = add_mesh("Ceiling", quad("ceiling", 1.0, 0.0), ceiling_mat)
+    c.scale, c.location = (6.0, 5.0, 1.0), (0.0, 0.0, 3.0)
+    for name, loc, rot, scale in (("Back", (0.0, 2.5, 1.5), (math.pi / 2, 0, 0), (6.0, 3.0, 1)),
+                                  ("Front", (0.0, -2.5, 1.5), (math.pi / 2, 0, 0), (6.0, 3.0, 1)),
+                                  ("Left", (-3.0, 0.0, 1.5), (0, math.pi / 2, 0), (3.0, 5.0, 1)),
+                                  ("Right", (3.0, 0.0, 1.5), (0, math.pi / 2, 0), (3.0, 5.0, 1))):
+        w = add_mesh(name, quad(name.lower(), 1.0, 0.0), wall)
+        w.location, w.rotation_euler, w.scale = loc, rot, scale
+    add_mesh("Cube", cube_mesh(), box).location = (0.6, 0.8, 0.0)
+    b = add_mesh("Shelf", cube_mesh(), floor)
+    b.location, b.scale = (-1.8, 1.6, 0.0), (1.2, 0.6, 1.6)
+    cam.location = (0.4, -2.3, 1.5)
+    cam.data.lens = 24.0
+    aim(cam, (0.0, 1.0, 0.9))
+    lamp(scene, "Key", "AREA", (0.5, 0.3, 2.95), (0.5, 0.3, 0.0), 60.0, (1.0, 0.95, 0.85),
+         shape="RECTANGLE", size=1.2, size_y=0.6)
+    lamp(scene, "Fill", "POINT", (-2.0, -1.2, 2.2), None, 25.0, (0.8, 0.85, 1.0),
+         shadow_soft_size=0.15)
+    lamp(scene, "Accent", "SPOT", (2.4, 1.8, 2.6), (0.6, 0.8, 0.5), 150.0, (1.0, 0.9, 0.7),
+         shadow_soft_size=0.05, spot_size=math.radians(50.0), spot_blend=0.4)
 
 
 def render(blend, spp):
