@@ -233,6 +233,41 @@ def measure(args, tools, save):
     return data
 
 
+BUSY = "import time\nend = time.time() + %f\nwhile time.time() < end: pass\n"
+
+
+def cpu_seconds(pid):
+    with open("/proc/%d/stat" % pid) as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def autogroup_check(seconds=4.0, cpu=None):
+    """Two busy loops on one CPU, their CPU seconds read halfway through `seconds`: A at nice 0
+    in this session, B at nice 10 in this session, in a session of its own (setsid), and in
+    its own session with its autogroup niced to 10 (/proc/PID/autogroup). Returns each case's
+    CPU seconds of A and B: how much a niced competitor takes from a thread of this session in
+    each arrangement."""
+    cpu = cpu if cpu is not None else max(os.sched_getaffinity(0))
+    out = {}
+    for case in ("same-session", "setsid", "setsid+autogroup-nice"):
+        cmd = [sys.executable, "-c", BUSY % seconds]
+        a = subprocess.Popen(["taskset", "-c", str(cpu)] + cmd)
+        b = subprocess.Popen(["taskset", "-c", str(cpu), "nice", "-n", "10"] + cmd,
+                             start_new_session=(case != "same-session"))
+        if case == "setsid+autogroup-nice":
+            with open("/proc/%d/autogroup" % b.pid, "w") as f:
+                f.write("10")
+        time.sleep(seconds / 2)
+        a_cpu, b_cpu = cpu_seconds(a.pid), cpu_seconds(b.pid)
+        a.wait(), b.wait()
+        out[case] = {"A": a_cpu, "B": b_cpu, "B share": b_cpu / max(a_cpu + b_cpu, 1e-9),
+                     "load1": os.getloadavg()[0]}
+        common.log("autogroup check %s: A %.2f s, B %.2f s of CPU in %.1f s" % (
+            case, a_cpu, b_cpu, seconds / 2))
+    return out
+
+
 def report(data):
     """The markdown tables of bench/threads.md from a result file."""
     runs = data["runs"]
@@ -301,8 +336,19 @@ def main():
     ap.add_argument("--cycles", action="store_true", help="Cycles (bpy) under the same loads")
     ap.add_argument("--blend", help="the rust-all .blend (default: made by make_scene.py)")
     ap.add_argument("--profile", action="store_true")
+    ap.add_argument("--autogroup-check", action="store_true",
+                    help="only: how much CPU a niced busy loop takes from one of this session, "
+                         "in this session, under setsid, and with its autogroup niced "
+                         "(bench/results/threads-autogroup.json)")
     ap.add_argument("--out", help="result file (default bench/results/threads.json)")
     args = ap.parse_args()
+    if args.autogroup_check:
+        data = {"autogroupCheck": autogroup_check(), "autogroupEnabled": open(
+            "/proc/sys/kernel/sched_autogroup_enabled").read().strip(),
+            "command": "python3 bench/threads.py " + " ".join(sys.argv[1:]),
+            "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+        common.save("threads-autogroup", data, args.out)
+        return
     if args.cycles:
         cycles.ensure_bpy()
     work = tempfile.mkdtemp(prefix="texcc-threads-")
