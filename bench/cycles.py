@@ -630,7 +630,7 @@ def measure(tools, quick, save=None, size=None, spps=None, reps=None, agree_size
 
 LAMP_BLEND = os.path.join(common.ROOT, "testsuite", "Inputs", "blender-export",
                           "make_lamp_blend.py")
-LAMP_CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "interior")
+LAMP_CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "sphere", "interior")
 # Renders a .blend with Cycles at a size, spp and seed (CPU, the make_lamp_blend.py settings:
 # no denoising, no adaptive sampling, box filter 1 px); prints the render's seconds.
 LAMP_CYCLES = """
@@ -767,7 +767,8 @@ def main():
                     help="only issue 37's lamp figure (testsuite/Inputs/blender-export/"
                     "make_lamp_blend.py's cases through the exporter) at --agree-size (default "
                     "128x96) and --agree-spp (default 256) over --agree-seeds; --lamp-cases "
-                    "picks cases; results in bench/results/cycles_lamps.json")
+                    "picks cases, --merge replaces only theirs; results in "
+                    "bench/results/cycles_lamps.json (needs numpy: run it with .venv/bin/python)")
     ap.add_argument("--lamp-cases", default=",".join(LAMP_CASES))
     args = ap.parse_args()
     if args.lamps:
@@ -782,7 +783,14 @@ def main():
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "loadAverageBefore": load0,
                      "loadAverageAfter": os.getloadavg(),
-                     "command": "python3 bench/cycles.py " + " ".join(sys.argv[1:])})
+                     "command": ".venv/bin/python bench/cycles.py " + " ".join(sys.argv[1:])})
+        for r in data["results"].values():  # each case says which run measured it
+            r["run"] = {k: data[k] for k in ("size", "spp", "seeds", "git", "date", "command",
+                                             "loadAverageBefore", "loadAverageAfter")}
+        old = common.load("cycles_lamps") if args.merge else None
+        if old:  # --merge: these cases replace theirs
+            old["results"].update(data["results"])
+            data = old
         common.save("cycles_lamps", data, args.out)
         return
     if args.seed in args.noise_seed:

@@ -196,7 +196,7 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
 /// radius 0; an area lamp's own area): a point or spot of radius r > 0 is a disk facing the lit
 /// point of radiance P / (4 pi^2 r^2), one of radius 0 a point of intensity P / (4 pi) W/sr; an
 /// area lamp has the radiance P / (pi A) on the side it lights.
-RtLight makeLamp(const Light &Li) {
+RtLight makeLamp(const Light &Li, const std::string &Where) {
   RtLight L{};
   L.tri = (Li.CastShadow ? 0 : RT_LAMP_NO_SHADOW) | (Li.VisibleToCamera ? RT_LAMP_CAMERA : 0);
   L.pos = f4(Li.Position, Li.Type == "area" ? 0.0f : Li.Radius);
@@ -238,6 +238,12 @@ RtLight makeLamp(const Light &Li) {
     }
   }
   L.radiance = f4(P[0] * Scale, P[1] * Scale, P[2] * Scale);
+  for (int I = 0; I < 3; ++I)
+    if (!std::isfinite(L.radiance.s[I]) || !std::isfinite(Scale))
+      throw Error(Where + ": its radiance (power / " +
+                  (Li.Type == "area" ? std::string("(pi x area)") : std::string("(4 pi^2 r^2)")) +
+                  ") overflows a float: a smaller power or a larger " +
+                  (Li.Type == "area" ? "size" : "radius"));
   return L;
 }
 
@@ -286,10 +292,11 @@ void buildLights(const Scene &S, SceneData &D) {
     D.Lights.push_back(L);
   }
   D.LampFirst = int(D.Lights.size());
-  for (const Light &Li : S.Lights) {
+  for (size_t I = 0; I < S.Lights.size(); ++I) {
+    const Light &Li = S.Lights[I];
     if (Li.Type == "sky" || Li.Type == "sun")
       continue;
-    D.Lights.push_back(makeLamp(Li));
+    D.Lights.push_back(makeLamp(Li, S.Path + ": /lights/" + std::to_string(I)));
     // Its power (a spot's: the part inside its cone) chooses it.
     float Share = Li.Type == "spot" ? 0.5f * (1.0f - D.Lights.back().dir.s[3]) : 1.0f;
     Weights.push_back(std::max(luminance(Li.Power) * std::max(Share, 1e-3f), 1e-6f));
