@@ -7,11 +7,34 @@
 
 typedef int sam2D; /* an image index into TexccCtx::images */
 
+/* floor, ceil and trunc as the compiler's rounding instructions (x86: roundss/roundps). PoCL's
+ * kernel library computes them in software, with a branch in the scalar forms (a float-to-int
+ * round trip, a fix-up, tests for infinities and large values): 72 floors per sample of a Noise
+ * Texture of Detail 7 in Color. The results are exact either way, so the values are the same
+ * (a zero's sign aside). Noise 3D Color Detail 7 on PoCL, one thread: inline 958 -> 759 ns
+ * per sample, interp 747 -> 646 (bench/texture-speed.md). */
+#if defined(__clang__) && __has_builtin(__builtin_elementwise_floor)
+#define floor(x) __builtin_elementwise_floor(x)
+#define ceil(x) __builtin_elementwise_ceil(x)
+#define trunc(x) __builtin_elementwise_trunc(x)
+#endif
+
 /* The loop budget: how many loop iterations (all loops of all nodes together) one work-item may
  * run per launch; texcc --loop-budget N defines it before this header. */
 #ifndef TEXCC_LOOP_BUDGET
 #define TEXCC_LOOP_BUDGET 16777216u
 #endif
+/* The budget is spent in slices: at the end of each the work-item looks at the launch's fault
+ * record and stops its loops when another work-item has faulted (the launch is an error and its
+ * values are never used). An endless loop then costs one work-item's budget and a slice of each
+ * of the others, not every work-item's budget (64x64 hits at the default budget: 54 s before;
+ * bench/loop-budget.md). The first slice takes what the division leaves over. */
+#define TEXCC_LOOP_SLICE 4096u
+#define TEXCC_LOOP_FIRST_SLICE                                                                     \
+  (TEXCC_LOOP_BUDGET % TEXCC_LOOP_SLICE != 0u                                                      \
+       ? TEXCC_LOOP_BUDGET % TEXCC_LOOP_SLICE                                                      \
+       : (TEXCC_LOOP_BUDGET < TEXCC_LOOP_SLICE ? TEXCC_LOOP_BUDGET : TEXCC_LOOP_SLICE))
+#define TEXCC_LOOP_SLICES ((TEXCC_LOOP_BUDGET - TEXCC_LOOP_FIRST_SLICE) / TEXCC_LOOP_SLICE)
 #ifndef TEXCC_CHECKS
 #define TEXCC_CHECKS 1 /* 0: texcc --no-checks (A/B measurement only) */
 #endif
@@ -24,12 +47,13 @@ typedef int sam2D; /* an image index into TexccCtx::images */
  * through every loop and every case of the interp dispatch (rust interp: 3745.8 instructions
  * per hit against 3702.8 with them volatile, 3662.7 unchecked; bench/loop-budget.md). */
 typedef struct TexccGuard {
-  uint loopsLeft;
+  uint loopsLeft;  /* of the slice being spent */
+  uint slicesLeft; /* whole slices after it */
   uint at;
   int hit;
   int material;
   __global int *fault;
-  int line;    /* of the loop that spent the budget; 0: none did */
+  int line;    /* of the loop that spent the budget; 0: none did; -1: stopped (another's fault) */
   int badLine; /* of the first __global array read out of bounds; 0: none was */
   volatile uint lineAt;    /* at, when the budget was spent */
   volatile uint badAt;     /* at, when the read was out of bounds */
@@ -78,19 +102,53 @@ static inline void texcc_fault(const TexccCtx *c, int kind, int line, uint at, i
   f[TEXCC_FAULT_MATERIAL] = c->guard->material;
 }
 
+/* The end of a slice: true when a new one starts. None left: the loop's line is kept (the
+ * budget is spent); another work-item's fault recorded: the loops stop without a fault of this
+ * one (line -1). */
+static bool texcc_loop_next_slice(const TexccCtx *c, int line) {
+  TexccGuard *g = c->guard;
+  if (g->slicesLeft != 0u &&
+      ((volatile __global int *)g->fault)[TEXCC_FAULT_KIND] == TEXCC_FAULT_NONE) {
+    --g->slicesLeft;
+    g->loopsLeft = TEXCC_LOOP_SLICE;
+    return true;
+  }
+  if (g->line == 0) {
+    g->line = g->slicesLeft != 0u ? -1 : line;
+    g->lineAt = g->at;
+  }
+  g->loopsLeft = 0u;
+  g->slicesLeft = 0u;
+  return false;
+}
+
+/* Charges n iterations that the slice being spent does not hold (texcc_loop_charge). */
+static bool texcc_loop_charge_slices(const TexccCtx *c, uint n, int line) {
+  TexccGuard *g = c->guard;
+  const uint total = g->loopsLeft + g->slicesLeft * TEXCC_LOOP_SLICE;
+  if (total >= n && ((volatile __global int *)g->fault)[TEXCC_FAULT_KIND] == TEXCC_FAULT_NONE) {
+    g->slicesLeft = (total - n) / TEXCC_LOOP_SLICE;
+    g->loopsLeft = (total - n) % TEXCC_LOOP_SLICE;
+    return true;
+  }
+  if (g->line == 0) {
+    g->line = total >= n ? -1 : line;
+    g->lineAt = g->at;
+  }
+  g->loopsLeft = 0u;
+  g->slicesLeft = 0u;
+  return false;
+}
+
 /* texcc ends the condition of every user loop with `&& texcc_loop_continues(texcc_ctx,
  * __LINE__)`: each iteration spends one of the work-item's budget. With none left the loop
  * ends, and so does every loop around it at its next test; the first such loop's line and
  * node are kept for texcc_report_fault (private stores only: no atomic inside user loops). */
 static inline bool texcc_loop_continues(const TexccCtx *c, int line) {
   TexccGuard *g = c->guard;
-  if (!TEXCC_CHECKS || g->loopsLeft != 0u) {
+  if (!TEXCC_CHECKS || g->loopsLeft != 0u || texcc_loop_next_slice(c, line)) {
     --g->loopsLeft;
     return true;
-  }
-  if (g->line == 0) {
-    g->line = line;
-    g->lineAt = g->at;
   }
   return false;
 }
@@ -104,12 +162,7 @@ static inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
     g->loopsLeft -= n;
     return true;
   }
-  g->loopsLeft = 0u;
-  if (g->line == 0) {
-    g->line = line;
-    g->lineAt = g->at;
-  }
-  return false;
+  return texcc_loop_charge_slices(c, n, line);
 }
 
 /* A constant `for` of N >= 1 iterations whose start is a literal is charged without a branch
@@ -121,9 +174,11 @@ static inline bool texcc_loop_charge(const TexccCtx *c, uint n, int line) {
 static inline int texcc_loop_charge_once(const TexccCtx *c, uint n, int line) {
   TexccGuard *g = c->guard;
   const uint left = g->loopsLeft;
-  const bool ok = !TEXCC_CHECKS || left >= n;
-  g->loopsLeft = ok ? left - n : 0u;
-  return ok ? 0 : line;
+  if (!TEXCC_CHECKS || left >= n) {
+    g->loopsLeft = left - n;
+    return 0;
+  }
+  return texcc_loop_charge_slices(c, n, line) ? 0 : line;
 }
 
 static inline void texcc_loop_fault(const TexccCtx *c, int line) {
@@ -198,7 +253,7 @@ static inline long texcc_index(const TexccCtx *c, long i, uint n, int line) {
 /* At the end of the kernel: the work-item's fault, if any, into the fault record (a loop past
  * its budget first: its out-of-range reads may be a consequence). */
 static inline void texcc_report_fault(const TexccCtx *c) {
-  if (TEXCC_CHECKS && c->guard->line != 0)
+  if (TEXCC_CHECKS && c->guard->line > 0)
     texcc_fault(c, TEXCC_FAULT_LOOP_BUDGET, c->guard->line, c->guard->lineAt,
                 (int)TEXCC_LOOP_BUDGET, 0);
   else if (TEXCC_CHECKS && c->guard->badLine != 0)

@@ -113,7 +113,8 @@ void emitKernelPrologue(std::ostringstream &OS, const std::string &Guard, const 
      << "  ctx.images = images;\n"
      // Field by field: the fault details after badLine stay unset (texcc_device.h).
      << "  TexccGuard guard;\n"
-     << "  guard.loopsLeft = TEXCC_LOOP_BUDGET;\n"
+     << "  guard.loopsLeft = TEXCC_LOOP_FIRST_SLICE;\n"
+     << "  guard.slicesLeft = TEXCC_LOOP_SLICES;\n"
      << "  guard.at = " << At << ";\n"
      << "  guard.hit = gid;\n"
      << "  guard.material = mat;\n"
