@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+"""Issue 39 items 1-2: the texture kernel's cost per sample in every texrender mode beside a C
+reference, the same texture source compiled by clang-15 -O3 as native code
+(bench/cpp_reference/README.md), on one thread.
+
+Graphs (bench/cpp_reference/graphs/): Blender's Noise Texture (blNoise3DColor, 3D fBM, Detail 7,
+Color) and a user's fBM of PCG-hashed value noise (bench/cpp_reference/userfbm.cl, 8 octaves,
+colour). Per graph it measures, in ns per sample:
+
+- texrender's modes inline, interp and shape on PoCL (texcc-eval --time: one process, the modes
+  in rounds whose order rotates, POCL_MAX_PTHREAD_COUNT=1, device time per textured hit);
+- ref: the texture function itself over an array of points (ref.c), with the parameters as
+  run-time values ("runtime") and as literals ("folded");
+- native: texcc's generated proctex.cl of inline and interp mode (the loop budget, the guards,
+  the interp dispatch included) compiled by the same clang-15 -O3 and run work-item after
+  work-item (proctex_host.c): what texcc's code costs without PoCL's build of it.
+
+The processes alternate (ref, native, PoCL) --reps times; the figures are medians over all rounds
+of all repetitions, with the load average recorded. Every reference output is compared with
+texrender's inline mode at the same points (texcc-eval --points): "maxAbsDiff" must be 0.
+
+--callgrind adds instruction counts per sample (valgrind --tool=callgrind, which has no AVX-512:
+everything is built for -march=haswell; PoCL's kernel through POCL_LLVM_CPU_NAME=haswell, its
+cached texcc_proctex.so run by proctex_host -DPROCTEX_POCL, counting only the work-group
+function): deterministic where the wall times of the shared machine are not. The PoCL kernel's
+values at the reference's points are compared too.
+
+usage: bench/texture_speed.py [--build DIR] [--work DIR] [--rounds R] [--reps K] [--grid N]
+                              [--callgrind] [--modes inline,interp,shape] [--out FILE]
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+REF_DIR = os.path.join(common.BENCH, "cpp_reference")
+GRAPHS = {"noise3d-color-detail7": os.path.join(REF_DIR, "graphs", "noise3d-color-detail7.json"),
+          "userfbm": os.path.join(REF_DIR, "graphs", "userfbm.json")}
+# ref.c's variant names per graph; its --dump-values columns 0-2 are the noise, 3-5 the fBM.
+REF_VARIANTS = {"noise3d-color-detail7": ("noise3d-color-detail7/runtime",
+                                          "noise3d-color-detail7/folded"),
+                "userfbm": ("userfbm/runtime", "userfbm/folded")}
+REF_COLUMNS = {"noise3d-color-detail7": slice(0, 3), "userfbm": slice(3, 6)}
+REF_FUNCTIONS = {"noise3d-color-detail7/runtime": "refNoiseRuntime",
+                 "noise3d-color-detail7/folded": "refNoiseFolded",
+                 "userfbm/runtime": "refFbmRuntime", "userfbm/folded": "refFbmFolded"}
+NATIVE_MODES = ("inline", "interp")
+CLANG = "clang-15"
+CL_FLAGS = ["-x", "cl", "-cl-std=CL1.2", "-Xclang", "-finclude-default-header",
+            "--target=x86_64-linux-gnu", "-O3", "-ffp-contract=off"]
+
+
+def sh(cmd, env=None, cwd=None):
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                       cwd=cwd)
+    if r.returncode != 0:
+        raise common.BenchError("%s failed (exit %d): %s" % (" ".join(cmd), r.returncode,
+                                                             r.stderr.strip()[-1500:]))
+    return r.stdout, r.stderr
+
+
+def build_ref(work, march):
+    """ref (ref.c + ref_textures.cl) for -march=MARCH; returns the binary's path."""
+    obj = os.path.join(work, "ref_textures.%s.o" % march)
+    sh([CLANG] + CL_FLAGS + ["-march=" + march, "-c", os.path.join(REF_DIR, "ref_textures.cl"),
+                             "-o", obj])
+    exe = os.path.join(work, "ref.%s" % march)
+    sh([CLANG, "-O3", "-march=" + march, os.path.join(REF_DIR, "ref.c"), obj, "-lm", "-o", exe])
+    return exe
+
+
+def build_native(work, folder, march):
+    """proctex_host over FOLDER's proctex.cl for -march=MARCH; returns the binary's path."""
+    name = os.path.basename(folder.rstrip("/"))
+    obj = os.path.join(work, "%s.%s.o" % (name, march))
+    sh([CLANG] + CL_FLAGS + ["-march=" + march, "-I", os.path.join(common.ROOT, "kernels", "common"),
+                             "-include", os.path.join(REF_DIR, "cl_compat.h"), "-w", "-c",
+                             os.path.join(folder, "proctex.cl"), "-o", obj])
+    exe = os.path.join(work, "%s.%s" % (name, march))
+    sh([CLANG, "-O3", "-march=" + march, os.path.join(REF_DIR, "proctex_host.c"), obj, "-lm",
+        "-o", exe])
+    return exe
+
+
+def max_outputs(folder):
+    with open(os.path.join(folder, "proctex.cl")) as f:
+        m = re.search(r"#define TEXCC_MAX_OUTPUTS (\d+)", f.read())
+    return int(m.group(1)) if m else 1
+
+
+def read_rows(path, cols=slice(None)):
+    with open(path) as f:
+        return [[float(v) for v in line.split()][cols] for line in f if line.strip()]
+
+
+def max_abs_diff(a, b):
+    if len(a) != len(b):
+        raise common.BenchError("value dumps of different lengths: %d, %d" % (len(a), len(b)))
+    return max(abs(x - y) for ra, rb in zip(a, b) for x, y in zip(ra, rb))
+
+
+def callgrind_ir(cmd, toggle, env=None):
+    """Instructions executed inside the functions matching toggle (callgrind)."""
+    out = cmd[0] + ".callgrind.out"
+    _, err = sh(["valgrind", "--tool=callgrind", "--toggle-collect=" + toggle,
+                 "--callgrind-out-file=" + out] + cmd, env=env)
+    os.remove(out)
+    m = re.search(r"Collected : (\d+)", err)
+    if not m:
+        raise common.BenchError("no callgrind total in: %s" % err[-500:])
+    return int(m.group(1))
+
+
+def measure(args):
+    work = args.work
+    os.makedirs(work, exist_ok=True)
+    tools = common.Tools(args.build, work)
+    eval_tool = os.path.join(args.build, "bin", "texcc-eval")
+    modes = args.modes.split(",")
+    folders = {}
+    for g, graph in GRAPHS.items():
+        for mode in modes:
+            folder = os.path.join(work, "%s-%s" % (g, mode))
+            common.texcc(tools, graph, folder, mode)
+            folders[(g, mode)] = folder
+    ref = build_ref(work, "native")
+    natives = {(g, m): build_native(work, folders[(g, m)], "native")
+               for g in GRAPHS for m in NATIVE_MODES if m in modes}
+
+    # Values: the reference at its points against texrender's inline mode (PoCL) there.
+    points = os.path.join(work, "points.txt")
+    ref_values = os.path.join(work, "ref-values.txt")
+    sh([ref, "--points", str(args.grid), "--rounds", "1", "--dump-points", points,
+        "--dump-values", ref_values])
+    env1 = dict(os.environ, POCL_MAX_PTHREAD_COUNT="1")
+    values = {}
+    for g in GRAPHS:
+        out, _ = sh([eval_tool, folders[(g, modes[0])], "--points", points], env=env1)
+        pocl = [[float(v) for v in line.split()[3:6]] for line in out.splitlines() if line.strip()]
+        d = {"texrender-" + modes[0]: max_abs_diff(read_rows(ref_values, REF_COLUMNS[g]), pocl)}
+        for m in NATIVE_MODES:
+            if (g, m) in natives:
+                dump = os.path.join(work, "%s-%s.native-values.txt" % (g, m))
+                sh([natives[(g, m)], os.path.join(folders[(g, m)], "args.bin"), "--points",
+                    str(args.grid), "--rounds", "1", "--outputs", str(max_outputs(folders[(g, m)])),
+                    "--dump-values", dump])
+                d["native-" + m] = max_abs_diff(read_rows(ref_values, REF_COLUMNS[g]),
+                                                read_rows(dump))
+        values[g] = d
+        common.log("%s: max abs difference of the reference to %s" % (g, d))
+
+    samples = {g: {} for g in GRAPHS}
+    loads = []
+
+    def add(g, key, xs):
+        samples[g].setdefault(key, []).extend(xs)
+
+    for rep in range(args.reps):
+        loads.append(os.getloadavg()[0])
+        out, _ = sh([ref, "--points", str(args.grid), "--rounds", str(args.rounds)])
+        r = json.loads(out)["variants"]
+        for g, (rt, folded) in REF_VARIANTS.items():
+            add(g, "ref-runtime", r[rt]["nsPerSample"])
+            add(g, "ref-folded", r[folded]["nsPerSample"])
+        for (g, m), exe in natives.items():
+            out, _ = sh([exe, os.path.join(folders[(g, m)], "args.bin"), "--points", str(args.grid),
+                         "--rounds", str(args.rounds), "--outputs",
+                         str(max_outputs(folders[(g, m)]))])
+            add(g, "native-" + m, json.loads(out)["nsPerSample"])
+        for g in GRAPHS:
+            out, _ = sh([eval_tool] + [folders[(g, m)] for m in modes] +
+                        ["--time", str(args.rounds), "--grid", str(args.grid)], env=env1)
+            for m, f in zip(modes, json.loads(out)["folders"]):
+                add(g, "texrender-" + m, f["nsPerHit"])
+        common.log("repetition %d of %d done (load %.1f)" % (rep + 1, args.reps, loads[-1]))
+    loads.append(os.getloadavg()[0])
+
+    rows = {}
+    for g in GRAPHS:
+        row = {k: {"medianNsPerSample": statistics.median(v), "minNsPerSample": min(v),
+                   "samples": len(v)} for k, v in samples[g].items()}
+        base = row["ref-folded"]["medianNsPerSample"]
+        for k in row:
+            row[k]["ratioToRefFolded"] = row[k]["medianNsPerSample"] / base
+        rows[g] = {"configs": row, "maxAbsDiff": values[g]}
+        common.log("%s: median ns/sample %s" % (g, {k: round(v["medianNsPerSample"], 1)
+                                                    for k, v in row.items()}))
+
+    if args.callgrind:
+        cwork = os.path.join(work, "callgrind")
+        os.makedirs(cwork, exist_ok=True)
+        n = args.callgrind_points
+        ref_h = build_ref(cwork, "haswell")
+        pocl_host = os.path.join(cwork, "pocl_host")
+        sh([CLANG, "-O2", "-DPROCTEX_POCL", os.path.join(REF_DIR, "proctex_host.c"), "-ldl", "-lm",
+            "-o", pocl_host])
+        for g, variants in REF_VARIANTS.items():
+            for v, key in zip(variants, ("ref-runtime", "ref-folded")):
+                # ref runs every variant once untimed and once per round: 2 runs of n points.
+                ir = callgrind_ir([ref_h, "--points", str(n), "--rounds", "1"], REF_FUNCTIONS[v])
+                rows[g]["configs"][key]["irPerSample"] = ir / (2.0 * n)
+        for g in GRAPHS:
+            for m in NATIVE_MODES:
+                if m not in modes:
+                    continue
+                exe = build_native(cwork, folders[(g, m)], "haswell")
+                ir = callgrind_ir([exe, os.path.join(folders[(g, m)], "args.bin"), "--points",
+                                   str(n), "--rounds", "1", "--outputs",
+                                   str(max_outputs(folders[(g, m)]))], "texcc_proctex")
+                rows[g]["configs"]["native-" + m]["irPerSample"] = ir / (2.0 * n)
+            for m in modes:
+                # PoCL builds the kernel for haswell into a cache of its own (outside valgrind:
+                # under it PoCL sees another CPU and builds again, for minutes); proctex_host
+                # built with -DPROCTEX_POCL runs that .so's work-group function.
+                cache = os.path.join(cwork, "pocl-%s-%s" % (g, m))
+                env = dict(env1, POCL_LLVM_CPU_NAME="haswell", POCL_CACHE_DIR=cache)
+                sh([eval_tool, folders[(g, m)], "--time", "1", "--grid", "64"], env=env)
+                sos = [os.path.join(dp, f) for dp, _, fs in os.walk(cache) for f in fs
+                       if f == "texcc_proctex.so"]
+                if len(sos) != 1:
+                    raise common.BenchError("%s: expected one texcc_proctex.so, found %s" % (
+                        cache, sos))
+                ir = callgrind_ir([pocl_host, os.path.join(folders[(g, m)], "args.bin"), "--so",
+                                   sos[0], "--points", str(n), "--rounds", "1", "--outputs",
+                                   str(max_outputs(folders[(g, m)]))], "pocl_run_group")
+                rows[g]["configs"]["texrender-" + m]["irPerSample"] = ir / (2.0 * n)
+            common.log("%s: instructions per sample %s" % (g, {
+                k: round(v["irPerSample"], 1) for k, v in rows[g]["configs"].items()
+                if "irPerSample" in v}))
+    return {"machine": common.machine(), "git": common.git_head(), "grid": args.grid,
+            "rounds": args.rounds, "reps": args.reps, "poclMaxPthreadCount": "1",
+            "loadAverage1min": loads, "graphs": rows}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--work", default=None)
+    ap.add_argument("--rounds", type=int, default=15)
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--grid", type=int, default=4096)
+    ap.add_argument("--modes", default="inline,interp,shape")
+    ap.add_argument("--callgrind", action="store_true")
+    ap.add_argument("--callgrind-points", type=int, default=4096)
+    ap.add_argument("--out", default=os.path.join(common.RESULTS, "texture_speed.json"))
+    args = ap.parse_args()
+    args.work = args.work or os.path.join(args.build, "bench-texture-speed")
+    data = measure(args)
+    common.save(None, data, args.out)
+
+
+if __name__ == "__main__":
+    common.run_main(main, "bench/texture_speed.py")
