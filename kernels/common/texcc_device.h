@@ -11,8 +11,8 @@ typedef int sam2D; /* an image index into TexccCtx::images */
  * kernel library computes them in software, with a branch in the scalar forms (a float-to-int
  * round trip, a fix-up, tests for infinities and large values): 72 floors per sample of a Noise
  * Texture of Detail 7 in Color. The results are exact either way, so the values are the same
- * (a zero's sign aside). Noise 3D Color Detail 7 on PoCL, one thread: inline 958 -> 759 ns
- * per sample, interp 747 -> 646 (bench/texture-speed.md). */
+ * (codegen/device-rounding.test). Noise 3D Color Detail 7 on PoCL, one thread: inline 958 ->
+ * 759 ns per sample, interp 747 -> 646 (bench/texture-speed.md). */
 #if defined(__clang__) && __has_builtin(__builtin_elementwise_floor)
 #define floor(x) __builtin_elementwise_floor(x)
 #define ceil(x) __builtin_elementwise_ceil(x)
