@@ -14,7 +14,10 @@ lamp is above the camera's view (the image shows what they light, not the lamps)
 cube), "area-rect" (1.5 m x 0.6 m, the object scaled 1.2 in X, tilted, 150 W), "area-disk"
 (1 m disk, 120 W, bluish), "three-point" (a key area rectangle, a fill point lamp and a rim
 spot behind the cube), "sphere" (a point lamp of radius 0.4 with Soft Falloff off, 0.9 m from
-the cube: Cycles' sphere lamp, in view of the camera but not visible to it); "refused" (for the error test: a point lamp without Soft Falloff, a
+the cube: Cycles' sphere lamp, in view of the camera but not visible to it), "visible" (a
+point lamp, an area rectangle facing the camera and a spot aimed at it, all in view with Ray
+Visibility > Camera on: the camera sees the point's disk, the rectangle's lit side and the
+spot's disk inside its cone); "refused" (for the error test: a point lamp without Soft Falloff, a
 square spot scaled (1, 2, 1), an area lamp of Spread 90 deg and Max Bounces 2, a point lamp
 with Light Linking and Glossy visibility off, and a portal); "interior" (bench only: the
 three-lamp interior, a closed room lit by an area key, a point fill and a spot accent).
@@ -31,7 +34,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "sphere")
+CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "sphere", "visible")
 
 
 def aim(obj, target):
@@ -108,6 +111,13 @@ def make(out, case):
     elif case == "sphere":
         lamp(scene, "Ball", "POINT", (1.0, -0.6, 1.5), None, 150.0, (1.0, 0.9, 0.8),
              shadow_soft_size=0.4, use_soft_falloff=False)
+    elif case == "visible":  # lamps the camera sees (Ray Visibility > Camera on)
+        lamp(scene, "Bulb", "POINT", (-1.0, -1.0, 1.2), None, 100.0,
+             shadow_soft_size=0.15).visible_camera = True
+        lamp(scene, "Panel", "AREA", (1.2, -0.5, 1.2), (0.0, -6.0, 1.5), 60.0,
+             shape="RECTANGLE", size=0.6, size_y=0.3).visible_camera = True
+        lamp(scene, "Beam", "SPOT", (0.0, -1.0, 0.3), (0.0, -6.0, 2.2), 50.0,
+             shadow_soft_size=0.1, spot_size=math.radians(60.0)).visible_camera = True
     elif case == "interior":
         interior(scene, cam, floor, wall, box)
     elif case == "refused":
