@@ -835,7 +835,30 @@ def texture_speed_section(d):
                     "342.9 -> 290.8 (load 2.6); 398b2a8's noise kernels, inline 946.5 and "
                     "interp 745.2 ns, ran in the same process. The work-item loop is not "
                     "vectorised by PoCL in any of these kernels; inline mode's literals fold "
-                    "but the octave loops are not unrolled, in PoCL's build or clang's.", ""]
+                    "but the octave loops are not unrolled, in PoCL's build or clang's.", ""] + \
+        per_node_cycles_lines(common.load("per_node_cycles"))
+
+
+def per_node_cycles_lines(d):
+    """Single Blender nodes against Cycles SVM (bench/per_node_cycles.py, a standalone run)."""
+    if not d or not d.get("nodes"):
+        return []
+    loads = d.get("loadAverage1min") or [0.0]
+    lines = ["Single Blender nodes against Cycles SVM, one thread each (`bench/per_node_cycles.py`, "
+             "at %s, load average %.1f-%.1f): Cycles' cost per sample is the median over %d "
+             "rounds of a %dx%d, %d spp render of the node into Emission minus a constant "
+             "Emission's (bpy, CPU); texrender's is texcc-eval --time's kernel time per hit "
+             "(%d rounds). The rounds' differences spread widely (about +-50%% around the "
+             "median on this machine); the OSL column (the user fBM as a Script node) is not "
+             "measured." % (d["git"], min(loads), max(loads), d["reps"], d["size"], d["size"],
+                            d["spp"], d["rounds"]), "",
+             "| node | Cycles SVM ns/sample | texrender inline | interp | shape |",
+             "|---|---|---|---|---|"]
+    for name, r in d["nodes"].items():
+        t, q = r["texrenderNsPerSample"], r["ratioToCyclesSvm"]
+        lines.append("| %s | %.1f | %s |" % (name, r["cyclesSvmNsPerSample"], " | ".join(
+            "%.1f (%.2fx)" % (t[m], q[m]) for m in ("inline", "interp", "shape"))))
+    return lines + [""]
 
 
 def write(args=None):

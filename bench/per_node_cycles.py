@@ -1,0 +1,212 @@
+#!/usr/bin/env python3
+"""Issue 39 item 5, first part: single Blender nodes' cost per sample in Cycles (SVM, through
+bpy) beside texrender's per mode, one thread each.
+
+Cycles: a plane that fills an orthographic view (its Object coordinates span [-1, 1] in x and
+y), the node's output into an Emission shader, no lights, black world, Cycles on the CPU with
+one thread, SIZE x SIZE pixels at SPP samples, adaptive sampling and denoising off. A node's cost
+per sample is its render's time minus a constant Emission's render time, over SIZE^2 x SPP
+samples; the renders of every node and of the constant alternate in rounds (--reps), and the
+median of each node's per-round differences is reported.
+
+texrender: texcc-eval --time over the same node as a texcc graph (inline, interp and shape in
+one process, POCL_MAX_PTHREAD_COUNT=1, kernel time per textured hit, points uniform in
+[-1, 1]^3).
+
+The two are not the same measurement (Cycles' difference of whole renders includes its SVM
+stack and closure set-up for the node; texrender's is the texture kernel alone), and OSL (the
+user fBM as a Script node) is not measured: what is not done is said in bench/texture-speed.md.
+
+usage: bench/per_node_cycles.py [--build DIR] [--size N] [--spp N] [--reps K] [--rounds R]
+                                [--out FILE]
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+VENV_PYTHON = os.path.join(common.ROOT, ".venv", "bin", "python")
+
+# Node name -> (Blender node type, output, {input: value}, {property: value}, texcc graph node).
+NODES = {
+    "noise-3d-color-detail7": (
+        "ShaderNodeTexNoise", "Color",
+        {"Scale": 5.0, "Detail": 7.0, "Roughness": 0.5, "Lacunarity": 2.0, "Distortion": 0.0},
+        {"noise_dimensions": "3D", "noise_type": "FBM", "normalize": True},
+        {"fn": "blNoise3DColor", "src": "noise.cl",
+         "args": {"vector": {"attr": "ObjectPos"}, "scale": 5.0, "detail": 7.0, "roughness": 0.5,
+                  "lacunarity": 2.0, "offset": 0.0, "gain": 1.0, "distortion": 0.0, "type": 1,
+                  "normalize": 1}}),
+    "voronoi-3d-f1": (
+        "ShaderNodeTexVoronoi", "Distance",
+        {"Scale": 5.0, "Randomness": 1.0},
+        {"voronoi_dimensions": "3D", "feature": "F1", "distance": "EUCLIDEAN"},
+        {"fn": "blVoronoi3DDistance", "src": "voronoi.cl",
+         "args": {"vector": {"attr": "ObjectPos"}, "scale": 5.0, "detail": 0.0, "roughness": 0.5,
+                  "lacunarity": 2.0, "smoothness": 1.0, "exponent": 0.5, "randomness": 1.0,
+                  "feature": 0, "metric": 0, "normalize": 0}}),
+    "wave-bands-x-distortion1-detail7": (
+        "ShaderNodeTexWave", "Color",
+        {"Scale": 5.0, "Distortion": 1.0, "Detail": 7.0, "Detail Scale": 1.0,
+         "Detail Roughness": 0.5, "Phase Offset": 0.0},
+        {"wave_type": "BANDS", "bands_direction": "X", "wave_profile": "SIN"},
+        {"fn": "blWaveColor", "src": "noise.cl",
+         "args": {"vector": {"attr": "ObjectPos"}, "scale": 5.0, "distortion": 1.0, "detail": 7.0,
+                  "detailScale": 1.0, "detailRoughness": 0.5, "phaseOffset": 0.0, "waveType": 0,
+                  "direction": 0, "profile": 0}}),
+}
+
+WORKER = r'''
+import json, sys, time
+import bpy
+req = json.loads(sys.argv[-1])
+out = {}
+bpy.ops.wm.read_factory_settings(use_empty=True)
+scene = bpy.context.scene
+scene.render.engine = "CYCLES"
+scene.cycles.device = "CPU"
+scene.render.threads_mode = "FIXED"
+scene.render.threads = 1
+scene.cycles.samples = req["spp"]
+scene.cycles.use_adaptive_sampling = False
+scene.cycles.use_denoising = False
+scene.cycles.max_bounces = 0
+scene.render.resolution_x = scene.render.resolution_y = req["size"]
+scene.render.resolution_percentage = 100
+world = bpy.data.worlds.new("w")
+world.use_nodes = True
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+scene.world = world
+bpy.ops.mesh.primitive_plane_add(size=2.0)
+plane = bpy.context.active_object
+cam_data = bpy.data.cameras.new("c")
+cam_data.type = "ORTHO"
+cam_data.ortho_scale = 2.0
+cam = bpy.data.objects.new("c", cam_data)
+cam.location = (0.0, 0.0, 1.0)
+scene.collection.objects.link(cam)
+scene.camera = cam
+materials = {}
+for name, spec in req["nodes"].items():
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    t = m.node_tree
+    t.nodes.clear()
+    o = t.nodes.new("ShaderNodeOutputMaterial")
+    e = t.nodes.new("ShaderNodeEmission")
+    t.links.new(e.outputs[0], o.inputs["Surface"])
+    if spec is not None:
+        kind, output, inputs, props = spec
+        tc = t.nodes.new("ShaderNodeTexCoord")
+        n = t.nodes.new(kind)
+        for k, v in props.items():
+            setattr(n, k, v)
+        for k, v in inputs.items():
+            n.inputs[k].default_value = v
+        t.links.new(tc.outputs["Object"], n.inputs["Vector"])
+        t.links.new(n.outputs[output], e.inputs["Color"])
+    materials[name] = m
+times = {name: [] for name in materials}
+for r in range(req["reps"] + 1):  # the first round warms up (kernel loading), not counted
+    for name, m in materials.items():
+        plane.data.materials.clear()
+        plane.data.materials.append(m)
+        t0 = time.perf_counter()
+        bpy.ops.render.render()
+        if r > 0:
+            times[name].append(time.perf_counter() - t0)
+print("PER_NODE_CYCLES " + json.dumps(times), flush=True)
+'''
+
+
+def cycles_times(size, spp, reps):
+    nodes = {"constant": None}
+    for name, (kind, output, inputs, props, _) in NODES.items():
+        nodes[name] = (kind, output, inputs, props)
+    req = json.dumps({"size": size, "spp": spp, "reps": reps, "nodes": nodes})
+    with tempfile.NamedTemporaryFile("w", suffix=".py", delete=False) as f:
+        f.write(WORKER)
+    try:
+        r = subprocess.run([VENV_PYTHON, f.name, req], stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, text=True)
+    finally:
+        os.remove(f.name)
+    for line in r.stdout.splitlines():
+        if line.startswith("PER_NODE_CYCLES "):
+            return json.loads(line[len("PER_NODE_CYCLES "):])
+    raise common.BenchError("the Cycles worker failed (exit %d): %s" % (r.returncode,
+                                                                        r.stderr[-1500:]))
+
+
+def texrender_times(tools, rounds, grid):
+    eval_tool = os.path.join(tools.build, "bin", "texcc-eval")
+    folders, keys = [], []
+    for name, (_, _, _, _, node) in NODES.items():
+        graph = {"texcc": 1,
+                 "sources": [os.path.join(common.ROOT, "textures", "blender", node["src"])],
+                 "nodes": [{"id": "n", "fn": node["fn"], "args": node["args"]}],
+                 "materials": {"m": {"bsdf": "diffuse", "color": {"node": "n"}}}}
+        path = os.path.join(tools.work, "%s.json" % name)
+        with open(path, "w") as f:
+            json.dump(graph, f)
+        for mode in ("inline", "interp", "shape"):
+            folder = os.path.join(tools.work, "%s-%s" % (name, mode))
+            common.texcc(tools, path, folder, mode)
+            folders.append(folder)
+            keys.append((name, mode))
+    r = subprocess.run([eval_tool] + folders + ["--time", str(rounds), "--grid", str(grid)],
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                       env=dict(os.environ, POCL_MAX_PTHREAD_COUNT="1"))
+    if r.returncode != 0:
+        raise common.BenchError("texcc-eval failed: %s" % r.stderr[-1500:])
+    out = json.loads(r.stdout)
+    res = {}
+    for (name, mode), f in zip(keys, out["folders"]):
+        res.setdefault(name, {})[mode] = f["medianNsPerHit"]
+    return res
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--work", default=None)
+    ap.add_argument("--size", type=int, default=256)
+    ap.add_argument("--spp", type=int, default=16)
+    ap.add_argument("--reps", type=int, default=5)
+    ap.add_argument("--rounds", type=int, default=21)
+    ap.add_argument("--grid", type=int, default=4096)
+    ap.add_argument("--out", default=os.path.join(common.RESULTS, "per_node_cycles.json"))
+    args = ap.parse_args()
+    work = args.work or os.path.join(args.build, "bench-per-node-cycles")
+    os.makedirs(work, exist_ok=True)
+    tools = common.Tools(args.build, work)
+    load = [os.getloadavg()[0]]
+    cyc = cycles_times(args.size, args.spp, args.reps)
+    load.append(os.getloadavg()[0])
+    tex = texrender_times(tools, args.rounds, args.grid)
+    load.append(os.getloadavg()[0])
+    samples = args.size * args.size * args.spp
+    rows = {}
+    for name in NODES:
+        diffs = [(a - b) * 1e9 / samples for a, b in zip(cyc[name], cyc["constant"])]
+        svm = statistics.median(diffs)
+        rows[name] = {"cyclesSvmNsPerSample": svm, "cyclesSvmRounds": diffs,
+                      "texrenderNsPerSample": tex[name],
+                      "ratioToCyclesSvm": {m: v / svm for m, v in tex[name].items()}}
+        common.log("%s: Cycles SVM %.1f ns/sample; texrender %s" % (
+            name, svm, {m: "%.1f (%.2fx)" % (v, v / svm) for m, v in tex[name].items()}))
+    common.save(None, {"machine": common.machine(), "git": common.git_head(), "size": args.size,
+                       "spp": args.spp, "reps": args.reps, "rounds": args.rounds,
+                       "grid": args.grid, "threads": 1, "loadAverage1min": load,
+                       "cyclesConstantSeconds": cyc["constant"], "nodes": rows}, args.out)
+
+
+if __name__ == "__main__":
+    common.run_main(main, "bench/per_node_cycles.py")
