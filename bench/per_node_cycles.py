@@ -13,9 +13,11 @@ texrender: texcc-eval --time over the same node as a texcc graph (inline, interp
 one process, POCL_MAX_PTHREAD_COUNT=1, kernel time per textured hit, points uniform in
 [-1, 1]^3).
 
-The two are not the same measurement (Cycles' difference of whole renders includes its SVM
-stack and closure set-up for the node; texrender's is the texture kernel alone), and OSL (the
-user fBM as a Script node) is not measured: what is not done is said in bench/texture-speed.md.
+The user fBM (bench/cpp_reference/userfbm.cl) runs in Cycles as OSL
+(bench/cpp_reference/userfbm.osl, the same arithmetic, in a Script node) with the shading system
+set to OSL for it and for its own constant Emission. The two sides are not the same measurement
+(Cycles' difference of whole renders includes its SVM or OSL set-up for the node; texrender's
+is the texture kernel alone).
 
 usage: bench/per_node_cycles.py [--build DIR] [--size N] [--spp N] [--reps K] [--rounds R]
                                 [--out FILE]
@@ -64,14 +66,17 @@ NODES = {
 }
 
 WORKER = r'''
-import json, sys, time
+import json, os, sys, time
 import bpy
 req = json.loads(sys.argv[-1])
-out = {}
+# The Script node's socket query (oslquery) is in the bpy wheel's own site-packages.
+sys.path.append(os.path.join(os.path.dirname(bpy.__file__), "..", "..", "..", "python", "lib",
+                             "python3.11", "site-packages"))
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
 scene.render.engine = "CYCLES"
 scene.cycles.device = "CPU"
+scene.cycles.shading_system = bool(req.get("osl"))
 scene.render.threads_mode = "FIXED"
 scene.render.threads = 1
 scene.cycles.samples = req["spp"]
@@ -102,7 +107,15 @@ for name, spec in req["nodes"].items():
     o = t.nodes.new("ShaderNodeOutputMaterial")
     e = t.nodes.new("ShaderNodeEmission")
     t.links.new(e.outputs[0], o.inputs["Surface"])
-    if spec is not None:
+    if spec is not None and spec[0] == "SCRIPT":
+        txt = bpy.data.texts.new(name + ".osl")
+        with open(spec[1]) as f:
+            txt.write(f.read())
+        n = t.nodes.new("ShaderNodeScript")
+        n.mode = "INTERNAL"
+        n.script = txt
+        t.links.new(n.outputs[spec[2]], e.inputs["Color"])
+    elif spec is not None:
         kind, output, inputs, props = spec
         tc = t.nodes.new("ShaderNodeTexCoord")
         n = t.nodes.new(kind)
@@ -126,11 +139,16 @@ print("PER_NODE_CYCLES " + json.dumps(times), flush=True)
 '''
 
 
-def cycles_times(size, spp, reps):
-    nodes = {"constant": None}
-    for name, (kind, output, inputs, props, _) in NODES.items():
-        nodes[name] = (kind, output, inputs, props)
-    req = json.dumps({"size": size, "spp": spp, "reps": reps, "nodes": nodes})
+def cycles_times(size, spp, reps, osl=False):
+    if osl:
+        nodes = {"constant": None,
+                 "userfbm": ["SCRIPT", os.path.join(common.BENCH, "cpp_reference", "userfbm.osl"),
+                             "Color"]}
+    else:
+        nodes = {"constant": None}
+        for name, (kind, output, inputs, props, _) in NODES.items():
+            nodes[name] = (kind, output, inputs, props)
+    req = json.dumps({"size": size, "spp": spp, "reps": reps, "nodes": nodes, "osl": osl})
     with tempfile.NamedTemporaryFile("w", suffix=".py", delete=False) as f:
         f.write(WORKER)
     try:
@@ -161,6 +179,12 @@ def texrender_times(tools, rounds, grid):
             common.texcc(tools, path, folder, mode)
             folders.append(folder)
             keys.append((name, mode))
+    for mode in ("inline", "interp", "shape"):
+        folder = os.path.join(tools.work, "userfbm-%s" % mode)
+        common.texcc(tools, os.path.join(common.BENCH, "cpp_reference", "graphs", "userfbm.json"),
+                     folder, mode)
+        folders.append(folder)
+        keys.append(("userfbm", mode))
     r = subprocess.run([eval_tool] + folders + ["--time", str(rounds), "--grid", str(grid)],
                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                        env=dict(os.environ, POCL_MAX_PTHREAD_COUNT="1"))
@@ -190,6 +214,8 @@ def main():
     load = [os.getloadavg()[0]]
     cyc = cycles_times(args.size, args.spp, args.reps)
     load.append(os.getloadavg()[0])
+    osl = cycles_times(args.size, args.spp, args.reps, osl=True)
+    load.append(os.getloadavg()[0])
     tex = texrender_times(tools, args.rounds, args.grid)
     load.append(os.getloadavg()[0])
     samples = args.size * args.size * args.spp
@@ -202,10 +228,18 @@ def main():
                       "ratioToCyclesSvm": {m: v / svm for m, v in tex[name].items()}}
         common.log("%s: Cycles SVM %.1f ns/sample; texrender %s" % (
             name, svm, {m: "%.1f (%.2fx)" % (v, v / svm) for m, v in tex[name].items()}))
+    diffs = [(a - b) * 1e9 / samples for a, b in zip(osl["userfbm"], osl["constant"])]
+    o = statistics.median(diffs)
+    rows["userfbm"] = {"cyclesOslNsPerSample": o, "cyclesOslRounds": diffs,
+                       "texrenderNsPerSample": tex["userfbm"],
+                       "ratioToCyclesOsl": {m: v / o for m, v in tex["userfbm"].items()}}
+    common.log("userfbm: Cycles OSL %.1f ns/sample; texrender %s" % (
+        o, {m: "%.1f (%.2fx)" % (v, v / o) for m, v in tex["userfbm"].items()}))
     common.save(None, {"machine": common.machine(), "git": common.git_head(), "size": args.size,
                        "spp": args.spp, "reps": args.reps, "rounds": args.rounds,
                        "grid": args.grid, "threads": 1, "loadAverage1min": load,
-                       "cyclesConstantSeconds": cyc["constant"], "nodes": rows}, args.out)
+                       "cyclesConstantSeconds": cyc["constant"],
+                       "cyclesOslConstantSeconds": osl["constant"], "nodes": rows}, args.out)
 
 
 if __name__ == "__main__":

@@ -848,16 +848,19 @@ def per_node_cycles_lines(d):
              "at %s, load average %.1f-%.1f): Cycles' cost per sample is the median over %d "
              "rounds of a %dx%d, %d spp render of the node into Emission minus a constant "
              "Emission's (bpy, CPU); texrender's is texcc-eval --time's kernel time per hit "
-             "(%d rounds). The rounds' differences spread widely (about +-50%% around the "
-             "median on this machine); the OSL column (the user fBM as a Script node) is not "
-             "measured." % (d["git"], min(loads), max(loads), d["reps"], d["size"], d["size"],
-                            d["spp"], d["rounds"]), "",
-             "| node | Cycles SVM ns/sample | texrender inline | interp | shape |",
-             "|---|---|---|---|---|"]
+             "(%d rounds). The user fBM runs in Cycles as OSL (bench/cpp_reference/userfbm.osl "
+             "in a Script node, against a constant Emission under OSL). The rounds' "
+             "differences spread widely on this machine (bench/texture-speed.md)." % (
+                 d["git"], min(loads), max(loads), d["reps"], d["size"], d["size"], d["spp"],
+                 d["rounds"]), "",
+             "| node | Cycles | ns/sample | texrender inline | interp | shape |",
+             "|---|---|---|---|---|---|"]
     for name, r in d["nodes"].items():
-        t, q = r["texrenderNsPerSample"], r["ratioToCyclesSvm"]
-        lines.append("| %s | %.1f | %s |" % (name, r["cyclesSvmNsPerSample"], " | ".join(
-            "%.1f (%.2fx)" % (t[m], q[m]) for m in ("inline", "interp", "shape"))))
+        kind = "OSL" if "cyclesOslNsPerSample" in r else "SVM"
+        t, q = r["texrenderNsPerSample"], r["ratioToCycles" + kind.capitalize()]
+        lines.append("| %s | %s | %.1f | %s |" % (
+            name, kind, r["cycles%sNsPerSample" % kind.capitalize()], " | ".join(
+                "%.1f (%.2fx)" % (t[m], q[m]) for m in ("inline", "interp", "shape"))))
     return lines + [""]
 
 
