@@ -153,23 +153,35 @@ def reproducible(scene):
     c.diffuse_bounces = c.glossy_bounces = c.max_bounces
 
 
+def new_scene(width, height, samples, max_bounces=6, color=None, strength=None):
+    """An empty Cycles scene of width x height pixels at `samples`, with the settings
+    texrender reproduces (reproducible) and a world whose Background has the colour and strength
+    given (Blender's defaults where None). Returns the scene; its world is scene.world."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    scene.render.resolution_x, scene.render.resolution_y = width, height
+    scene.render.resolution_percentage = 100
+    scene.cycles.samples = samples
+    scene.cycles.max_bounces = max_bounces
+    reproducible(scene)
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = True
+    background = world.node_tree.nodes["Background"]
+    if color is not None:
+        background.inputs["Color"].default_value = color
+    if strength is not None:
+        background.inputs["Strength"].default_value = strength
+    scene.world = world
+    return scene
+
+
 def main():
     out = sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else sys.argv[1]
     args = sys.argv[sys.argv.index(out) + 1:]
     case = args[0] if args else "scene"
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.render.resolution_x, scene.render.resolution_y = 64, 48
-    scene.render.resolution_percentage = 100
-    scene.cycles.samples = 16
-    scene.cycles.max_bounces = 6
-    reproducible(scene)
-    world = bpy.data.worlds.new("World")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.2, 0.25, 0.3, 1.0)
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
-    scene.world = world
+    scene = new_scene(64, 48, 16, color=(0.2, 0.25, 0.3, 1.0), strength=1.0)
+    world = scene.world
     if case == "world-texture":
         sky = world.node_tree.nodes.new("ShaderNodeTexSky")
         world.node_tree.links.new(sky.outputs["Color"],

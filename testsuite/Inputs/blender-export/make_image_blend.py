@@ -72,23 +72,8 @@ def plane(bpy, scene, name, x0, x1, y0, y1, material):
 
 def make(out, refused=False):
     import bpy
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.render.resolution_x, scene.render.resolution_y = 64, 48
-    scene.render.resolution_percentage = 100
-    scene.cycles.samples = 16
-    scene.cycles.max_bounces = 2
-    scene.view_settings.view_transform = "Standard"
-    c = scene.cycles
-    c.use_denoising = c.use_adaptive_sampling = c.use_light_tree = False
-    c.pixel_filter_type, c.filter_width = "BOX", 1.0
-    c.sample_clamp_direct = c.sample_clamp_indirect = c.blur_glossy = 0.0
-    c.diffuse_bounces = c.glossy_bounces = c.max_bounces
-    world = bpy.data.worlds.new("World")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
-    scene.world = world
+    from make_blend import new_scene
+    scene = new_scene(64, 48, 16, max_bounces=2, color=(0.0, 0.0, 0.0, 1.0))
     cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     cam.data.lens = 35.0
     cam.location = (0.0, 0.0, 4.0)

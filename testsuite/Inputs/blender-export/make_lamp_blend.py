@@ -61,19 +61,8 @@ def lamp(scene, name, kind, location, target, energy, color=(1, 1, 1), **setting
 
 def make(out, case):
     import bpy
-    from make_blend import add_mesh, cube_mesh, quad, reproducible, simple
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.render.resolution_x, scene.render.resolution_y = 64, 48
-    scene.render.resolution_percentage = 100
-    scene.cycles.samples = 64
-    scene.cycles.max_bounces = 6
-    reproducible(scene)
-    world = bpy.data.worlds.new("World")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0, 0, 0, 1)
-    scene.world = world
+    from make_blend import add_mesh, cube_mesh, new_scene, quad, simple
+    scene = new_scene(64, 48, 64, color=(0, 0, 0, 1))
     cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     cam.data.lens = 50.0
     cam.location = (0.0, -6.0, 2.2)

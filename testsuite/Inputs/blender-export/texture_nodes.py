@@ -28,7 +28,7 @@ import bpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from make_blend import reproducible  # noqa: E402
+from make_blend import new_scene  # noqa: E402
 
 
 def ident(sockets, identifier):
@@ -101,18 +101,7 @@ def material():
 
 
 def make(path):
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.render.resolution_x, scene.render.resolution_y = 128, 96
-    scene.render.resolution_percentage = 100
-    scene.cycles.samples = 16
-    scene.cycles.max_bounces = 6
-    reproducible(scene)
-    world = bpy.data.worlds.new("World")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
-    scene.world = world
+    scene = new_scene(128, 96, 16, strength=0.0)
     cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     cam.location = (0.0, -4.0, 0.0)
     cam.rotation_euler = (1.5707963, 0.0, 0.0)
