@@ -540,20 +540,24 @@ for color_mode, hue, interpolation in [("HSV", h, "LINEAR") for h in HUE_MODES] 
 CURVE_ARGS = ["table", "size", "minX", "maxX", "extrapolate"]
 
 
+def set_curve_mapping(node, curves, extend, clip=True):
+    """Gives a curve node's mapping the points of `curves` (per curve of the mapping, its points
+    (x, y, handle type)), its extension and clipping (the fixtures' setup and check_table.py)."""
+    mapping = node.mapping
+    mapping.use_clip = clip
+    mapping.extend = extend
+    for curve, points in zip(mapping.curves, curves):
+        while len(curve.points) < len(points):
+            curve.points.new(0.5, 0.5)
+        for point, (x, y, handle) in zip(curve.points, points):
+            point.location = (x, y)
+            point.handle_type = handle
+    mapping.update()
+
+
 def curve_setup(curves, extend, clip=True):
     """curves: per curve of the mapping, its points (x, y, handle type)."""
-    def setup(node):
-        mapping = node.mapping
-        mapping.use_clip = clip
-        mapping.extend = extend
-        for curve, points in zip(mapping.curves, curves):
-            while len(curve.points) < len(points):
-                curve.points.new(0.5, 0.5)
-            for point, (x, y, handle) in zip(curve.points, points):
-                point.location = (x, y)
-                point.handle_type = handle
-        mapping.update()
-    return setup
+    return lambda node: set_curve_mapping(node, curves, extend, clip)
 
 
 FLOAT_CURVE = [[(0.0, 0.1, "AUTO"), (0.3, 0.65, "AUTO"), (0.6, 0.2, "VECTOR"),

@@ -21,6 +21,7 @@ import bpy
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "scripts"))
 import blender_export  # noqa: E402
+from blender_conformance import set_curve_mapping  # noqa: E402
 
 OBJECT_ARGS = {"bboxMin", "bboxMax", "axisX", "axisY", "axisZ"}  # the object's, not the node's
 
@@ -51,16 +52,7 @@ def build(tree, node_spec, image=None):
             element.position = stop[0]
             element.color = stop[1:]
     if setup and "curves" in setup:  # a curve mapping's points, handles and extension
-        mapping = node.mapping
-        mapping.use_clip = setup.get("use_clip", True)
-        mapping.extend = setup["extend"]
-        for curve, points in zip(mapping.curves, setup["curves"]):
-            while len(curve.points) < len(points):
-                curve.points.new(0.5, 0.5)
-            for point, (x, y, handle) in zip(curve.points, points):
-                point.location = (x, y)
-                point.handle_type = handle
-        mapping.update()
+        set_curve_mapping(node, setup["curves"], setup["extend"], setup.get("use_clip", True))
     position = tree.nodes.new("ShaderNodeNewGeometry").outputs["Position"]
     emission = tree.nodes.new("ShaderNodeEmission")
     for key in node_spec["fed_from_position"]:
