@@ -5,6 +5,7 @@ import charts
 import common
 from common import fmt, pct
 from report_peers import cycles_overheads, cycles_section, per_hit_nodes_section
+from report_texture import texture_speed_section
 
 HEADER = """# Benchmarks
 
@@ -792,75 +793,6 @@ def coldstart_section(d):
             r["scene"], r["coldMedian"], r["warmMedian"],
             "%.2f s" % r["cyclesMedian"] if "cyclesMedian" in r else "-", r["cycles"],
             ", ".join("%.2f" % x for x in r["cold"]), ", ".join("%.2f" % x for x in r["warm"])))
-    return lines + [""]
-
-
-def texture_speed_section(d):
-    """Section 2g (issue 39): bench/results/texture_speed.json, a standalone run of
-    bench/texture_speed.py; where the time went is in bench/texture-speed.md."""
-    if not d or not d.get("graphs"):
-        return []
-    loads = d.get("loadAverage1min") or [0.0]
-    lines = ["## 2g. Texture code against the same code compiled as C (issue 39)", "",
-             "Nanoseconds per sample on one thread, medians of %d x %d interleaved rounds over %d "
-             "points (`bench/texture_speed.py`, at %s, load average %.1f-%.1f): texrender's "
-             "modes on PoCL (texcc-eval --time), the texture function compiled by clang-15 -O3 "
-             "as C over an array of points with run-time and folded parameters (ref), and "
-             "texcc's generated kernel compiled the same way (native). Ratios are to the folded "
-             "reference; instructions per sample by callgrind (-march=haswell builds). Every "
-             "reference value equals texrender's at the same point. Where the time went, before "
-             "and after: [bench/texture-speed.md](bench/texture-speed.md)." % (
-                 d["reps"], d["rounds"], d["grid"], d["git"], min(loads), max(loads)), ""]
-    order = ("ref-folded", "ref-runtime", "native-inline", "native-interp", "texrender-inline",
-             "texrender-interp", "texrender-shape")
-    lines += ["| graph | configuration | ns/sample (median) | min | ratio to ref-folded | "
-              "instructions/sample |", "|---|---|---|---|---|---|"]
-    for g, row in d["graphs"].items():
-        for k in order:
-            c = row["configs"].get(k)
-            if not c:
-                continue
-            ir = "%.0f" % c["irPerSample"] if "irPerSample" in c else "-"
-            lines.append("| %s | %s | %.1f | %.1f | %.2f | %s |" % (
-                g, k, c["medianNsPerSample"], c["minNsPerSample"], c["ratioToRefFolded"], ir))
-    return lines + ["", "Where the time went (bench/texture-speed.md): texcc's own code (loop "
-                    "budget, fault guards, interp's dispatch) costs little - its generated kernel "
-                    "compiled by clang -O3 (native) is as fast as the bare function - while PoCL's "
-                    "build of the same kernel cost 1.34-1.37x it. PoCL 3.1's kernel library "
-                    "computes floor, ceil and trunc in software (a branch in the scalar form, no "
-                    "round instruction): Noise Color Detail 7 takes 72 floors per sample. "
-                    "texcc_device.h now maps them to clang's rounding builtins (1bf469f, "
-                    "da5f673); in one process, without and with them: noise inline 750.5 -> "
-                    "622.1 ns, interp 747.2 -> 638.8, user fBM inline 339.2 -> 289.8, interp "
-                    "342.9 -> 290.8 (load 2.6); 398b2a8's noise kernels, inline 946.5 and "
-                    "interp 745.2 ns, ran in the same process. The work-item loop is not "
-                    "vectorised by PoCL in any of these kernels; inline mode's literals fold "
-                    "but the octave loops are not unrolled, in PoCL's build or clang's.", ""] + \
-        per_node_cycles_lines(common.load("per_node_cycles"))
-
-
-def per_node_cycles_lines(d):
-    """Single Blender nodes against Cycles SVM (bench/per_node_cycles.py, a standalone run)."""
-    if not d or not d.get("nodes"):
-        return []
-    loads = d.get("loadAverage1min") or [0.0]
-    lines = ["Single Blender nodes against Cycles SVM, one thread each (`bench/per_node_cycles.py`, "
-             "at %s, load average %.1f-%.1f): Cycles' cost per sample is the median over %d "
-             "rounds of a %dx%d, %d spp render of the node into Emission minus a constant "
-             "Emission's (bpy, CPU); texrender's is texcc-eval --time's kernel time per hit "
-             "(%d rounds). The user fBM runs in Cycles as OSL (bench/cpp_reference/userfbm.osl "
-             "in a Script node, against a constant Emission under OSL). The rounds' "
-             "differences spread widely on this machine (bench/texture-speed.md)." % (
-                 d["git"], min(loads), max(loads), d["reps"], d["size"], d["size"], d["spp"],
-                 d["rounds"]), "",
-             "| node | Cycles | ns/sample | texrender inline | interp | shape |",
-             "|---|---|---|---|---|---|"]
-    for name, r in d["nodes"].items():
-        kind = "OSL" if "cyclesOslNsPerSample" in r else "SVM"
-        t, q = r["texrenderNsPerSample"], r["ratioToCycles" + kind.capitalize()]
-        lines.append("| %s | %s | %.1f | %s |" % (
-            name, kind, r["cycles%sNsPerSample" % kind.capitalize()], " | ".join(
-                "%.1f (%.2fx)" % (t[m], q[m]) for m in ("inline", "interp", "shape"))))
     return lines + [""]
 
 
