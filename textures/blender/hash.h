@@ -51,6 +51,40 @@ uint blHash4(uint x, uint y, uint z, uint w) {
   return blHashFinal(a + w, b, c);
 }
 
+/* lookup3 of 3 words in four lanes at once: blHash3 of each lane (Perlin 3D hashes four lattice
+ * corners per call, as Cycles' SSE code does). Shift counts are unsigned because the host
+ * target's vector operators (GLM) take a count of the vector's own element type. */
+uint4 blRot4(uint4 x, uint k) { return (x << k) | (x >> (32U - k)); }
+
+uint4 blHash3x4(uint4 x, uint4 y, uint4 z) {
+  uint s = 0xdeadbeefU + 12U + 13U;
+  uint4 a = x + s, b = y + s, c = z + s;
+  c ^= b;
+  c -= blRot4(b, 14U);
+  a ^= c;
+  a -= blRot4(c, 11U);
+  b ^= a;
+  b -= blRot4(a, 25U);
+  c ^= b;
+  c -= blRot4(b, 16U);
+  a ^= c;
+  a -= blRot4(c, 4U);
+  b ^= a;
+  b -= blRot4(a, 14U);
+  c ^= b;
+  c -= blRot4(b, 24U);
+  return c;
+}
+
+/* -v in the lanes of v whose mask lane has its top bit set, v elsewhere (exact: a sign flip).
+ * OpenCL flips the sign bits with one xor; the host target, whose prelude has no as_float4,
+ * selects -v. Both give the same bits. */
+#ifdef __OPENCL_VERSION__
+#define BL_NEGATE_IF4(v, mask) as_float4(as_uint4(v) ^ ((mask) & 0x80000000U))
+#else
+#define BL_NEGATE_IF4(v, mask) select((v), -(v), (mask))
+#endif
+
 /* A hash mapped to [0, 1] as Cycles does (times 1 / 0xFFFFFFFF rounded to float, i.e. 2^-32). */
 float blHashToUnit(uint h) { return (float)h * (1.0f / 4294967296.0f); }
 

@@ -109,23 +109,37 @@ float blPerlin2(float x, float y) {
   return blMix(blMix(v0, v1, u), blMix(v2, v3, u), v);
 }
 
-/* The 8 corner gradients of one 3D lattice cell (z = Z and Z + 1 given), blended. */
+/* blGrad3 in four lanes. select and BL_NEGATE_IF4 take the top bit of each mask lane, so each
+ * condition on the hash's low 4 bits is moved there: bit 3 (h >= 8: y, else x); bit 3 or 2
+ * (h >= 4: vt, else y); (h & 13) ^ 12 minus 1, which wraps to all ones for h = 12 and 14 only
+ * (vt = x, else z); bits 0 and 1 (negate u, v). */
+float4 blGrad3x4(uint4 h, float4 x, float4 y, float4 z) {
+  float4 u = select(x, y, h << 28U);
+  float4 vt = select(z, x, ((h & 13U) ^ 12U) - 1U);
+  float4 v = select(y, vt, (h | (h << 1U)) << 28U);
+  return BL_NEGATE_IF4(u, h << 31U) + BL_NEGATE_IF4(v, h << 30U);
+}
+
+/* The 8 corner gradients of one 3D lattice cell, hashed and graded four at a time: lanes
+ * (y, z) = (0, 0), (1, 0), (0, 1), (1, 1) of the cell at x = X and at X + 1; then blended over
+ * x, y and z in the scalar order (blMix(blMix(c000, c100, u), blMix(c010, c110, u), v) for
+ * z = Z, the same for Z + 1, then over z), so every value is the scalar code's, bit for bit. */
 float blPerlin3(float x, float y, float z) {
-  int X, Y, Z;
-  float fx = blFloorFrac(x, &X), fy = blFloorFrac(y, &Y), fz = blFloorFrac(z, &Z);
-  float u = blFade(fx), v = blFade(fy), w = blFade(fz);
-  uint X0 = (uint)X, X1 = (uint)(X + 1), Y0 = (uint)Y, Y1 = (uint)(Y + 1);
-  uint Z0 = (uint)Z, Z1 = (uint)(Z + 1);
-  float gx = fx - 1.0f, gy = fy - 1.0f, gz = fz - 1.0f;
-  float a = blMix(blMix(blGrad3(blHash3(X0, Y0, Z0), fx, fy, fz),
-                        blGrad3(blHash3(X1, Y0, Z0), gx, fy, fz), u),
-                  blMix(blGrad3(blHash3(X0, Y1, Z0), fx, gy, fz),
-                        blGrad3(blHash3(X1, Y1, Z0), gx, gy, fz), u), v);
-  float b = blMix(blMix(blGrad3(blHash3(X0, Y0, Z1), fx, fy, gz),
-                        blGrad3(blHash3(X1, Y0, Z1), gx, fy, gz), u),
-                  blMix(blGrad3(blHash3(X0, Y1, Z1), fx, gy, gz),
-                        blGrad3(blHash3(X1, Y1, Z1), gx, gy, gz), u), v);
-  return blMix(a, b, w);
+  float4 p = (float4)(x, y, z, 0.0f);
+  float4 f = floor(p);
+  int4 I = convert_int4(f);
+  float4 fr = p - f;
+  float4 uvw = fr * fr * fr * (fr * (fr * 6.0f - 15.0f) + 10.0f);
+  uint X0 = (uint)I.x, Y0 = (uint)I.y, Z0 = (uint)I.z;
+  uint4 Yl = (uint4)(Y0, Y0 + 1U, Y0, Y0 + 1U), Zl = (uint4)(Z0, Z0, Z0 + 1U, Z0 + 1U);
+  float4 fy = (float4)(fr.y, fr.y - 1.0f, fr.y, fr.y - 1.0f);
+  float4 fz = (float4)(fr.z, fr.z, fr.z - 1.0f, fr.z - 1.0f);
+  float4 g0 = blGrad3x4(blHash3x4((uint4)(X0), Yl, Zl), (float4)(fr.x), fy, fz);
+  float4 g1 = blGrad3x4(blHash3x4((uint4)(X0 + 1U), Yl, Zl), (float4)(fr.x - 1.0f), fy, fz);
+  float4 m = g0 + uvw.x * (g1 - g0);
+  float2 lo = (float2)(m.x, m.z), hi = (float2)(m.y, m.w);
+  float2 ab = lo + uvw.y * (hi - lo);
+  return ab.x + uvw.z * (ab.y - ab.x);
 }
 
 /* One w-slice (W given) of the 4D lattice cell, blended over x, y, z. */
