@@ -4,6 +4,7 @@
 #include "texcc/Support/AtomicWrite.h"
 #include "texcc/Support/File.h"
 #include "texrender/Error.h"
+#include "texrender/ViewTransform.h"
 
 #include <zlib.h>
 
@@ -293,14 +294,21 @@ static void writeExr(const std::string &Path, const std::string &Temp, int Width
 }
 
 static void writePng(const std::string &Path, const std::string &Temp, int Width, int Height,
-                     const std::vector<float> &RGB) {
+                     const std::vector<float> &RGB, const ViewTransform *View) {
   // stb_image_write counts the filtered rows in an int.
   if ((size_t(Width) * 3 + 1) * size_t(Height) > size_t(INT_MAX))
     throw Error(Path + ": cannot write PNG: " + std::to_string(Width) + "x" + std::to_string(Height) +
                 " is more than the PNG encoder holds (2 GiB of rows; write an .exr)");
   std::vector<unsigned char> Bytes(RGB.size());
-  for (size_t I = 0; I < RGB.size(); ++I)
-    Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
+  if (View) {
+    std::vector<float> Display(RGB);
+    View->apply(Display);
+    for (size_t I = 0; I < RGB.size(); ++I)
+      Bytes[I] = ViewTransform::toByte(Display[I]);
+  } else {
+    for (size_t I = 0; I < RGB.size(); ++I)
+      Bytes[I] = static_cast<unsigned char>(std::lround(linearToSrgb(RGB[I]) * 255.0f));
+  }
   // In memory first: stbi_write_png returns 0 both when an allocation fails and when the file
   // cannot be opened, and does not check its fwrite or fclose.
   int Len = 0;
@@ -329,7 +337,7 @@ static std::mutex PngSettingsLock;
 
 static void writeImageWith(const std::string &Path, int Width, int Height,
                            const std::vector<float> &RGB, bool FastPng,
-                           OutputGroup *Group = nullptr) {
+                           OutputGroup *Group = nullptr, const ViewTransform *View = nullptr) {
   std::string Ext = std::filesystem::path(Path).extension().string();
   std::transform(Ext.begin(), Ext.end(), Ext.begin(), ::tolower);
   if (Ext != ".exr" && Ext != ".png")
@@ -346,7 +354,7 @@ static void writeImageWith(const std::string &Path, int Width, int Height,
       std::lock_guard<std::mutex> Lock(PngSettingsLock);
       stbi_write_force_png_filter = FastPng ? 0 : -1;
       stbi_write_png_compression_level = FastPng ? 1 : 8;
-      writePng(Path, Temp, Width, Height, Finite);
+      writePng(Path, Temp, Width, Height, Finite, View);
     };
     if (Group)
       Group->add(Path, Write);
@@ -374,8 +382,8 @@ void OutputGroup::add(const std::string &Path,
 }
 
 void OutputGroup::addImage(const std::string &Path, int Width, int Height,
-                           const std::vector<float> &RGB) {
-  writeImageWith(Path, Width, Height, RGB, false, this);
+                           const std::vector<float> &RGB, const ViewTransform *View) {
+  writeImageWith(Path, Width, Height, RGB, false, this, View);
 }
 
 void OutputGroup::addText(const std::string &Path, const std::string &Text) {
@@ -399,8 +407,9 @@ void OutputGroup::commit() {
   Pending.clear();
 }
 
-void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
-  writeImageWith(Path, Width, Height, RGB, false);
+void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB,
+                const ViewTransform *View) {
+  writeImageWith(Path, Width, Height, RGB, false, nullptr, View);
 }
 
 void writePreviewImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {

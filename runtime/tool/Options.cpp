@@ -57,6 +57,13 @@ const char *Usage =
     "  --threads N          threads that render (1..1024; default: every core this process\n"
     "                       may run on): the CPU device's pool and the trace backend's\n"
     "                       (Embree), which take turns within a frame\n"
+    "  --view-transform Standard|AgX|Filmic  a .png's view transform, as Blender's Color\n"
+    "                       Management (default: the scene's film.view, else Standard)\n"
+    "  --look NAME          the view's look (\"AgX - Punchy\", \"High Contrast\", ...; None)\n"
+    "  --exposure STOPS     scale by 2^STOPS before the view (default 0)\n"
+    "  --gamma G            raise the display values to 1/G (default 1)\n"
+    "  --ocio-config FILE   Blender's config.ocio, whose folder has the LUT files AgX and\n"
+    "                       Filmic read (default: $OCIO)\n"
     "  --stats FILE         write stats.json\n"
     "  --check-nan          stop with an error at the first NaN or infinite texture output,\n"
     "                       naming the material, the node and the pixel\n"
@@ -287,6 +294,18 @@ Options parseArgs(int Argc, char **Argv) {
       O.Interactive = true;
     } else if (A == "--check-nan") {
       O.CheckNan = true;
+    } else if (A == "--view-transform") {
+      O.ViewTransform = Next();
+    } else if (A == "--look") {
+      O.Look = Next();
+    } else if (A == "--exposure") {
+      O.Exposure = toFloat(A, Next());
+    } else if (A == "--gamma") {
+      O.Gamma = toFloat(A, Next());
+    } else if (A == "--ocio-config") {
+      O.OcioConfig = Next();
+      if (O.OcioConfig.empty())
+        throw Error("--ocio-config: expected a file");
     } else if (A == "--stats") {
       O.Stats = Next();
     } else if (A == "--variance") {
@@ -353,6 +372,13 @@ Options parseArgs(int Argc, char **Argv) {
   if (O.TimeLimit > 0 && (!O.EditScript.empty() || O.Interactive))
     throw Error("--time-limit limits one render: it cannot be combined with --edit-script or "
                 "--interactive");
+  const bool Png = Ext == ".png" || Ext == ".PNG";
+  if (!Png && (O.ViewTransform || O.Look || O.Exposure || O.Gamma))
+    throw Error("--view-transform, --look, --exposure and --gamma make the picture of a .png: "
+                "-o " + O.Output + " is linear (as Blender's EXR)");
+  if (O.OcioConfig.empty())
+    if (const char *Env = std::getenv("OCIO"))
+      O.OcioConfig = Env;
   for (const std::string *Out : {&O.Output, &O.Stats, &O.Variance})
     checkOutputPath(*Out);
   return O;

@@ -36,6 +36,11 @@ struct Options {
   std::string Listen = "127.0.0.1";
   bool ListenGiven = false;
   std::vector<std::string> Forward;
+  // --view-transform, --look, --exposure, --gamma (a .png's Color Management; default: the
+  // scene's film.view) and --ocio-config (default: $OCIO).
+  std::optional<std::string> ViewTransform, Look;
+  std::optional<float> Exposure, Gamma;
+  std::string OcioConfig;
   bool Quiet = false, ForceProgress = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
 

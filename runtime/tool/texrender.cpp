@@ -16,6 +16,7 @@
 #include "texrender/SlowStep.h"
 #include "texrender/Stats.h"
 #include "texrender/Threads.h"
+#include "texrender/ViewTransform.h"
 #include "texrender/Watch.h"
 
 #include <array>
@@ -295,7 +296,8 @@ void printLatency(size_t K, const FrameRecord &F) {
 /// and skipped (the session goes on); the image OUT is rewritten after every frame. A line
 /// longer than MaxEditLine ends the session like the end of input, with an error: the
 /// return value (false).
-bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Renderer &R,
+bool interactiveSession(const Options &O, const Scene &S, const ViewTransform *View,
+                        LiveEditor &Editor, Renderer &R,
                         BuildCounter &Builds, std::vector<float> &Image,
                         std::vector<FrameRecord> &Frames) {
   const bool Tty = isatty(0);
@@ -325,7 +327,7 @@ bool interactiveSession(const Options &O, const Scene &S, LiveEditor &Editor, Re
     printLatency(Frames.size() - 1, Frames.back());
     const RenderSettings &G = S.Render;
     writeImage(O.Output, G.RegionWidth ? G.RegionWidth : G.Width,
-               G.RegionWidth ? G.RegionHeight : G.Height, Image);
+               G.RegionWidth ? G.RegionHeight : G.Height, Image, View);
   }
   return true;
 }
@@ -379,6 +381,24 @@ Scene loadSceneWithOptions(const Options &O) {
   return S;
 }
 
+/// The .png's view (Blender's Color Management): the command line's settings, the OCIO config
+/// from --ocio-config or $OCIO. Made before the render, so that an unknown look or a missing
+/// LUT file is an error before any work. Null for an .exr and for plain sRGB.
+std::unique_ptr<ViewTransform> makeViewTransform(const Options &O) {
+  std::string Ext = fs::path(O.Output).extension().string();
+  if (Ext != ".png" && Ext != ".PNG")
+    return nullptr;
+  ViewSettings V;
+  if (O.ViewTransform) V.Transform = *O.ViewTransform;
+  if (O.Look) V.Look = *O.Look;
+  if (O.Exposure) V.Exposure = *O.Exposure;
+  if (O.Gamma) V.Gamma = *O.Gamma;
+  V.Config = O.OcioConfig;
+  if (V.isPlainSrgb())
+    return nullptr;
+  return std::make_unique<ViewTransform>(V);
+}
+
 /// stats.json: statsJson's, with the threads that rendered: "pool", the count each pool was
 /// given (--threads, else every core), and "openclComputeUnits", the device's own count (on
 /// PoCL's CPU device, its pool's threads).
@@ -419,6 +439,7 @@ int run(int Argc, char **Argv) try {
     SlowStep Step("loading the scene");
     return loadSceneWithOptions(O);
   }();
+  const std::unique_ptr<ViewTransform> View = makeViewTransform(O);
   // The size of every image written: the region's, or the film's.
   const RenderSettings &G = S.Render;
   const int OutW = G.RegionWidth ? G.RegionWidth : G.Width, OutH = G.RegionWidth ? G.RegionHeight : G.Height;
@@ -522,7 +543,7 @@ int run(int Argc, char **Argv) try {
     OutputGroup Outputs;
     if (!O.Variance.empty())
       Outputs.addImage(O.Variance, OutW, OutH, Variance);
-    Outputs.addImage(O.Output, OutW, OutH, Image);
+    Outputs.addImage(O.Output, OutW, OutH, Image, View.get());
     if (!O.Stats.empty())
       Outputs.addText(O.Stats, statsWithThreads(R, L, Frames, now() - T0).dump(2) + "\n");
     Outputs.commit();
@@ -533,14 +554,14 @@ int run(int Argc, char **Argv) try {
   if (!O.Variance.empty())
     writeImage(O.Variance, OutW, OutH, Variance);
   if (!Script.empty())
-    writeImage(frameName(O.Output, 0), OutW, OutH, Image);
+    writeImage(frameName(O.Output, 0), OutW, OutH, Image, View.get());
   for (size_t K = 0; K < Script.size() && !StopSignal.load(); ++K) {
     Frames.push_back(renderAfterEdit(Script[K], *Editor, R, Builds, Image));
-    writeImage(frameName(O.Output, K + 1), OutW, OutH, Image);
+    writeImage(frameName(O.Output, K + 1), OutW, OutH, Image, View.get());
   }
-  writeImage(O.Output, OutW, OutH, Image);
+  writeImage(O.Output, OutW, OutH, Image, View.get());
   bool SessionOk = !O.Interactive || StopSignal.load() ||
-                   interactiveSession(O, S, *Editor, R, Builds, Image, Frames);
+                   interactiveSession(O, S, View.get(), *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty())
     writeTextFile(O.Stats, statsWithThreads(R, L, Frames, now() - T0).dump(2) + "\n");
   if (int Sig = StopSignal.load())

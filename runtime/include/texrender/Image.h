@@ -10,6 +10,8 @@
 
 namespace texrender {
 
+class ViewTransform;
+
 struct ImageRGBA {
   int Width = 0, Height = 0;
   std::vector<float> Pixels; // RGBA, row-major, row 0 at the top
@@ -30,8 +32,11 @@ ImageRGBA loadTexture(const std::string &Path, const std::string &ColorSpace = "
 ImageRGBA loadExr(const std::string &Path);
 
 /// Writes RGB (3 floats per pixel, linear) as .png (sRGB 8-bit) or .exr (float), chosen by
-/// the extension; anything else is an error. Atomic, like every texrender output.
-void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
+/// the extension; anything else is an error. Atomic, like every texrender output. A .png goes
+/// through View where one is given (Blender's view transform, look, exposure and gamma:
+/// ViewTransform.h), else it is the plain sRGB encoding; an .exr stays linear.
+void writeImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB,
+                const ViewTransform *View = nullptr);
 /// writeImage for a preview rewritten several times a second (texrender --watch): a .png is
 /// encoded for speed (no per-row filter search, the fastest deflate level: a larger file); an
 /// .exr as writeImage. Batch outputs use writeImage.
@@ -55,7 +60,8 @@ public:
   OutputGroup(const OutputGroup &) = delete;
   OutputGroup &operator=(const OutputGroup &) = delete;
   ~OutputGroup();
-  void addImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
+  void addImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB,
+                const ViewTransform *View = nullptr);
   void addText(const std::string &Path, const std::string &Text);
   /// Write(Temp) makes the file (throwing on an error).
   void add(const std::string &Path, const std::function<void(const std::string &)> &Write);
