@@ -1,10 +1,11 @@
 /* shade.cl: one path vertex per active hit. Adds emission (the lamps the segment crossed and
- * emissive meshes, with MIS against light sampling; sky and sun on a miss; a principled leaf's
+ * emissive meshes, with MIS against light sampling; sky, environment map and sun on a miss; a principled leaf's
  * emission), picks a BSDF leaf of the material's tree (a blend chooses
  * `b` with probability mask), makes one next-event-estimation shadow ray (light chosen by the
  * light CDF, the sun and the sky sharing their part by contribution; MIS, power heuristic), samples the next direction, applies Russian roulette and
  * writes the next ray. Path length follows Mitsuba's max_depth. */
 #include "rt_bsdf.h"
+#include "rt_env.h"
 #include "rt_lamps.h"
 #include "rt_surface.h"
 
@@ -15,7 +16,7 @@
  * (and so the random stream) is unchanged. Without RT_SPLIT_LIGHTS RT_KEEP is the constant 1. */
 #define RT_SPLIT_MESH 1     /* emissive meshes (area lights) */
 #define RT_SPLIT_SUN 2
-#define RT_SPLIT_SKY 4
+#define RT_SPLIT_SKY 4      /* the sky or the environment map */
 #define RT_SPLIT_MATERIAL 8 /* emission of materials (emission leaves, principled emission) */
 #define RT_SPLIT_LAMP 16    /* point, spot and area lamps */
 #ifdef RT_SPLIT_LIGHTS
@@ -139,10 +140,16 @@ static inline float rt_sky_select(__global const RtLight *lights, RtShadeParams 
  * with which next-event estimation would have chosen d at the previous vertex: the sun's from
  * its cone and its share there (sunShare), the sky's (cosine-weighted about the previous
  * vertex's shading normal) kept in skyPdf. */
-static inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm, float3 d,
-                                    float bsdfPdf, float skyPdf, uint sunShare, int specular,
-                                    int length) {
+static inline float3 rt_environment(__global const RtLight *lights, RtShadeParams prm,
+                                    __global const float *envMap, float3 d, float bsdfPdf,
+                                    float skyPdf, uint sunShare, int specular, int length) {
   float3 le = (float3)(0.0f);
+  if (prm.envLight >= 0) {
+    /* The environment map: its next-event density depends on d alone. */
+    RtLight l = lights[prm.envLight];
+    float w = specular ? 1.0f : rt_mis(bsdfPdf, l.select * rt_env_pdf(envMap, prm, l, d));
+    le += rt_env_radiance(envMap, prm, l, d) * w * RT_KEEP(RT_SPLIT_SKY, length);
+  }
   if (prm.skyLight >= 0) {
     RtLight l = lights[prm.skyLight];
     le += l.radiance.xyz * (specular ? 1.0f : rt_mis(bsdfPdf, skyPdf)) *
@@ -184,9 +191,9 @@ static inline float rt_rescale(float u, float lo, float width) {
  * the emitted radiance and the solid-angle pdf (0: no contribution); *delta = 1 for a point
  * or spot lamp of radius 0 (then le / pdf is its irradiance, and no MIS applies). */
 static inline float rt_sample_light(__global const RtLight *lights, __global const float *cdf,
-                             __global const RtTri *tris, RtShadeParams prm, float3 p,
-                             float3 n, uint q, float3 u, float3 *wi, float *tmax, float3 *le,
-                             int *type, int *delta) {
+                             __global const RtTri *tris, __global const float *envMap,
+                             RtShadeParams prm, float3 p, float3 n, uint q, float3 u,
+                             float3 *wi, float *tmax, float3 *le, int *type, int *delta) {
 #ifdef RT_SAMPLER_PCG
   int li = rt_pick_light(cdf, prm.numLights, u.z); /* the stream's order of before */
   float u1 = u.x, u2 = u.y;
@@ -224,7 +231,7 @@ static inline float rt_sample_light(__global const RtLight *lights, __global con
   *type = l.type;
   *le = l.radiance.xyz;
   *delta = 0;
-  if (l.type >= RT_LIGHT_POINT) {
+  if (l.type >= RT_LIGHT_POINT && l.type <= RT_LIGHT_AREA) {
     float dist = 0.0f;
     float pdf = rt_lamp_sample(l, p, u1, u2, wi, &dist, le, delta);
     *tmax = (l.tri & RT_LAMP_NO_SHADOW) ? 0.0f : dist * (1.0f - 1e-3f);
@@ -246,6 +253,8 @@ static inline float rt_sample_light(__global const RtLight *lights, __global con
     return l.select * dist2 / (l.area * cosL);
   }
   *tmax = INFINITY;
+  if (l.type == RT_LIGHT_ENV)
+    return l.select * rt_env_sample(envMap, prm, l, u1, u2, wi, le);
   if (l.type == RT_LIGHT_SUN) {
     *wi = rt_to_world(rt_sample_cone(u1, u2, l.dir.w), l.dir.xyz);
     return rt_sun_select(lights, prm, q) / (2.0f * RT_PI * (1.0f - l.dir.w));
@@ -260,7 +269,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
                     __global const float *lightCdf, __global const RtShadeParams *params,
                     __global RtPath *paths, __global const int *active, int numActive,
                     __global const RtHit *hits, __global const float4 *outputs, int maxOutputs,
-                    __global RtShadowRay *shadowRays, __global uint *counters) {
+                    __global RtShadowRay *shadowRays, __global uint *counters,
+                    __global const float *envMap) {
   int i = get_global_id(0);
   if (i >= numActive)
     return;
@@ -291,7 +301,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
   }
 
   if (h.tri < 0) {
-    p.radiance.xyz += thr * rt_environment(lights, prm, d, bsdfPdf, p.radiance.w,
+    p.radiance.xyz += thr * rt_environment(lights, prm, envMap, d, bsdfPdf, p.radiance.w,
                                            (uint)p.flags >> 16, specular, p.depth);
     paths[pid] = p;
     return;
@@ -414,8 +424,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float choice = RT_SAMPLE1(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT_CHOICE(p.depth)));
     float2 lu = RT_SAMPLE2(&rng, sample, rt_pattern_seed(key, RT_PATTERN_LIGHT(p.depth)));
     float3 u = (float3)(lu, choice);
-    float lp = rt_sample_light(lights, lightCdf, tris, prm, s.p, s.ns, sunShare, u, &wi, &tmax,
-                               &le, &type, &delta);
+    float lp = rt_sample_light(lights, lightCdf, tris, envMap, prm, s.p, s.ns, sunShare, u, &wi,
+                               &tmax, &le, &type, &delta);
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
       float3 f = leaf.type == RT_BSDF_PRINCIPLED
@@ -428,7 +438,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
 #ifdef RT_SPLIT_LIGHTS
       c *= RT_KEEP(type == RT_LIGHT_TRIANGLE ? RT_SPLIT_MESH
                    : type == RT_LIGHT_SUN    ? RT_SPLIT_SUN
-                   : type == RT_LIGHT_SKY    ? RT_SPLIT_SKY
+                   : type == RT_LIGHT_SKY || type == RT_LIGHT_ENV ? RT_SPLIT_SKY
                                              : RT_SPLIT_LAMP,
                    p.depth + 1);
 #endif

@@ -43,6 +43,7 @@
 #define RT_LIGHT_POINT 3 /* Blender's point lamp (Cycles' soft falloff: a disk facing the point) */
 #define RT_LIGHT_SPOT 4  /* a point lamp inside a cone with a smoothstep edge */
 #define RT_LIGHT_AREA 5  /* a one-sided rectangle or ellipse */
+#define RT_LIGHT_ENV 6   /* an equirectangular environment map (the world; rt_env.h) */
 
 /* Path flags. */
 #define RT_PATH_ALIVE 1
@@ -199,6 +200,10 @@ typedef struct RtShadeParams {
   float epsilon; /* relative ray-origin offset */
   int lampFirst; /* the lamps (point, spot, area) are lights [lampFirst, lampFirst + numLamps) */
   int numLamps;
+  int envLight;  /* index of the environment map in the light table, or -1 (rt_env.h) */
+  int envWidth;  /* its texels (the shade kernel's envMap buffer) */
+  int envHeight;
+  int envFlags;  /* RT_ENV_* */
 } RtShadeParams;
 
 #endif

@@ -177,6 +177,7 @@ void Renderer::uploadScene() {
   B["meshes"] = Cl->allocateWith("meshes", Data.Meshes.data(), bytes(Data.Meshes), RO);
   B["lights"] = Cl->allocateWith("lights", Data.Lights.data(), bytes(Data.Lights), RO);
   B["lightCdf"] = Cl->allocateWith("lightCdf", Data.LightCdf.data(), bytes(Data.LightCdf), RO);
+  B["envMap"] = Cl->allocateWith("envMap", Data.Env.Data.data(), bytes(Data.Env.Data), RO);
   B["camera"] = Cl->allocate("camera", sizeof(RtCamera), RO);
   B["shadeParams"] = Cl->allocate("shadeParams", sizeof(RtShadeParams), RO);
   B["counters"] = Cl->allocate("counters", RT_COUNT_SLOTS * sizeof(cl_uint), CL_MEM_READ_WRITE);
@@ -407,7 +408,7 @@ int Renderer::traceBounces(int NumPaths, FrameStats &Stats, bool StopAfterAttrib
     SH.setArg(6, B["lightCdf"]), SH.setArg(7, B["shadeParams"]), SH.setArg(8, B["paths"]);
     SH.setArg(9, Cur), SH.setArg(10, cl_int(Count)), SH.setArg(11, B["hits"]);
     SH.setArg(12, B["textureOutputs"]), SH.setArg(13, cl_int(Lay.MaxOutputs));
-    SH.setArg(14, B["shadowRays"]), SH.setArg(15, B["counters"]);
+    SH.setArg(14, B["shadowRays"]), SH.setArg(15, B["counters"]), SH.setArg(16, B["envMap"]);
     Cl->launch(SH, Count, "shade");
     Tracer->shadow(Cur, Count);
     if (cut(true))
@@ -470,6 +471,10 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
     Prm.epsilon = 1e-4f;
     Prm.lampFirst = Data.LampFirst;
     Prm.numLamps = Data.NumLamps;
+    Prm.envLight = Data.EnvLight;
+    Prm.envWidth = Data.Env.Width;
+    Prm.envHeight = Data.Env.Height;
+    Prm.envFlags = Data.Env.Flags;
     Cl->write(B["shadeParams"], &Prm, sizeof Prm);
     cl_uint Counters[RT_COUNT_SLOTS] = {};
     Cl->write(B["counters"], Counters, sizeof Counters);

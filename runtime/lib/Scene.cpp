@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -289,13 +290,73 @@ void parseLamp(const Reader &R, const json &J, const std::string &Path, Light &L
   }
 }
 
-Light parseLight(const Reader &R, const json &J, const std::string &Path) {
+/// The environment map (the world as an equirectangular image; docs/scene.md).
+void parseEnvironment(const Reader &R, const json &J, const std::string &Path,
+                      const fs::path &Dir, Light &L) {
+  R.checkKeys(J, Path, {"type", "image", "strength", "colorSpace", "interpolation", "matrix"});
+  if (!J.contains("image"))
+    R.fail(Path, "an environment needs an \"image\" (an equirectangular image file)");
+  std::string Image = R.string(J["image"], Path + "/image");
+  if (Image.empty())
+    R.fail(Path + "/image", "expected an image file name, got \"\"");
+  L.Image = resolve(Dir, Image);
+  if (J.contains("strength")) {
+    L.Strength = R.number(J["strength"], Path + "/strength");
+    if (!(L.Strength >= 0))
+      R.fail(Path + "/strength", "expected a strength >= 0");
+  }
+  if (J.contains("colorSpace")) {
+    L.ColorSpace = R.string(J["colorSpace"], Path + "/colorSpace");
+    const auto &Known = textureColorSpaces();
+    if (std::find(Known.begin(), Known.end(), L.ColorSpace) == Known.end())
+      R.fail(Path + "/colorSpace", "unknown colour space '" + L.ColorSpace +
+                                       "' (expected sRGB, Linear Rec.709 or Non-Color)");
+  }
+  if (J.contains("interpolation")) {
+    L.Interpolation = R.string(J["interpolation"], Path + "/interpolation");
+    if (L.Interpolation != "linear" && L.Interpolation != "closest")
+      R.fail(Path + "/interpolation", "unknown interpolation '" + L.Interpolation +
+                                          "' (expected linear or closest)");
+  }
+  if (J.contains("matrix")) {
+    const std::string P = Path + "/matrix";
+    const json &M = J["matrix"];
+    if (!M.is_array() || M.size() != 3)
+      R.fail(P, "expected 3 rows of 3 numbers");
+    double A[9];
+    for (int Row = 0; Row < 3; ++Row) {
+      if (!M[Row].is_array() || M[Row].size() != 3)
+        R.fail(P + "/" + std::to_string(Row), "expected 3 numbers");
+      for (int C = 0; C < 3; ++C)
+        A[Row * 3 + C] = R.number(M[Row][C], P + "/" + std::to_string(Row) + "/" + std::to_string(C));
+    }
+    // A rotation (or a mirror) times a positive scale: M M^T = s^2 I.
+    double S2 = (A[0] * A[0] + A[1] * A[1] + A[2] * A[2] + A[3] * A[3] + A[4] * A[4] +
+                 A[5] * A[5] + A[6] * A[6] + A[7] * A[7] + A[8] * A[8]) / 3;
+    bool Orthogonal = S2 > 0 && std::isfinite(S2);
+    for (int I = 0; I < 3 && Orthogonal; ++I)
+      for (int K = 0; K < 3; ++K) {
+        double D = A[I * 3] * A[K * 3] + A[I * 3 + 1] * A[K * 3 + 1] + A[I * 3 + 2] * A[K * 3 + 2];
+        Orthogonal &= std::fabs(D / S2 - (I == K ? 1.0 : 0.0)) <= 1e-3;
+      }
+    if (!Orthogonal)
+      R.fail(P, "expected a rotation (rows orthogonal and of one length), got " + M.dump());
+    for (int I = 0; I < 9; ++I)
+      L.Matrix[I] = float(A[I] / std::sqrt(S2));
+  }
+}
+
+Light parseLight(const Reader &R, const json &J, const std::string &Path, const fs::path &Dir) {
   if (!J.is_object() || !J.contains("type"))
-    R.fail(Path, "a light needs a \"type\" (sky, sun, point, spot or area)");
+    R.fail(Path, "a light needs a \"type\" (sky, sun, point, spot, area or environment)");
   Light L;
   L.Type = R.string(J["type"], Path + "/type");
   if (L.Type == "point" || L.Type == "spot" || L.Type == "area") {
     parseLamp(R, J, Path, L);
+    return L;
+  }
+  if (L.Type == "environment") {
+    parseEnvironment(R, J, Path, Dir, L);
     return L;
   }
   if (L.Type == "sky") {
@@ -311,8 +372,8 @@ Light parseLight(const Reader &R, const json &J, const std::string &Path) {
       R.fail(Path + "/angularRadius", "expected degrees in (0, 90)");
   } else {
     R.fail(Path + "/type", "unknown light type '" + L.Type +
-                               "' (expected sky, sun, point, spot or area; emissive meshes are "
-                               "meshes with \"emission\")");
+                               "' (expected sky, sun, point, spot, area or environment; "
+                               "emissive meshes are meshes with \"emission\")");
   }
   if (!J.contains("radiance"))
     R.fail(Path, "a " + L.Type + " needs a \"radiance\"");
@@ -389,8 +450,19 @@ static Scene readScene(const std::string &Path) {
   if (J.contains("lights")) {
     if (!J["lights"].is_array())
       R.fail("/lights", "expected an array");
-    for (size_t I = 0; I < J["lights"].size(); ++I)
-      S.Lights.push_back(parseLight(R, J["lights"][I], "/lights/" + std::to_string(I)));
+    int World = -1; // the sky or environment met first
+    for (size_t I = 0; I < J["lights"].size(); ++I) {
+      std::string P = "/lights/" + std::to_string(I);
+      S.Lights.push_back(parseLight(R, J["lights"][I], P, Dir));
+      const std::string &T = S.Lights.back().Type;
+      if (T != "sky" && T != "environment")
+        continue;
+      if (World >= 0 && (T == "environment" || S.Lights[World].Type == "environment"))
+        R.fail(P, "a second world light: /lights/" + std::to_string(World) + " is a " +
+                      S.Lights[World].Type + " (a scene has one sky or one environment)");
+      if (World < 0)
+        World = int(I);
+    }
   }
   if (!J.contains("meshes") || !J["meshes"].is_array() || J["meshes"].empty())
     R.fail("/meshes", "expected a non-empty array of meshes");

@@ -270,7 +270,7 @@ void buildLights(const Scene &S, SceneData &D) {
   }
   float Cross = float(M_PI) * D.SceneRadius * D.SceneRadius;
   // The sky and the sun first (next to each other: shade.cl splits their joint share), then the
-  // lamps (shade.cl intersects every path segment with them).
+  // environment map, then the lamps (shade.cl intersects every path segment with them).
   for (const Light &Li : S.Lights) {
     if (Li.Type != "sky" && Li.Type != "sun")
       continue;
@@ -291,10 +291,24 @@ void buildLights(const Scene &S, SceneData &D) {
     }
     D.Lights.push_back(L);
   }
+  for (size_t I = 0; I < S.Lights.size(); ++I)
+    if (S.Lights[I].Type == "environment") {
+      const Light &Li = S.Lights[I];
+      D.Env = loadEnvironmentMap(Li, S.Path + ": /lights/" + std::to_string(I));
+      RtLight L{};
+      L.type = RT_LIGHT_ENV;
+      L.tri = -1;
+      L.radiance = f4(Li.Strength, Li.Strength, Li.Strength);
+      const std::array<float, 9> &M = Li.Matrix; // rows: world direction -> the map's
+      L.dir = f4(M[0], M[1], M[2]), L.pos = f4(M[3], M[4], M[5]), L.u = f4(M[6], M[7], M[8]);
+      D.EnvLight = int(D.Lights.size());
+      D.Lights.push_back(L);
+      Weights.push_back(std::max(float(D.Env.MeanLuminance), 1e-6f) * float(M_PI) * Cross);
+    }
   D.LampFirst = int(D.Lights.size());
   for (size_t I = 0; I < S.Lights.size(); ++I) {
     const Light &Li = S.Lights[I];
-    if (Li.Type == "sky" || Li.Type == "sun")
+    if (Li.Type == "sky" || Li.Type == "sun" || Li.Type == "environment")
       continue;
     D.Lights.push_back(makeLamp(Li, S.Path + ": /lights/" + std::to_string(I)));
     // Its power (a spot's: the part inside its cone) chooses it.

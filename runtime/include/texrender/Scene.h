@@ -51,7 +51,7 @@ struct Camera {
 };
 
 struct Light {
-  std::string Type; // sky | sun | point | spot | area
+  std::string Type; // sky | sun | point | spot | area | environment
   Vec3 Radiance{0, 0, 0};  // sky, sun
   Vec3 Direction{0, 1, 0}; // sun: towards it; spot: the way it shines; area: the side it lights
   float AngularRadiusDegrees = 0.27f;
@@ -66,6 +66,13 @@ struct Light {
   bool CastShadow = true;
   bool SoftFalloff = true;       // point, spot: false makes a radius > 0 a sphere
   bool VisibleToCamera = false; // Blender 5.0's default for a light object
+  // Environment (an equirectangular map; docs/scene.md).
+  std::string Image;                // resolved path
+  std::string ColorSpace;           // "": the file's default (sRGB, or linear for float files)
+  std::string Interpolation = "linear"; // linear | closest
+  float Strength = 1;
+  /// World directions to the map's (row-major, orthonormal: scene.json's rows, normalized).
+  std::array<float, 9> Matrix{1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
 
 struct MeshInstance {

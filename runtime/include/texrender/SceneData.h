@@ -6,6 +6,7 @@
 // Built on the host from scene.json, the OBJs and layout.json.
 
 #include "texrender/Bvh.h"
+#include "texrender/Environment.h"
 #include "texrender/Layout.h"
 #include "texrender/Scene.h"
 
@@ -29,6 +30,8 @@ struct SceneData {
   std::vector<float> LightCdf;
   int SkyLight = -1, SunLight = -1;
   int LampFirst = 0, NumLamps = 0; // point, spot and area lamps: Lights[LampFirst, +NumLamps)
+  int EnvLight = -1;  // the environment map's index in Lights, or -1
+  EnvironmentMap Env; // its texels and density (the shade kernel's envMap buffer)
   float SceneRadius = 1.0f;
 };
 
