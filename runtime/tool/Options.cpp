@@ -64,6 +64,8 @@ const char *Usage =
     "  --gamma G            raise the display values to 1/G (default 1)\n"
     "  --ocio-config FILE   Blender's config.ocio, whose folder has the LUT files AgX and\n"
     "                       Filmic read (default: $OCIO)\n"
+    "  --from-exr FILE.exr  no scene and no render: FILE's linear pixels become -o's .png\n"
+    "                       through the view options above\n"
     "  --stats FILE         write stats.json\n"
     "  --check-nan          stop with an error at the first NaN or infinite texture output,\n"
     "                       naming the material, the node and the pixel\n"
@@ -306,6 +308,8 @@ Options parseArgs(int Argc, char **Argv) {
       O.OcioConfig = Next();
       if (O.OcioConfig.empty())
         throw Error("--ocio-config: expected a file");
+    } else if (A == "--from-exr") {
+      O.FromExr = Next();
     } else if (A == "--stats") {
       O.Stats = Next();
     } else if (A == "--variance") {
@@ -346,8 +350,13 @@ Options parseArgs(int Argc, char **Argv) {
       << " s, is out of range for a float (readSetting(\"Time\"); at most 3.4028235e38)";
     throw Error(M.str());
   }
-  if (O.Scene.empty())
+  if (!O.FromExr.empty()) {
+    std::string Ext = fs::path(O.Output).extension().string();
+    if (!O.Scene.empty() || O.Serve || O.Watch || (Ext != ".png" && Ext != ".PNG"))
+      throw Error("--from-exr " + O.FromExr + ": converts an image: no scene, and -o a .png");
+  } else if (O.Scene.empty()) {
     throw Error("no scene file given (usage: texrender scene.json -o image.png)");
+  }
   if (O.Serve) {
     if (!O.Output.empty() || O.Watch || O.Control || O.Interactive || !O.EditScript.empty() ||
         O.TimeLimit > 0 || !O.Variance.empty() || !O.Sets.empty() || !O.Stats.empty())

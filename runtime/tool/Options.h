@@ -41,6 +41,7 @@ struct Options {
   std::optional<std::string> ViewTransform, Look;
   std::optional<float> Exposure, Gamma;
   std::string OcioConfig;
+  std::string FromExr; // --from-exr FILE: no render; FILE's pixels become -o's PNG
   bool Quiet = false, ForceProgress = false, ListDevices = false, CheckNan = false, AoLoop = false, Interactive = false;
 };
 

@@ -427,6 +427,16 @@ int run(int Argc, char **Argv) try {
   }
   if (O.Serve)
     execServe(O, Argv[0]);
+  if (!O.FromExr.empty()) {
+    const std::unique_ptr<ViewTransform> View = makeViewTransform(O);
+    ImageRGBA In = loadExr(O.FromExr);
+    std::vector<float> RGB(size_t(In.Width) * In.Height * 3);
+    for (size_t I = 0; I < RGB.size() / 3; ++I)
+      for (int C = 0; C < 3; ++C)
+        RGB[3 * I + C] = In.Pixels[4 * I + C];
+    writeImage(O.Output, In.Width, In.Height, RGB, View.get());
+    return 0;
+  }
   installStopHandlers();
   std::unique_ptr<Watchdog> Dog;
   if (O.TimeLimit > 0)

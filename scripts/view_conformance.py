@@ -1,0 +1,179 @@
+#!/usr/bin/env python3
+"""view_conformance.py: texrender's PNG against Blender's PNG of the same EXR, through the same
+Color Management (view transform, look, exposure, gamma; display sRGB).
+
+For each EXR (a generated one, and any given with --exr) and each case, texrender writes the
+PNG (`texrender --from-exr IN.exr -o OUT.png --view-transform V --look L --exposure E --gamma G
+--ocio-config CONFIG`) and Blender (bpy 5.0.1, in this process) loads the EXR as an image and
+saves it as an 8-bit PNG with the scene's view settings (Image.save_render, dither off). Per
+channel: the fraction of values within 1/255 and the largest difference in 1/255 steps. Exit 1
+when a case has a channel with fewer than --min-within of its values within 1/255.
+
+  .venv/bin/python scripts/view_conformance.py --texrender build/bin/texrender -o OUT [--all]
+      [--exr FILE.exr ...] [--min-within 0.99]
+
+The generated EXR (256x128) holds a grey ramp from 2^-12 to 2^10 at several saturations,
+saturated hues from 0.01 to 100, colours with negative components (out of Rec.709's gamut)
+up to 3, and random colours from 1e-4 to 1e3 per channel.
+"""
+import argparse
+import colorsys
+import os
+import subprocess
+import sys
+import zlib
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import texexr  # noqa: E402
+
+# (view transform, look, exposure, gamma); QUICK is the test's subset of ALL.
+QUICK = [
+    ("Standard", "None", 0.0, 1.0),
+    ("Standard", "None", 1.5, 2.2),
+    ("AgX", "None", 0.0, 1.0),
+    ("AgX", "AgX - Punchy", 0.0, 1.0),
+    ("AgX", "AgX - High Contrast", -1.0, 0.8),
+    ("Filmic", "Medium High Contrast", 0.5, 1.0),
+]
+AGX_LOOKS = ["AgX - Punchy", "AgX - Greyscale", "AgX - Very High Contrast", "AgX - High Contrast",
+             "AgX - Medium High Contrast", "AgX - Base Contrast", "AgX - Medium Low Contrast",
+             "AgX - Low Contrast", "AgX - Very Low Contrast"]
+FILMIC_LOOKS = ["Very High Contrast", "High Contrast", "Medium High Contrast", "Medium Contrast",
+                "Medium Low Contrast", "Low Contrast", "Very Low Contrast"]
+ALL = ([("Standard", "None", 0.0, 1.0), ("Standard", "None", 1.5, 1.0),
+        ("Standard", "None", 0.0, 2.2), ("Standard", "None", -2.0, 0.6),
+        ("AgX", "None", 0.0, 1.0), ("AgX", "None", 2.0, 1.0), ("AgX", "None", -1.5, 1.8)]
+       + [("AgX", look, 0.0, 1.0) for look in AGX_LOOKS]
+       + [("AgX", "AgX - Punchy", 1.0, 0.7), ("Filmic", "None", 0.0, 1.0),
+          ("Filmic", "None", 1.0, 1.4)]
+       + [("Filmic", look, 0.0, 1.0) for look in FILMIC_LOOKS])
+
+
+def generated_image():
+    w, h = 256, 128
+    img = np.zeros((h, w, 3), np.float32)
+    x = np.arange(w) / (w - 1)
+    for r in range(32):  # grey ramp 2^-12..2^10, saturation by row
+        lum = 2.0 ** (-12 + 22 * x)
+        tint = np.array(colorsys.hsv_to_rgb(r / 32, r / 40, 1.0), np.float32)
+        img[r] = lum[:, None] * tint[None, :]
+    for r in range(32):  # saturated hues, value 0.01..100 by row
+        v = 10 ** (-2 + 4 * r / 31)
+        img[32 + r] = [np.array(colorsys.hsv_to_rgb(t, 1.0, 1.0)) * v for t in x]
+    rng = np.random.default_rng(7)
+    img[64:96] = rng.uniform(-1.0, 3.0, (32, w, 3))  # negative components: out of gamut
+    img[96:128] = np.exp(rng.uniform(np.log(1e-4), np.log(1e3), (32, w, 3)))
+    return img
+
+
+def read_png(path):
+    """An 8-bit RGB or RGBA, non-interlaced PNG (what stb_image_write and Blender write) as a
+    uint8 array (height, width, 3)."""
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    pos, idat, w = 8, b"", 0
+    while pos < len(data):
+        n = int.from_bytes(data[pos:pos + 4], "big")
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, ctype, _, _, interlace = (int.from_bytes(body[0:4], "big"),
+                                                   int.from_bytes(body[4:8], "big"), *body[8:13])
+            assert depth == 8 and ctype in (2, 6) and interlace == 0, (path, depth, ctype)
+            bpp = 3 if ctype == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    raw = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(h, 1 + w * bpp)
+    out = np.zeros((h, w * bpp), np.int32)
+    prev = np.zeros(w * bpp, np.int32)
+    for y in range(h):
+        f, line = raw[y, 0], raw[y, 1:].astype(np.int32)
+        if f == 0:
+            cur = line
+        elif f == 2:
+            cur = (line + prev) & 255
+        else:
+            cur = np.zeros_like(line)
+            for i in range(w * bpp):
+                a = cur[i - bpp] if i >= bpp else 0
+                b, c = prev[i], (prev[i - bpp] if i >= bpp else 0)
+                if f == 1:
+                    pred = a
+                elif f == 3:
+                    pred = (a + b) >> 1
+                else:
+                    p = a + b - c
+                    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                    pred = a if pa <= pb and pa <= pc else b if pb <= pc else c
+                cur[i] = (line[i] + pred) & 255
+        out[y], prev = cur, cur
+    return out.reshape(h, w, bpp)[:, :, :3]
+
+
+def blender_png(bpy, exr, png, case):
+    view, look, exposure, gamma = case
+    scene = bpy.context.scene
+    vs = scene.view_settings
+    scene.display_settings.display_device = "sRGB"
+    vs.view_transform = view
+    vs.look = look
+    vs.exposure = exposure
+    vs.gamma = gamma
+    vs.use_curve_mapping = False
+    vs.use_white_balance = False
+    scene.render.dither_intensity = 0.0
+    settings = scene.render.image_settings
+    settings.file_format = "PNG"
+    settings.color_mode = "RGB"
+    settings.color_depth = "8"
+    image = bpy.data.images.load(exr, check_existing=False)
+    image.colorspace_settings.name = "Linear Rec.709"
+    image.save_render(png, scene=scene)
+    bpy.data.images.remove(image)
+
+
+def compare(a, b):
+    """Per channel: (fraction within 1/255, largest difference in 1/255 steps)."""
+    d = np.abs(a.astype(np.int32) - b.astype(np.int32))
+    return [((d[:, :, c] <= 1).mean(), int(d[:, :, c].max())) for c in range(3)]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--texrender", required=True)
+    ap.add_argument("-o", "--out", required=True, help="folder for the EXR and PNG files")
+    ap.add_argument("--exr", action="append", default=[], help="another EXR to convert")
+    ap.add_argument("--all", action="store_true", help="every view and look (else a quick set)")
+    ap.add_argument("--min-within", type=float, default=0.99)
+    args = ap.parse_args()
+    import bpy  # after argparse: --help needs no Blender
+    config = os.path.join(bpy.utils.system_resource("DATAFILES"), "colormanagement", "config.ocio")
+    os.makedirs(args.out, exist_ok=True)
+    generated = os.path.join(args.out, "generated.exr")
+    with open(generated, "wb") as f:
+        f.write(texexr.write_exr(generated_image()))
+    ok = True
+    for exr in [generated] + args.exr:
+        name = os.path.splitext(os.path.basename(exr))[0]
+        for k, case in enumerate(ALL if args.all else QUICK):
+            view, look, exposure, gamma = case
+            ours = os.path.join(args.out, "%s-%d-texrender.png" % (name, k))
+            theirs = os.path.join(args.out, "%s-%d-blender.png" % (name, k))
+            subprocess.run([args.texrender, "--from-exr", exr, "-o", ours, "--view-transform", view,
+                            "--look", look, "--exposure", repr(exposure), "--gamma", repr(gamma),
+                            "--ocio-config", config], check=True)
+            blender_png(bpy, os.path.abspath(exr), os.path.abspath(theirs), case)
+            result = compare(read_png(ours), read_png(theirs))
+            good = all(within >= args.min_within for within, _ in result)
+            ok &= good
+            print("%-10s %-8s %-26s exposure %+5.2f gamma %4.2f  within 1/255 R %.5f G %.5f "
+                  "B %.5f  max %d/%d/%d  %s" % (name, view, look, exposure, gamma,
+                                                *[w for w, _ in result], *[m for _, m in result],
+                                                "ok" if good else "FAIL"))
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
