@@ -413,6 +413,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
    * Cycles' Glossy BSDF does (rt_valid_reflection_normal). */
   if (leaf.type == RT_BSDF_GLOSSY)
     s.ns = rt_valid_reflection_normal(s.ng, wo, s.ns);
+  /* A principled leaf's GGX lobes lift theirs the same way; its diffuse base keeps s.ns. */
+  pr.nSpec = leaf.type == RT_BSDF_PRINCIPLED ? rt_valid_reflection_normal(s.ng, wo, s.ns) : s.ns;
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
   uint sunShare = canExtend ? rt_sun_share(lights, prm, s.ns) : 0u;
 
@@ -431,7 +433,8 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
       float3 f = leaf.type == RT_BSDF_PRINCIPLED
                      ? rt_principled_eval(pr, s.ns, wo, wi, &bp)
                      : rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
-      float cosI = dot(wi, s.ns);
+      /* rt_principled_eval's f includes its lobes' cosines (to their own normals). */
+      float cosI = leaf.type == RT_BSDF_PRINCIPLED ? 1.0f : dot(wi, s.ns);
       if (bumped && leaf.type == RT_BSDF_DIFFUSE)
         f *= rt_bump_shadowing(nSmooth, s.ns, wi);
       float3 c = thr * f * le * (cosI * (delta ? 1.0f : rt_mis(lp, bp)) / lp);

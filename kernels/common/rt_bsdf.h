@@ -25,23 +25,94 @@ static inline float rt_ggx_g1(float cosV, float a2) {
   return 2.0f * cosV / (cosV + sqrt(a2 + (1.0f - a2) * cosV * cosV));
 }
 
+/* Smith's Lambda of GGX at a direction of cosine c to the normal. */
+static inline float rt_ggx_lambda(float c, float a2) {
+  return 0.5f * (sqrt(1.0f + a2 * fmax(1.0f / (c * c) - 1.0f, 0.0f)) - 1.0f);
+}
+
+/* The height-correlated masking-shadowing of both directions, as Cycles' microfacet
+ * closures take it: 1 / (1 + Lambda(wi) + Lambda(wo)). */
+static inline float rt_ggx_g2(float cosI, float cosO, float a2) {
+  return 1.0f / (1.0f + rt_ggx_lambda(cosI, a2) + rt_ggx_lambda(cosO, a2));
+}
+
 static inline float3 rt_schlick(float3 f0, float cosD) {
   float m = 1.0f - clamp(cosD, 0.0f, 1.0f);
   float m5 = m * m * m * m * m;
   return f0 + (1.0f - f0) * m5;
 }
 
-/* A table of rt_ggx_albedo.h at (roughness, cos wo), bilinear. */
-static inline float rt_ggx_table(__constant const float *t, float roughness, float cosO) {
-  const int n = RT_GGX_ALBEDO_N;
-  float x = clamp(cosO * n - 0.5f, 0.0f, (float)(n - 1));
-  float y = clamp(roughness, 0.0f, 1.0f) * (float)(n - 1);
-  int i0 = (int)x, j0 = (int)y;
-  int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
-  float fx = x - (float)i0, fy = y - (float)j0;
-  float e0 = mix(t[j0 * n + i0], t[j0 * n + i1], fx);
-  float e1 = mix(t[j1 * n + i0], t[j1 * n + i1], fx);
-  return mix(e0, e1, fy);
+/* rt_ggx_albedo.h's tables: node i of an axis of n nodes at i / (n - 1), linear between. */
+static inline float rt_ggx_lookup1(__constant const float *t, float x, int n) {
+  x = clamp(x, 0.0f, 1.0f) * (float)(n - 1);
+  int i = min((int)x, n - 1);
+  return mix(t[i], t[min(i + 1, n - 1)], x - (float)i);
+}
+
+static inline float rt_ggx_lookup2(__constant const float *t, float x, float y, int n) {
+  y = clamp(y, 0.0f, 1.0f) * (float)(n - 1);
+  int j = min((int)y, n - 1);
+  return mix(rt_ggx_lookup1(t + j * n, x, n), rt_ggx_lookup1(t + min(j + 1, n - 1) * n, x, n),
+             y - (float)j);
+}
+
+static inline float rt_ggx_lookup3(__constant const float *t, float x, float y, float z, int n) {
+  z = clamp(z, 0.0f, 1.0f) * (float)(n - 1);
+  int k = min((int)z, n - 1);
+  return mix(rt_ggx_lookup2(t + k * n * n, x, y, n),
+             rt_ggx_lookup2(t + min(k + 1, n - 1) * n * n, x, y, n), z - (float)k);
+}
+
+/* The multiple-scattering factor of a GGX lobe at wo, as Cycles' energy-preserving GGX scales
+ * it: 1 + F_ms (1 - E) / E, with E the lobe's single-scattering albedo at wo, and F_ms =
+ * F_ss E_avg / (1 - F_ss (1 - E_avg)) the multiple-bounce Fresnel of a lobe whose mean
+ * Fresnel over the hemisphere is F_ss (Kulla and Conty 2017, one F_ss cancelled: the single
+ * scattering already has one bounce of Fresnel). */
+typedef struct RtGgxEnergy {
+  float missing; /* (1 - E) / E */
+  float eavg;
+} RtGgxEnergy;
+
+static inline RtGgxEnergy rt_ggx_energy(float roughness, float cosO) {
+  RtGgxEnergy g;
+  float r = clamp(roughness, 0.0f, 1.0f);
+  float e = fmax(rt_ggx_lookup2(rt_ggx_e, r, cosO, 32), 1e-3f);
+  g.missing = (1.0f - e) / e;
+  g.eavg = rt_ggx_lookup1(rt_ggx_eavg, r, 32);
+  return g;
+}
+
+static inline float3 rt_ggx_ms_scale(RtGgxEnergy g, float3 fss) {
+  float3 fms = fss * g.eavg / ((float3)(1.0f) - fss * (1.0f - g.eavg));
+  return (float3)(1.0f) + fms * g.missing;
+}
+
+/* D G2 / (4 cos wi cos wo) of a GGX lobe (no Fresnel) and the pdf of sampling wi by its normal
+ * distribution (D cos h / (4 wo.h)); 0 when wi or wo is below n or h is invalid. */
+static inline float rt_ggx_lobe(float3 n, float3 wo, float3 wi, float a2, float *pdf,
+                                float *cosD) {
+  float cosI = dot(wi, n), cosO = dot(wo, n);
+  *pdf = 0.0f;
+  *cosD = 0.0f;
+  if (cosI <= 0.0f || cosO <= 0.0f)
+    return 0.0f;
+  float3 h = normalize(wi + wo);
+  float cosH = dot(h, n);
+  *cosD = dot(wi, h);
+  if (cosH <= 0.0f || *cosD <= 0.0f)
+    return 0.0f;
+  float d = rt_ggx_d(cosH, a2);
+  *pdf = d * cosH / (4.0f * *cosD);
+  return d * rt_ggx_g2(cosI, cosO, a2) / (4.0f * cosI * cosO);
+}
+
+/* Samples a half vector about n by GGX's normal distribution and reflects wo about it. */
+static inline float3 rt_ggx_sample_dir(float3 n, float3 wo, float a2, float u1, float u2) {
+  float cos2 = (1.0f - u1) / (1.0f + u1 * (a2 - 1.0f));
+  float cosT = sqrt(fmax(cos2, 0.0f)), sinT = sqrt(fmax(0.0f, 1.0f - cos2));
+  float phi = 2.0f * RT_PI * u2;
+  float3 h = rt_to_world((float3)(sinT * cos(phi), sinT * sin(phi), cosT), n);
+  return 2.0f * dot(wo, h) * h - wo;
 }
 
 /* f and pdf of a non-delta leaf (diffuse or glossy). */
@@ -61,20 +132,14 @@ static inline float3 rt_bsdf_eval(int type, float3 color, float roughness, float
   if (cosI <= 0.0f || cosO <= 0.0f)
     return (float3)(0.0f);
   if (type == RT_BSDF_GLOSSY) {
-    float a2 = rt_ggx_alpha(roughness);
-    a2 *= a2;
-    float3 h = normalize(wi + wo);
-    float cosH = dot(h, n), cosD = dot(wi, h);
-    if (cosH <= 0.0f || cosD <= 0.0f)
-      return (float3)(0.0f);
-    float d = rt_ggx_d(cosH, a2);
-    *pdf = d * cosH / (4.0f * cosD);
-    float g = rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2);
-    /* Blender's Glossy BSDF: no Fresnel (the colour is the reflectance at every angle), the
-     * energy single-scattering GGX loses given back as its multiscatter GGX does, scaled by
-     * 1 + color (1 - E) / E (E: the lobe's albedo at wo). */
-    float e = fmax(rt_ggx_table(rt_ggx_albedo_table, roughness, cosO), 1e-3f);
-    return color * (1.0f + color * ((1.0f - e) / e)) * (d * g / (4.0f * cosI * cosO));
+    float a = rt_ggx_alpha(roughness);
+    float cosD;
+    float dg = rt_ggx_lobe(n, wo, wi, a * a, pdf, &cosD);
+    /* Blender's Glossy BSDF (Multiscatter GGX): no Fresnel (the colour is the reflectance at
+     * every angle), the energy single-scattering GGX loses given back as Cycles' energy-
+     * preserving GGX does for a constant Fresnel of the colour (rt_ggx_ms_scale). */
+    return dg > 0.0f ? color * rt_ggx_ms_scale(rt_ggx_energy(roughness, cosO), color) * dg
+                     : (float3)(0.0f);
   }
   return (float3)(0.0f);
 }
@@ -136,12 +201,7 @@ static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, flo
   }
   if (type == RT_BSDF_GLOSSY) {
     float a = rt_ggx_alpha(roughness);
-    float a2 = a * a;
-    float cos2 = (1.0f - u1) / (1.0f + u1 * (a2 - 1.0f));
-    float cosT = sqrt(fmax(cos2, 0.0f)), sinT = sqrt(fmax(0.0f, 1.0f - cos2));
-    float phi = 2.0f * RT_PI * u2;
-    float3 h = rt_to_world((float3)(sinT * cos(phi), sinT * sin(phi), cosT), n);
-    *wi = 2.0f * dot(wo, h) * h - wo;
+    *wi = rt_ggx_sample_dir(n, wo, a * a, u1, u2);
     float3 f = rt_bsdf_eval(type, color, roughness, n, wo, *wi, pdf);
     if (*pdf <= 0.0f)
       return (float3)(0.0f);
@@ -151,16 +211,24 @@ static inline float3 rt_bsdf_sample(int type, float3 color, float roughness, flo
   return (float3)(0.0f);
 }
 
-/* The Principled subset (Blender's Principled BSDF without transmission, coat, sheen,
- * subsurface, anisotropy; specular tint white). Two layers mixed by metallic m:
- *   dielectric: a Lambertian base (baseColor) under a GGX specular layer of F0 = 0.08 *
- *     specular (IOR level 0.5: IOR 1.5, F0 0.04), Schlick Fresnel; the base gets what the
- *     specular layer does not reflect at wo, 1 - its albedo (rt_principled_at_wo);
- *   metal: a GGX lobe with Schlick Fresnel of F0 = baseColor (F82 tint white = Schlick).
- * Both specular lobes share one GGX distribution (alpha = roughness^2), so sampling picks the
- * diffuse lobe or the GGX lobe by their estimated albedos at wo, and the pdf is the mixture's
- * (one-sample MIS over the lobes). The energy that single-scattering GGX loses is added back
- * by scaling (rt_ggx_albedo.h's tables), as Cycles' multiscatter GGX keeps it. */
+/* The Principled subset as Cycles' Principled BSDF builds it (without transmission, coat,
+ * sheen, subsurface, anisotropy, thin film; specular tint white; diffuse roughness 0), layers
+ * weighted by metallic m:
+ *   metal (weight m): GGX with Schlick Fresnel of F0 = baseColor (F82 tint white is Schlick);
+ *   dielectric (weight 1 - m): a GGX specular layer over a Lambertian base. The layer's
+ *     reflectance at normal incidence is f0 = 0.08 x specular (IOR level; 0.5: IOR 1.5, F0
+ *     0.04) and its Fresnel is the real dielectric Fresnel of IOR eta = ior(f0), rescaled to
+ *     run from f0 to 1 (Cycles' generalized Schlick with a negative exponent); f0 = 0 leaves
+ *     no layer. The base is weighted by 1 - the layer's estimated albedo at wo (Cycles'
+ *     closure layering: f0 + (1 - f0) S from rt_ggx_s_ior, times the layer's multiple-bounce
+ *     darkening), which is not exactly what the layer reflects: Cycles' furnace is not exactly
+ *     1, and neither is this.
+ * Both GGX lobes have alpha = roughness^2, the height-correlated G2, and Cycles' multiple-
+ * scattering scale (rt_ggx_ms_scale, with the lobe's mean Fresnel F_ss), on the specular
+ * normal nSpec (the shading normal lifted so that its mirror reflection of wo stays above the
+ * surface, rt_valid_reflection_normal, as Cycles does for these lobes); the diffuse base uses
+ * the shading normal. Sampling picks the diffuse base or the GGX lobes by their estimated
+ * albedos at wo; the pdf is the mixture's (one-sample MIS over the lobes). */
 typedef struct RtPrincipled {
   float3 base;
   float roughness;
@@ -171,6 +239,7 @@ typedef struct RtPrincipled {
    * lobes are not (Cycles' bump map correction softens only diffuse ones). */
   int bumped;
   float3 nSmooth;
+  float3 nSpec;
 } RtPrincipled;
 
 static inline float rt_schlick1(float f0, float cosD) {
@@ -179,88 +248,113 @@ static inline float rt_schlick1(float f0, float cosD) {
   return f0 + (1.0f - f0) * m5;
 }
 
-/* What principled needs at wo: the multiple-scattering factor (1 - E) / E of its GGX lobes,
- * and the albedo of its dielectric specular layer (multiple scattering included), which the
- * diffuse base under it does not get. */
+/* The unpolarized Fresnel reflectance of a dielectric of relative IOR eta (> 1). */
+static inline float rt_fresnel_dielectric(float c, float eta) {
+  c = fabs(c);
+  float g2 = eta * eta - 1.0f + c * c;
+  if (g2 <= 0.0f)
+    return 1.0f;
+  float g = sqrt(g2);
+  float a = (g - c) / (g + c);
+  float b = (c * (g + c) - 1.0f) / (c * (g - c) + 1.0f);
+  return 0.5f * a * a * (1.0f + b * b);
+}
+
+/* What principled needs at wo: the lobes' multiple-scattering scales, the dielectric layer's
+ * IOR and the base's weight (what the layer does not take). */
 typedef struct RtPrincipledAtWo {
-  float ms;
-  float dielectricAlbedo;
+  float eta;      /* of the dielectric layer; 1: no layer */
+  float f0Real;   /* ((eta - 1) / (eta + 1))^2 */
+  float scaleD;   /* the dielectric layer's multiple-scattering scale */
+  float3 scaleM;  /* the metal's */
+  float albedoD;  /* the dielectric layer's estimated albedo */
+  float diffuseW; /* (1 - metallic) x (1 - albedoD) */
 } RtPrincipledAtWo;
 
-static inline RtPrincipledAtWo rt_principled_at_wo(RtPrincipled P, float cosO) {
+static inline RtPrincipledAtWo rt_principled_at_wo(RtPrincipled P, float3 wo) {
   RtPrincipledAtWo w;
-  float e = fmax(rt_ggx_table(rt_ggx_albedo_table, P.roughness, cosO), 1e-3f);
-  float sch = rt_ggx_table(rt_ggx_schlick_table, P.roughness, cosO);
-  w.ms = (1.0f - e) / e;
-  float favg = P.f0 + (1.0f - P.f0) / 21.0f;
-  w.dielectricAlbedo = clamp((P.f0 * (e - sch) + sch) * (1.0f + favg * w.ms), 0.0f, 1.0f);
+  float cosO = dot(wo, P.nSpec);
+  RtGgxEnergy g = rt_ggx_energy(P.roughness, cosO);
+  float sf0 = sqrt(clamp(P.f0, 0.0f, 0.99f));
+  w.eta = (1.0f + sf0) / (1.0f - sf0);
+  w.f0Real = sf0 * sf0;
+  w.scaleD = 1.0f;
+  w.albedoD = 0.0f;
+  if (w.eta > 1.0f) {
+    /* The mean Fresnel over the hemisphere (Cycles' fit of a dielectric's, rescaled as the
+     * Fresnel is). */
+    float fssReal = (w.eta - 1.0f) / (4.08567f + 1.00071f * w.eta);
+    float fss = mix(P.f0, 1.0f, clamp((fssReal - w.f0Real) / (1.0f - w.f0Real), 0.0f, 1.0f));
+    w.scaleD = rt_ggx_ms_scale(g, (float3)(fss)).x;
+    float z = sqrt((w.eta - 1.0f) / (w.eta + 1.0f));
+    float s = rt_ggx_lookup3(rt_ggx_s_ior, clamp(P.roughness, 0.0f, 1.0f), cosO, z, 16);
+    w.albedoD = w.scaleD / (1.0f + g.missing) * mix(P.f0, 1.0f, s);
+  }
+  w.scaleM = rt_ggx_ms_scale(g, mix(P.base, (float3)(1.0f), 1.0f / 21.0f));
+  w.diffuseW = (1.0f - P.metallic) * clamp(1.0f - w.albedoD, 0.0f, 1.0f);
   return w;
 }
 
-/* The probability of sampling the diffuse base at wo (the rest: the GGX lobe). */
-static inline float rt_principled_pdiffuse(RtPrincipled P, RtPrincipledAtWo w, float cosO) {
-  float3 fm = rt_schlick(P.base, cosO);
-  float wd = (1.0f - P.metallic) * (1.0f - w.dielectricAlbedo) *
-             (P.base.x + P.base.y + P.base.z) / 3.0f;
-  float ws = (1.0f - P.metallic) * w.dielectricAlbedo + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
+/* The probability of sampling the diffuse base at wo (the rest: the GGX lobes). */
+static inline float rt_principled_pdiffuse(RtPrincipled P, RtPrincipledAtWo w, float3 wo) {
+  float3 fm = rt_schlick(P.base, dot(wo, P.nSpec));
+  float wd = w.diffuseW * (P.base.x + P.base.y + P.base.z) / 3.0f;
+  float ws = (1.0f - P.metallic) * w.albedoD + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
   return wd + ws > 0.0f ? wd / (wd + ws) : 0.5f;
 }
 
+static inline float3 rt_principled_eval_at(RtPrincipled P, RtPrincipledAtWo w, float pd,
+                                           float3 n, float3 wo, float3 wi, float *pdf) {
+  float cosI = dot(wi, n);
+  float3 f = (float3)(0.0f);
+  float diffPdf = 0.0f;
+  if (cosI > 0.0f) {
+    f = P.base * (w.diffuseW * RT_INV_PI * cosI);
+    if (P.bumped)
+      f *= rt_bump_shadowing(P.nSmooth, n, wi);
+    diffPdf = cosI * RT_INV_PI;
+  }
+  float a = rt_ggx_alpha(P.roughness);
+  float specPdf, cosD;
+  float dg = rt_ggx_lobe(P.nSpec, wo, wi, a * a, &specPdf, &cosD);
+  if (dg > 0.0f) {
+    float fd = 0.0f;
+    if (w.eta > 1.0f) {
+      float s = (rt_fresnel_dielectric(cosD, w.eta) - w.f0Real) / (1.0f - w.f0Real);
+      fd = mix(P.f0, 1.0f, clamp(s, 0.0f, 1.0f)) * w.scaleD;
+    }
+    float3 fm = rt_schlick(P.base, cosD) * w.scaleM;
+    f += ((1.0f - P.metallic) * fd + P.metallic * fm) * (dg * dot(wi, P.nSpec));
+  }
+  *pdf = pd * diffPdf + (1.0f - pd) * specPdf;
+  return f;
+}
+
+/* f x cos: each lobe's cosine to its own normal (the diffuse base's n, the GGX lobes'
+ * nSpec), and the pdf of sampling wi. */
 static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, float3 wi,
                                         float *pdf) {
-  float cosI = dot(wi, n), cosO = dot(wo, n);
-  *pdf = 0.0f;
-  if (cosI <= 0.0f || cosO <= 0.0f)
-    return (float3)(0.0f);
-  RtPrincipledAtWo w = rt_principled_at_wo(P, cosO);
-  float pd = rt_principled_pdiffuse(P, w, cosO);
-  float dielectric = 1.0f - P.metallic;
-  float3 f = P.base * (dielectric * (1.0f - w.dielectricAlbedo) * RT_INV_PI);
-  if (P.bumped)
-    f *= rt_bump_shadowing(P.nSmooth, n, wi);
-  float specPdf = 0.0f;
-  float a = rt_ggx_alpha(P.roughness);
-  float a2 = a * a;
-  float3 h = normalize(wi + wo);
-  float cosH = dot(h, n), cosD = dot(wi, h);
-  if (cosH > 0.0f && cosD > 0.0f) {
-    float d = rt_ggx_d(cosH, a2);
-    specPdf = d * cosH / (4.0f * cosD);
-    float dg = d * rt_ggx_g1(cosI, a2) * rt_ggx_g1(cosO, a2) / (4.0f * cosI * cosO);
-    /* Multiple scattering: each specular lobe scaled by 1 + F_avg (1 - E) / E, with E the
-     * lobe's albedo at wo and F_avg Schlick's hemispherical average, F0 + (1 - F0) / 21. */
-    float fd = rt_schlick1(P.f0, cosD) * (1.0f + (P.f0 + (1.0f - P.f0) / 21.0f) * w.ms);
-    float3 fm = rt_schlick(P.base, cosD) * (1.0f + (P.base + (1.0f - P.base) / 21.0f) * w.ms);
-    f += (dielectric * fd + P.metallic * fm) * dg;
-  }
-  *pdf = pd * cosI * RT_INV_PI + (1.0f - pd) * specPdf;
-  return f;
+  RtPrincipledAtWo w = rt_principled_at_wo(P, wo);
+  return rt_principled_eval_at(P, w, rt_principled_pdiffuse(P, w, wo), n, wo, wi, pdf);
 }
 
 static inline float3 rt_principled_sample(RtPrincipled P, float3 n, float3 wo, float u1,
                                           float u2, float3 *wi, float *pdf) {
   *pdf = 0.0f;
-  float cosO = dot(wo, n);
-  if (cosO <= 0.0f)
-    return (float3)(0.0f);
-  float pd = rt_principled_pdiffuse(P, rt_principled_at_wo(P, cosO), cosO);
+  RtPrincipledAtWo w = rt_principled_at_wo(P, wo);
+  float pd = rt_principled_pdiffuse(P, w, wo);
   if (u1 < pd) {
     u1 = u1 / pd;
     *wi = rt_to_world(rt_sample_cosine(u1, u2), n);
   } else {
     u1 = (u1 - pd) / (1.0f - pd);
     float a = rt_ggx_alpha(P.roughness);
-    float a2 = a * a;
-    float cos2 = (1.0f - u1) / (1.0f + u1 * (a2 - 1.0f));
-    float cosT = sqrt(fmax(cos2, 0.0f)), sinT = sqrt(fmax(0.0f, 1.0f - cos2));
-    float phi = 2.0f * RT_PI * u2;
-    float3 h = rt_to_world((float3)(sinT * cos(phi), sinT * sin(phi), cosT), n);
-    *wi = 2.0f * dot(wo, h) * h - wo;
+    *wi = rt_ggx_sample_dir(P.nSpec, wo, a * a, u1, u2);
   }
-  float3 f = rt_principled_eval(P, n, wo, *wi, pdf);
+  float3 f = rt_principled_eval_at(P, w, pd, n, wo, *wi, pdf);
   if (*pdf <= 0.0f)
     return (float3)(0.0f);
-  return f * (dot(*wi, n) / *pdf);
+  return f / *pdf;
 }
 
 #endif

@@ -41,10 +41,15 @@ def make(out):
         graph = json.load(f)
     graph["sources"] = [os.path.join(here, s) for s in graph["sources"]]
     graph["nodes"] = [n for n in graph["nodes"] if n["id"] in ("h", "b")]
+    # Specular 0 (IOR level 0: no specular layer, as in Cycles): the bumped principled's GGX
+    # lobes take a normal lifted so that its mirror reflection stays above the surface
+    # (rt_valid_reflection_normal), which the tilted plane's do not need, so with a specular
+    # layer the two differ by more than the diffuse base's shadowing.
     graph["materials"] = {
-        "bumped": {"bsdf": "principled", "baseColor": [0.5, 0.5, 0.5], "normal": {"node": "b"}},
-        "tilted": {"bsdf": "principled", "baseColor": [0.5, 0.5, 0.5]},
-        "black": {"bsdf": "principled", "baseColor": [0.0, 0.0, 0.0]}}
+        "bumped": {"bsdf": "principled", "baseColor": [0.5, 0.5, 0.5], "specular": 0.0,
+                   "normal": {"node": "b"}},
+        "tilted": {"bsdf": "principled", "baseColor": [0.5, 0.5, 0.5], "specular": 0.0},
+        "black": {"bsdf": "principled", "baseColor": [0.0, 0.0, 0.0], "specular": 0.0}}
     with open(os.path.join(out, "graph.json"), "w") as f:
         json.dump(graph, f, indent=1)
     radiance = 1.0 / (2.0 * (1.0 - math.cos(math.radians(shadowing.RADIUS))))
