@@ -196,6 +196,9 @@ bool Session::afterPass(const PassProgress &P) {
   // The first image after a change is written at once; the others at most 4 times a second.
   if (Now - LastWrite >= 0.25 || ChangeAt > 0 || EditAt > 0)
     writeProgress(P.Image(), P.SamplesDone);
+  // Once the first image is out: the priming overlaps the first frame's later passes, so that
+  // a save right after that frame does not wait for it.
+  primeCompiler();
   fullPassDone();
   if (Now - LastPoll >= 0.1)
     poll();
