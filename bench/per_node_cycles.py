@@ -5,9 +5,10 @@ bpy) beside texrender's per mode, one thread each.
 Cycles: a plane that fills an orthographic view (its Object coordinates span [-1, 1] in x and
 y), the node's output into an Emission shader, no lights, black world, Cycles on the CPU with
 one thread, SIZE x SIZE pixels at SPP samples, adaptive sampling and denoising off. A node's cost
-per sample is its render's time minus a constant Emission's render time, over SIZE^2 x SPP
-samples; the renders of every node and of the constant alternate in rounds (--reps), and the
-median of each node's per-round differences is reported.
+per sample is its render's CPU time (the bpy process's, time.process_time) minus a constant
+Emission's, over SIZE^2 x SPP samples (CPU time, because wall time on a shared machine spreads
+with the load; wall time is recorded beside it); the renders of every node and of the constant
+alternate in rounds (--reps), and the median of each node's per-round differences is reported.
 
 texrender: texcc-eval --time over the same node as a texcc graph (inline, interp and shape in
 one process, POCL_MAX_PTHREAD_COUNT=1, kernel time per textured hit, points uniform in
@@ -45,6 +46,15 @@ NODES = {
         {"fn": "blNoise3DColor", "src": "noise.cl",
          "args": {"vector": {"attr": "ObjectPos"}, "scale": 5.0, "detail": 7.0, "roughness": 0.5,
                   "lacunarity": 2.0, "offset": 0.0, "gain": 1.0, "distortion": 0.0, "type": 1,
+                  "normalize": 1}}),
+    "noise-3d-ridged-detail7": (
+        "ShaderNodeTexNoise", "Color",
+        {"Scale": 5.0, "Detail": 7.0, "Roughness": 0.5, "Lacunarity": 2.0, "Offset": 1.0,
+         "Gain": 2.0, "Distortion": 0.0},
+        {"noise_dimensions": "3D", "noise_type": "RIDGED_MULTIFRACTAL", "normalize": True},
+        {"fn": "blNoise3DColor", "src": "noise.cl",
+         "args": {"vector": {"attr": "ObjectPos"}, "scale": 5.0, "detail": 7.0, "roughness": 0.5,
+                  "lacunarity": 2.0, "offset": 1.0, "gain": 2.0, "distortion": 0.0, "type": 3,
                   "normalize": 1}}),
     "voronoi-3d-f1": (
         "ShaderNodeTexVoronoi", "Distance",
@@ -127,15 +137,17 @@ for name, spec in req["nodes"].items():
         t.links.new(n.outputs[output], e.inputs["Color"])
     materials[name] = m
 times = {name: [] for name in materials}
+cpu = {name: [] for name in materials}
 for r in range(req["reps"] + 1):  # the first round warms up (kernel loading), not counted
     for name, m in materials.items():
         plane.data.materials.clear()
         plane.data.materials.append(m)
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         bpy.ops.render.render()
         if r > 0:
             times[name].append(time.perf_counter() - t0)
-print("PER_NODE_CYCLES " + json.dumps(times), flush=True)
+            cpu[name].append(time.process_time() - c0)
+print("PER_NODE_CYCLES " + json.dumps({"wall": times, "cpu": cpu}), flush=True)
 '''
 
 
@@ -219,27 +231,43 @@ def main():
     tex = texrender_times(tools, args.rounds, args.grid)
     load.append(os.getloadavg()[0])
     samples = args.size * args.size * args.spp
+
+    def per_sample(runs, name, constant="constant"):
+        """Median over rounds of (node render - constant render) per sample, in ns, by the
+        worker's CPU time (what the render thread spent, whatever the machine's load) and by
+        wall time; and the CPU-time rounds themselves."""
+        out = {}
+        for clock in ("cpu", "wall"):
+            diffs = [(a - b) * 1e9 / samples
+                     for a, b in zip(runs[clock][name], runs[clock][constant])]
+            out[clock] = (statistics.median(diffs), diffs)
+        return out
+
     rows = {}
     for name in NODES:
-        diffs = [(a - b) * 1e9 / samples for a, b in zip(cyc[name], cyc["constant"])]
-        svm = statistics.median(diffs)
-        rows[name] = {"cyclesSvmNsPerSample": svm, "cyclesSvmRounds": diffs,
+        c = per_sample(cyc, name)
+        svm = c["cpu"][0]
+        rows[name] = {"cyclesSvmNsPerSample": svm, "cyclesSvmRounds": c["cpu"][1],
+                      "cyclesSvmWallNsPerSample": c["wall"][0],
                       "texrenderNsPerSample": tex[name],
                       "ratioToCyclesSvm": {m: v / svm for m, v in tex[name].items()}}
-        common.log("%s: Cycles SVM %.1f ns/sample; texrender %s" % (
-            name, svm, {m: "%.1f (%.2fx)" % (v, v / svm) for m, v in tex[name].items()}))
-    diffs = [(a - b) * 1e9 / samples for a, b in zip(osl["userfbm"], osl["constant"])]
-    o = statistics.median(diffs)
-    rows["userfbm"] = {"cyclesOslNsPerSample": o, "cyclesOslRounds": diffs,
+        common.log("%s: Cycles SVM %.1f ns/sample CPU (%.1f wall); texrender %s" % (
+            name, svm, c["wall"][0],
+            {m: "%.1f (%.2fx)" % (v, v / svm) for m, v in tex[name].items()}))
+    c = per_sample(osl, "userfbm")
+    o = c["cpu"][0]
+    rows["userfbm"] = {"cyclesOslNsPerSample": o, "cyclesOslRounds": c["cpu"][1],
+                       "cyclesOslWallNsPerSample": c["wall"][0],
                        "texrenderNsPerSample": tex["userfbm"],
                        "ratioToCyclesOsl": {m: v / o for m, v in tex["userfbm"].items()}}
-    common.log("userfbm: Cycles OSL %.1f ns/sample; texrender %s" % (
-        o, {m: "%.1f (%.2fx)" % (v, v / o) for m, v in tex["userfbm"].items()}))
+    common.log("userfbm: Cycles OSL %.1f ns/sample CPU (%.1f wall); texrender %s" % (
+        o, c["wall"][0], {m: "%.1f (%.2fx)" % (v, v / o) for m, v in tex["userfbm"].items()}))
     common.save(None, {"machine": common.machine(), "git": common.git_head(), "size": args.size,
                        "spp": args.spp, "reps": args.reps, "rounds": args.rounds,
-                       "grid": args.grid, "threads": 1, "loadAverage1min": load,
-                       "cyclesConstantSeconds": cyc["constant"],
-                       "cyclesOslConstantSeconds": osl["constant"], "nodes": rows}, args.out)
+                       "grid": args.grid, "threads": 1, "clock": "cpu", "loadAverage1min": load,
+                       "cyclesConstantSeconds": cyc["cpu"]["constant"],
+                       "cyclesOslConstantSeconds": osl["cpu"]["constant"], "nodes": rows},
+                args.out)
 
 
 if __name__ == "__main__":
