@@ -649,8 +649,16 @@ print("CYCLESSECONDS %%f" %% (time.perf_counter() - t0))
 """ % os.path.dirname(LAMP_BLEND)
 
 
-def lamp_figure(tools, size, spp, seeds, cases, block=16, tol=0.01):
-    """Per case: Cycles and texrender (the exporter's scene) at `spp` and each seed; the mean
+# --- The HDR world (issue 37 item 2): an Environment Texture against Cycles ----------------
+
+WORLD_BLEND = os.path.join(os.path.dirname(LAMP_BLEND), "make_world_blend.py")
+WORLD_CASES = ("env", "env-rotated")
+
+
+def lamp_figure(tools, size, spp, seeds, cases, block=16, tol=0.01, maker=LAMP_BLEND,
+                prefix="lamp"):
+    """Per case of `maker` (make_lamp_blend.py's lamps, or make_world_blend.py's HDR worlds
+    with prefix "world"): Cycles and texrender (the exporter's scene) at `spp` and each seed; the mean
     images over the seeds compared: whole-image means per channel, and the 16x16 blocks within
     `tol` (of max(Cycles' block mean, 5% of Cycles' image mean), every channel); each block's
     difference against its standard error from both renderers' seed-to-seed spread; frame
@@ -662,17 +670,17 @@ def lamp_figure(tools, size, spp, seeds, cases, block=16, tol=0.01):
     w, h = (int(x) for x in size.split("x"))
     out = {}
     for case in cases:
-        blend = os.path.join(tools.work, "lamp-%s.blend" % case)
-        common.run([VENV_PYTHON, LAMP_BLEND, blend, case])
-        scene, textures = exported(tools, blend, "lamp-" + case)
+        blend = os.path.join(tools.work, "%s-%s.blend" % (prefix, case))
+        common.run([VENV_PYTHON, maker, blend, case])
+        scene, textures = exported(tools, blend, "%s-%s" % (prefix, case))
         cyc, tex, cyc_t, tex_t = [], [], [], []
         for seed in seeds:
-            npy = os.path.join(tools.work, "lamp-%s-cycles-%d.npy" % (case, seed))
+            npy = os.path.join(tools.work, "%s-%s-cycles-%d.npy" % (prefix, case, seed))
             _, text = common.run([VENV_PYTHON, "-c", LAMP_CYCLES, blend, str(w), str(h),
                                   str(spp), str(seed), npy])
             cyc_t.append(float(text.split("CYCLESSECONDS")[1].split()[0]))
             cyc.append(np.load(npy)[..., :3].astype(np.float64))
-            stats, img, _ = common.texrender(tools, scene, textures, "lamp-%s-%d" % (case, seed),
+            stats, img, _ = common.texrender(tools, scene, textures, "%s-%s-%d" % (prefix, case, seed),
                                              ["--size", size, "--spp", str(spp), "--seed",
                                               str(seed)], image="exr")
             tex_t.append(stats["renderSeconds"])
@@ -770,15 +778,27 @@ def main():
                     "picks cases, --merge replaces only theirs; results in "
                     "bench/results/cycles_lamps.json (needs numpy: run it with .venv/bin/python)")
     ap.add_argument("--lamp-cases", default=",".join(LAMP_CASES))
+    ap.add_argument("--env", action="store_true",
+                    help="only issue 37's HDR world figure (testsuite/Inputs/blender-export/"
+                    "make_world_blend.py's cases: an Environment Texture of a script-made EXR "
+                    "with a sun and a gradient over a diffuse and a glossy object, and the same "
+                    "rotated through a Mapping node) as --lamps measures its lamps; --env-cases "
+                    "picks cases; results in bench/results/cycles_env.json")
+    ap.add_argument("--env-cases", default=",".join(WORLD_CASES))
     args = ap.parse_args()
-    if args.lamps:
+    if args.lamps or args.env:
         ensure_bpy()
         tools = common.Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-lamps-"))
         t0, load0 = time.perf_counter(), os.getloadavg()
         data = {"size": args.agree_size or "128x96", "spp": args.agree_spp or 256,
                 "seeds": list(args.agree_seeds)}
-        data["results"] = lamp_figure(tools, data["size"], data["spp"], data["seeds"],
-                                      args.lamp_cases.split(","))
+        if args.env:
+            data["results"] = lamp_figure(tools, data["size"], data["spp"], data["seeds"],
+                                          args.env_cases.split(","), maker=WORLD_BLEND,
+                                          prefix="world")
+        else:
+            data["results"] = lamp_figure(tools, data["size"], data["spp"], data["seeds"],
+                                          args.lamp_cases.split(","))
         data.update({"seconds": time.perf_counter() - t0, "git": common.git_head(),
                      "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                      "machine": common.machine(), "loadAverageBefore": load0,
@@ -787,11 +807,12 @@ def main():
         for r in data["results"].values():  # each case says which run measured it
             r["run"] = {k: data[k] for k in ("size", "spp", "seeds", "git", "date", "command",
                                              "loadAverageBefore", "loadAverageAfter")}
-        old = common.load("cycles_lamps") if args.merge else None
+        name = "cycles_env" if args.env else "cycles_lamps"
+        old = common.load(name) if args.merge else None
         if old:  # --merge: these cases replace theirs
             old["results"].update(data["results"])
             data = old
-        common.save("cycles_lamps", data, args.out)
+        common.save(name, data, args.out)
         return
     if args.seed in args.noise_seed:
         ap.error("--noise-seed must not repeat --seed (%d)" % args.seed)

@@ -251,6 +251,17 @@ class Export(LightsExport):
         if image.name in self._images:
             return self._images[image.name]["name"]
         what = "%s: image '%s'" % (where, printable(image.name))
+        problems, path, colorspace = self.image_problems(image)
+        for problem in problems:
+            translator.refuse("%s: %s" % (what, problem), missing)
+        if problems:
+            return self._image_entry(None)
+        return self._image_entry(image, path, colorspace)
+
+    def image_problems(self, image):
+        """What texrender cannot read of a Blender image as Cycles does (each a sentence), its
+        file's absolute path (None: packed, or living only in the .blend) and its colour
+        space. The Image Texture node's and the world's Environment Texture's images."""
         problems = []
         if image.source not in ("FILE", "GENERATED"):
             problems.append("source '%s' is not supported; supported: a single image (FILE, "
@@ -269,11 +280,7 @@ class Export(LightsExport):
             if not os.path.isfile(path):
                 problems.append("its file '%s' does not exist (pack it, or fix the path)"
                                 % printable(path))
-        for problem in problems:
-            translator.refuse("%s: %s" % (what, problem), missing)
-        if problems:
-            return self._image_entry(None)
-        return self._image_entry(image, path, colorspace)
+        return problems, path, colorspace
 
     def _image_entry(self, image, path=None, colorspace=None):
         key = None if image is None else image.name
@@ -289,39 +296,43 @@ class Export(LightsExport):
         float buffers, the pixels as Blender holds them; the missing image as a 1x1 magenta
         PNG) into OUTDIR/images/ and returns graph.json's "images"."""
         images = {}
-        image_dir = os.path.join(staging, "images")
         for entry in self._images.values():
-            image, name = entry["image"], entry["name"]
-            binding = {}
-            if entry["path"] is not None:
-                binding["path"] = entry["path"]
-            else:
-                if not os.path.isdir(image_dir):
-                    make_dir(image_dir, os.path.join(final_dir, "images"))
-                if image is None:
-                    ext = ".png"
-                elif image.packed_file is not None:
-                    ext = os.path.splitext(image.filepath)[1].lower() or \
-                        {"OPEN_EXR": ".exr", "JPEG": ".jpg", "HDR": ".hdr"}.get(
-                            image.file_format, ".png")
-                else:
-                    ext = ".exr" if image.is_float else ".png"
-                file = self.unique_file("images/" + file_name(name), ext)
-                target = os.path.join(staging, file)
-                if image is None:
-                    with atomic_open(target, "wb", os.path.join(final_dir, file)) as f:
-                        f.write(magenta_png())
-                elif image.packed_file is not None:
-                    with atomic_open(target, "wb", os.path.join(final_dir, file)) as f:
-                        f.write(bytes(image.packed_file.data))
-                else:
-                    image.file_format = "OPEN_EXR" if ext == ".exr" else "PNG"
-                    image.save(filepath=target)
-                binding["path"] = file
+            binding = {"path": self.image_file(entry, staging, final_dir)}
             if entry["colorspace"] is not None:
                 binding["colorspace"] = entry["colorspace"]
-            images[name] = binding
+            images[entry["name"]] = binding
         return images
+
+    def image_file(self, entry, staging, final_dir):
+        """The path by which OUTDIR's files name an image entry ({"image", "name", "path"}):
+        an external file's absolute path; else the file written into OUTDIR/images/ (as
+        write_images says) relative to OUTDIR."""
+        image, name = entry["image"], entry["name"]
+        if entry["path"] is not None:
+            return entry["path"]
+        image_dir = os.path.join(staging, "images")
+        if not os.path.isdir(image_dir):
+            make_dir(image_dir, os.path.join(final_dir, "images"))
+        if image is None:
+            ext = ".png"
+        elif image.packed_file is not None:
+            ext = os.path.splitext(image.filepath)[1].lower() or \
+                {"OPEN_EXR": ".exr", "JPEG": ".jpg", "HDR": ".hdr"}.get(
+                    image.file_format, ".png")
+        else:
+            ext = ".exr" if image.is_float else ".png"
+        file = self.unique_file("images/" + file_name(name), ext)
+        target = os.path.join(staging, file)
+        if image is None:
+            with atomic_open(target, "wb", os.path.join(final_dir, file)) as f:
+                f.write(magenta_png())
+        elif image.packed_file is not None:
+            with atomic_open(target, "wb", os.path.join(final_dir, file)) as f:
+                f.write(bytes(image.packed_file.data))
+        else:
+            image.file_format = "OPEN_EXR" if ext == ".exr" else "PNG"
+            image.save(filepath=target)
+        return file
 
     def unique_file(self, stem, ext):
         """Object names that differ only in characters a file name cannot keep stay apart."""
@@ -466,43 +477,6 @@ class Export(LightsExport):
         return ({"position": pos, "target": [pos[k] + forward[k] / norm for k in range(3)],
                  "up": up, "fov": fov, "fovAxis": axis}, {"width": width, "height": height})
 
-    def world(self, scene):
-        world = scene.world
-        if world is None:
-            return None
-        where = "world '%s'" % world.name
-        color = [float(c) for c in world.color]
-        tree = world.node_tree
-        if tree is not None:
-            outputs = [n for n in tree.nodes if n.bl_idname == "ShaderNodeOutputWorld"
-                       and n.target in ("ALL", "CYCLES")]
-            active = [n for n in outputs if n.is_active_output] or outputs
-            if not active:
-                return None
-            links = [l for l in active[0].inputs["Surface"].links if not l.is_muted]
-            if not links:
-                return None
-            node = links[0].from_node
-            supported = "supported: a Background node with an unlinked Color and Strength"
-            if node.bl_idname != "ShaderNodeBackground":
-                self.problems.refuse("%s: node '%s' (%s) is not supported; %s" % (
-                    where, node.name, node.bl_idname, supported), "using the world's colour")
-            else:
-                for s in node.inputs:
-                    if s.identifier in ("Color", "Strength") and s.links:
-                        self.problems.refuse(
-                            "%s: node '%s' (%s): input '%s' is linked (%s); %s" % (
-                                where, node.name, node.bl_idname, s.name,
-                                s.links[0].from_node.bl_idname, supported),
-                            "using its unlinked value")
-                strength = float(node.inputs["Strength"].default_value)
-                color = [float(c) * strength for c in node.inputs["Color"].default_value[:3]]
-        if not self.check_finite(where, "its colour or strength", color, "no sky light"):
-            return None
-        if max(color) <= 0.0:
-            return None
-        return {"type": "sky", "radiance": color}
-
     # --- The whole scene ---
     @staticmethod
     def use_render_settings(scene):
@@ -529,7 +503,7 @@ class Export(LightsExport):
             depsgraph = self.bpy.context.evaluated_depsgraph_get()
         camera, film = self.camera(scene, depsgraph)
         lights, meshes, written = [], [], {}
-        sky = self.world(scene)
+        sky = self.world(scene, staging)
         if sky:
             lights.append(sky)
         mesh_dir = os.path.join(staging, "meshes")
