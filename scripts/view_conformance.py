@@ -9,7 +9,7 @@ saves it as an 8-bit PNG with the scene's view settings (Image.save_render, dith
 channel: the fraction of values within 1/255 and the largest difference in 1/255 steps. Exit 1
 when a case has a channel with fewer than --min-within of its values within 1/255.
 
-  .venv/bin/python scripts/view_conformance.py --texrender build/bin/texrender -o OUT [--all]
+  .venv/bin/python scripts/view_conformance.py --exe build/bin/texrender -o OUT [--all]
       [--exr FILE.exr ...] [--min-within 0.99]
 
 The generated EXR (256x128) holds a grey ramp from 2^-12 to 2^10 at several saturations,
@@ -21,7 +21,6 @@ import colorsys
 import os
 import subprocess
 import sys
-import zlib
 
 import numpy as np
 
@@ -68,48 +67,15 @@ def generated_image():
     return img
 
 
-def read_png(path):
-    """An 8-bit RGB or RGBA, non-interlaced PNG (what stb_image_write and Blender write) as a
-    uint8 array (height, width, 3)."""
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    pos, idat, w = 8, b"", 0
-    while pos < len(data):
-        n = int.from_bytes(data[pos:pos + 4], "big")
-        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            w, h, depth, ctype, _, _, interlace = (int.from_bytes(body[0:4], "big"),
-                                                   int.from_bytes(body[4:8], "big"), *body[8:13])
-            assert depth == 8 and ctype in (2, 6) and interlace == 0, (path, depth, ctype)
-            bpp = 3 if ctype == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    raw = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(h, 1 + w * bpp)
-    out = np.zeros((h, w * bpp), np.int32)
-    prev = np.zeros(w * bpp, np.int32)
-    for y in range(h):
-        f, line = raw[y, 0], raw[y, 1:].astype(np.int32)
-        if f == 0:
-            cur = line
-        elif f == 2:
-            cur = (line + prev) & 255
-        else:
-            cur = np.zeros_like(line)
-            for i in range(w * bpp):
-                a = cur[i - bpp] if i >= bpp else 0
-                b, c = prev[i], (prev[i - bpp] if i >= bpp else 0)
-                if f == 1:
-                    pred = a
-                elif f == 3:
-                    pred = (a + b) >> 1
-                else:
-                    p = a + b - c
-                    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                    pred = a if pa <= pb and pa <= pc else b if pb <= pc else c
-                cur[i] = (line[i] + pred) & 255
-        out[y], prev = cur, cur
-    return out.reshape(h, w, bpp)[:, :, :3]
+def read_png(bpy, path):
+    """An 8-bit PNG's RGB codes as an int array (height, width, 3), read by Blender: a byte
+    image's pixels are its codes / 255, rows bottom to top."""
+    image = bpy.data.images.load(path, check_existing=False)
+    w, h = image.size
+    values = np.empty(w * h * 4, np.float32)
+    image.pixels.foreach_get(values)
+    bpy.data.images.remove(image)
+    return np.rint(values.reshape(h, w, 4)[::-1, :, :3] * 255).astype(np.int32)
 
 
 def blender_png(bpy, exr, png, case):
@@ -134,6 +100,22 @@ def blender_png(bpy, exr, png, case):
     bpy.data.images.remove(image)
 
 
+def check_render(args, config):
+    """Renders args.render to render.exr, and to a PNG through AgX - Punchy at +0.5 stops:
+    the PNG must be the EXR through --from-exr, byte for byte. Returns the EXR (None: differ)."""
+    exr = os.path.join(args.out, "render.exr")
+    view = ["--view-transform", "AgX", "--look", "AgX - Punchy", "--exposure", "0.5",
+            "--ocio-config", config]
+    subprocess.run([args.exe, args.render, "--quiet", "-o", exr], check=True)
+    direct, converted = (os.path.join(args.out, "render-%s.png" % k) for k in ("direct", "exr"))
+    subprocess.run([args.exe, args.render, "--quiet", "-o", direct] + view, check=True)
+    subprocess.run([args.exe, "--from-exr", exr, "-o", converted] + view, check=True)
+    same = open(direct, "rb").read() == open(converted, "rb").read()
+    print("render: the PNG through AgX - Punchy +0.5 is %s" %
+          ("its EXR through --from-exr, byte for byte" if same else "NOT its EXR's PNG: FAIL"))
+    return exr if same else None
+
+
 def compare(a, b):
     """Per channel: (fraction within 1/255, largest difference in 1/255 steps)."""
     d = np.abs(a.astype(np.int32) - b.astype(np.int32))
@@ -142,9 +124,12 @@ def compare(a, b):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--texrender", required=True)
+    ap.add_argument("--exe", required=True, help="the texrender binary")
     ap.add_argument("-o", "--out", required=True, help="folder for the EXR and PNG files")
     ap.add_argument("--exr", action="append", default=[], help="another EXR to convert")
+    ap.add_argument("--render", metavar="SCENE", help="also render SCENE (scene.json) to an EXR, "
+                    "compare it too, and check that a render written as PNG through a view is "
+                    "byte for byte its EXR through --from-exr")
     ap.add_argument("--all", action="store_true", help="every view and look (else a quick set)")
     ap.add_argument("--min-within", type=float, default=0.99)
     args = ap.parse_args()
@@ -155,23 +140,28 @@ def main():
     with open(generated, "wb") as f:
         f.write(texexr.write_exr(generated_image()))
     ok = True
-    for exr in [generated] + args.exr:
+    exrs = [generated] + args.exr
+    if args.render:
+        exrs.append(check_render(args, config))
+        ok &= exrs[-1] is not None
+    for exr in filter(None, exrs):
         name = os.path.splitext(os.path.basename(exr))[0]
         for k, case in enumerate(ALL if args.all else QUICK):
             view, look, exposure, gamma = case
             ours = os.path.join(args.out, "%s-%d-texrender.png" % (name, k))
             theirs = os.path.join(args.out, "%s-%d-blender.png" % (name, k))
-            subprocess.run([args.texrender, "--from-exr", exr, "-o", ours, "--view-transform", view,
+            subprocess.run([args.exe, "--from-exr", exr, "-o", ours, "--view-transform", view,
                             "--look", look, "--exposure", repr(exposure), "--gamma", repr(gamma),
                             "--ocio-config", config], check=True)
             blender_png(bpy, os.path.abspath(exr), os.path.abspath(theirs), case)
-            result = compare(read_png(ours), read_png(theirs))
+            result = compare(read_png(bpy, ours), read_png(bpy, theirs))
             good = all(within >= args.min_within for within, _ in result)
             ok &= good
+            same = (read_png(bpy, ours) == read_png(bpy, theirs)).mean()
             print("%-10s %-8s %-26s exposure %+5.2f gamma %4.2f  within 1/255 R %.5f G %.5f "
-                  "B %.5f  max %d/%d/%d  %s" % (name, view, look, exposure, gamma,
-                                                *[w for w, _ in result], *[m for _, m in result],
-                                                "ok" if good else "FAIL"))
+                  "B %.5f  max %d/%d/%d  identical %.4f  %s"
+                  % (name, view, look, exposure, gamma, *[w for w, _ in result],
+                     *[m for _, m in result], same, "ok" if good else "FAIL"))
     return 0 if ok else 1
 
 

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -213,6 +214,12 @@ const LookDef *findLook(const std::string &View, const std::string &Name) {
   return nullptr;
 }
 
+std::string number(float V) {
+  std::ostringstream S;
+  S << V;
+  return S.str();
+}
+
 std::string joinQuoted(const std::vector<std::string> &Names) {
   std::string S;
   for (const std::string &N : Names)
@@ -271,9 +278,9 @@ ViewTransform::ViewTransform(const ViewSettings &S) : Settings(S) {
     throw Error("look '" + S.Look + "' is not a look of view transform '" + S.Transform +
                 "'; its looks: " + joinQuoted(ViewLooks));
   if (!std::isfinite(S.Exposure) || std::fabs(S.Exposure) > 32.0f)
-    throw Error("exposure " + std::to_string(S.Exposure) + " is out of range (-32 to 32 stops)");
+    throw Error("exposure " + number(S.Exposure) + " is out of range (-32 to 32 stops)");
   if (!std::isfinite(S.Gamma) || S.Gamma <= 0.0f)
-    throw Error("gamma " + std::to_string(S.Gamma) + " must be a number above 0");
+    throw Error("gamma " + number(S.Gamma) + " is not above 0 (Blender's range: 0.001 to 5)");
   if (S.Transform == "Standard")
     return;
   const std::string Why = "view transform '" + S.Transform + "' reads Blender's LUT files";
