@@ -1,7 +1,8 @@
 /* hit_attributes.cl: fills TexccHitAttrs for each active hit, computing only the attributes in
  * attrMask (bit k = TEXCC_ATTR_k, from layout.json "attributes"); the others stay zero. Also
  * sets hitMaterial (the texture kernel's material index, -1 for a miss or a material without
- * texture outputs). AO (bit TEXCC_ATTR_AO) is filled later by ao_reduce. WorldPos.w is 1 on a
+ * texture outputs). AO (bit TEXCC_ATTR_AO) is filled later by ao_reduce. TangentSign shares
+ * TexccHitAttrs.tangent (its w), Backfacing uvAO (its w). WorldPos.w is 1 on a
  * hit; ViewDir is also set for a miss (the tests recover the ray from it). */
 #include "rt_surface.h"
 
@@ -42,22 +43,39 @@ __kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAtt
     a.normal = (float4)(s.ns, 0.0f);
   if (attrMask & (1u << TEXCC_ATTR_GEOMNORMAL))
     a.geomNormal = (float4)(s.ng, 0.0f);
-  if (attrMask & (1u << TEXCC_ATTR_TANGENT)) {
-    /* dP/du from the triangle's uv parametrisation, projected onto the shading plane; any
-     * orthogonal vector when the uvs are degenerate. */
+  if (attrMask & ((1u << TEXCC_ATTR_TANGENT) | (1u << TEXCC_ATTR_TANGENTSIGN))) {
+    /* The UV tangent: the corners' vtan interpolated as Cycles interpolates its MikkTSpace
+     * tangent attribute (barycentric, not normalized), with the interpolated bitangent sign;
+     * without vtan (or where it vanishes), dP/du of the triangle's UVs and the sign of their
+     * orientation. Then made orthogonal to the shading normal and normalized (Cycles'
+     * Geometry Tangent); any orthogonal vector when all else is degenerate. */
     __global const RtTriAttr *ta = &triAttrs[h.tri];
-    float2 duv1 = ta->uv01.zw - ta->uv01.xy, duv2 = ta->uv2.xy - ta->uv01.xy;
-    float det = duv1.x * duv2.y - duv1.y * duv2.x;
-    float3 t = (float3)(0.0f);
-    if (fabs(det) > 1e-12f)
-      t = (duv2.y * tris[h.tri].e1.xyz - duv1.y * tris[h.tri].e2.xyz) / det;
+    const float b0 = 1.0f - h.u - h.v;
+    float3 t = b0 * ta->t0.xyz + h.u * ta->t1.xyz + h.v * ta->t2.xyz;
+    float sgn = b0 * ta->t0.w + h.u * ta->t1.w + h.v * ta->t2.w;
+    /* The shading normal on the side of the winding (s.ns faces the ray). */
+    const float3 nWound = s.front ? s.ns : -s.ns;
+    if (ta->t0.w == 0.0f || dot(t, t) < 1e-24f) {
+      float2 duv1 = ta->uv01.zw - ta->uv01.xy, duv2 = ta->uv2.xy - ta->uv01.xy;
+      float det = duv1.x * duv2.y - duv1.y * duv2.x;
+      t = (float3)(0.0f);
+      sgn = 1.0f;
+      if (fabs(det) > 1e-12f) {
+        const float3 e1 = tris[h.tri].e1.xyz, e2 = tris[h.tri].e2.xyz;
+        t = (duv2.y * e1 - duv1.y * e2) / det;
+        const float3 dpdv = (duv1.x * e2 - duv2.x * e1) / det;
+        sgn = dot(cross(nWound, t), dpdv) < 0.0f ? -1.0f : 1.0f;
+      }
+    }
     t -= dot(t, s.ns) * s.ns;
     if (length(t) < 1e-12f) {
       float3 b;
       rt_frame(s.ns, &t, &b);
     }
-    a.tangent = (float4)(normalize(t), 0.0f);
+    a.tangent = (float4)(normalize(t), sgn);
   }
+  if (attrMask & (1u << TEXCC_ATTR_BACKFACING))
+    a.uvAO.w = s.front ? 0.0f : 1.0f;
   if ((attrMask & (1u << TEXCC_ATTR_OBJECTPOS)) && (attrMask & (1u << TEXCC_ATTR_GEOMNORMAL))) {
     /* For bump's moved ObjectPos: its offset directions (texcc_device.h texcc_bump_frame, the
      * same arithmetic on the geometric normal) through the inverse transform. */

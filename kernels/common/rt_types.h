@@ -92,6 +92,9 @@ typedef struct RtTriAttr {
   int light;           /* index into the light table, or -1 */
   int pad0;
   int pad1;
+  /* The corners' UV tangents from the OBJ file's vtan (world space, as given: MikkTSpace's,
+   * not normalized), w the bitangent sign (1 or -1); all zero when the file gave none. */
+  RT_F4 t0, t1, t2;
 } RtTriAttr;
 
 /* A mesh instance: its material (layout.json index), emission, and world-to-object matrix. */

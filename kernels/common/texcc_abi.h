@@ -22,7 +22,9 @@
 #define TEXCC_ATTR_TEXCOORD0 5
 #define TEXCC_ATTR_AO 6
 #define TEXCC_ATTR_VIEWDIR 7
-#define TEXCC_ATTR_COUNT 8
+#define TEXCC_ATTR_TANGENTSIGN 8
+#define TEXCC_ATTR_BACKFACING 9
+#define TEXCC_ATTR_COUNT 10
 
 /* Per-hit surface attributes. The hit-attributes kernel fills only those the textures read
  * (layout.json "attributes"); the rest are zero. */
@@ -31,9 +33,17 @@ typedef struct TexccHitAttrs {
   TEXCC_F4 objectPos;  /* xyz */
   TEXCC_F4 normal;     /* xyz, shading normal, unit, facing the incoming ray */
   TEXCC_F4 geomNormal; /* xyz, unit, facing the incoming ray */
-  TEXCC_F4 tangent;    /* xyz, unit (dP/du, or any vector orthogonal to the normal) */
+  /* xyz: unit, across the shading normal: the mesh's UV tangent (the OBJ file's vtan, as
+   * Cycles' MikkTSpace tangent: interpolated, then made orthogonal to the normal), or dP/du
+   * of the triangle's UVs without vtan, or any vector orthogonal to the normal without UVs;
+   * w: TangentSign, the bitangent sign (1 or -1): the vtan's interpolated, or the UVs'
+   * orientation (the sign making sign * cross(normal, tangent) point along dP/dv, with the
+   * normal on the side of the triangle's winding). */
+  TEXCC_F4 tangent;
   TEXCC_F4 viewDir;    /* xyz, unit, from the hit towards the viewer (-ray direction) */
-  TEXCC_F4 uvAO;       /* xy = TexCoord0, z = AO (1 = unoccluded), w = unused */
+  /* xy = TexCoord0, z = AO (1 = unoccluded), w = Backfacing (1: the ray hit the side the
+   * triangle's winding faces away from, whose normals the kernels turn to face the ray) */
+  TEXCC_F4 uvAO;
   /* xyz: bump's two offset directions, texcc_bump_frame's a and b of the geometric normal,
    * through the object's inverse transform (its linear part), set with GeomNormal and
    * ObjectPos: bump moves ObjectPos by them (texcc_device.h). */

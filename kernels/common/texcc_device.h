@@ -279,6 +279,8 @@ static inline float3 texcc_attr_Tangent(const TexccCtx *c) { return c->hit.tange
 static inline float2 texcc_attr_TexCoord0(const TexccCtx *c) { return c->hit.uvAO.xy; }
 static inline float texcc_attr_AO(const TexccCtx *c) { return c->hit.uvAO.z; }
 static inline float3 texcc_attr_ViewDir(const TexccCtx *c) { return c->hit.viewDir.xyz; }
+static inline float texcc_attr_TangentSign(const TexccCtx *c) { return c->hit.tangent.w; }
+static inline float texcc_attr_Backfacing(const TexccCtx *c) { return c->hit.uvAO.w; }
 
 /* readSetting("Name") lowers to texcc_setting_Name(texcc_ctx). */
 static inline float texcc_setting_Time(const TexccCtx *c) { return c->settings->time; }
@@ -377,6 +379,8 @@ static inline float4 texcc_attr_by_id(const TexccCtx *c, uint id) {
   case TEXCC_ATTR_TEXCOORD0: return (float4)(c->hit.uvAO.xy, 0.0f, 0.0f);
   case TEXCC_ATTR_AO: return (float4)(c->hit.uvAO.z, 0.0f, 0.0f, 0.0f);
   case TEXCC_ATTR_VIEWDIR: return c->hit.viewDir;
+  case TEXCC_ATTR_TANGENTSIGN: return (float4)(c->hit.tangent.w, 0.0f, 0.0f, 0.0f);
+  case TEXCC_ATTR_BACKFACING: return (float4)(c->hit.uvAO.w, 0.0f, 0.0f, 0.0f);
   default: return (float4)(0.0f);
   }
 }

@@ -83,6 +83,7 @@ bool hasIndex(int Index, size_t Tuple, size_t Size, const std::string &Path, con
 struct Face {
   Vec3 P[3], N[3];
   Vec2 UV[3];
+  Vec4 T[3]; // the tangents of the corners' normals (vtan); w = 0 without them
   bool FileNormals = true;
 };
 
@@ -96,10 +97,15 @@ Face readFace(const ObjText &A, const ObjCorner *Idx, const std::string &Path) {
     if (!std::isfinite(Fc.P[C][0]) || !std::isfinite(Fc.P[C][1]) || !std::isfinite(Fc.P[C][2]))
       throw Error(Path + ": invalid OBJ: vertex " + std::to_string(I.V + 1) +
                   " has a non-finite coordinate (" + formatVec3(Fc.P[C]) + ")");
-    if (hasIndex(I.N, 3, A.Normals.size(), Path, "normal"))
+    Fc.T[C] = {0, 0, 0, 0};
+    if (hasIndex(I.N, 3, A.Normals.size(), Path, "normal")) {
       Fc.N[C] = normalized({A.Normals[3 * I.N], A.Normals[3 * I.N + 1], A.Normals[3 * I.N + 2]});
-    else
+      if (!A.Tangents.empty()) // parseObj checked: one vtan per vn
+        Fc.T[C] = {A.Tangents[4 * I.N], A.Tangents[4 * I.N + 1], A.Tangents[4 * I.N + 2],
+                   A.Tangents[4 * I.N + 3]};
+    } else {
       Fc.FileNormals = false;
+    }
     Fc.UV[C] = {0, 0};
     if (hasIndex(I.T, 2, A.TexCoords.size(), Path, "texture coordinate"))
       Fc.UV[C] = {A.TexCoords[2 * I.T], A.TexCoords[2 * I.T + 1]};
@@ -159,7 +165,10 @@ void generateNormals(TriangleMesh &M, const std::vector<int> &PosIndex,
 //
 // Lines end at '\n', "\r\n" or a lone '\r'; blanks are spaces and tabs. Read: v, vn and vt (every
 // number a finite float; the first three, three and two kept, missing ones 0; a '#' ends the
-// numbers), and f (corners v, v/t, v//n or v/t/n; a negative index counts back from the elements
+// numbers), vtan (texrender's extension, docs/scene.md "Tangents": x y z w, the tangent and
+// bitangent sign of the vn of the same index; exactly four finite numbers, w 1 or -1, and as
+// many vtan as vn when there is any), and f (corners v, v/t, v//n or v/t/n; a negative index
+// counts back from the elements
 // read so far; faces of fewer than three corners are skipped, quads split along the shorter
 // diagonal, larger polygons fanned from their first corner). Every other statement (comments,
 // g, o, s, usemtl, mtllib, l, p, vp, curves, tinyobjloader's vw ...) is ignored. Numbers are
@@ -257,6 +266,7 @@ struct Reader {
   size_t Line = 0;
   std::vector<ObjCorner> Poly;
   std::vector<size_t> Quads; // where in Out.Corners each quad's two triangles start
+  size_t LastTangentLine = 0;
 
   [[noreturn]] void fail(const std::string &What) const {
     throw Error(Path + ":" + std::to_string(Line) + ": invalid OBJ: " + What);
@@ -281,6 +291,46 @@ struct Reader {
     }
     for (; Count < Keep; ++Count)
       To.push_back(0.0f);
+  }
+
+  /// A vtan line: x y z w, exactly four finite numbers, w (the bitangent sign) 1 or -1.
+  void tangent(const char *P, const char *End) {
+    LastTangentLine = Line;
+    float V[4];
+    size_t Count = 0;
+    while (true) {
+      while (P < End && isBlank(*P))
+        ++P;
+      if (P == End || *P == '#')
+        break;
+      const char *Token = P;
+      while (P < End && !isBlank(*P))
+        ++P;
+      if (Count == 4)
+        fail("vtan has more than four numbers (x y z w: the tangent and the bitangent sign)");
+      if (!parseNumber(Token, P, V[Count]))
+        fail("'" + printable(Token, P) + "' is not a finite number");
+      ++Count;
+    }
+    if (Count < 4)
+      fail("vtan has " + std::to_string(Count) +
+           " numbers; it needs four: x y z w (the tangent and the bitangent sign)");
+    if (V[3] != 1.0f && V[3] != -1.0f) {
+      char Buf[48];
+      std::snprintf(Buf, sizeof Buf, "%g", V[3]);
+      fail(std::string("vtan's bitangent sign w is ") + Buf + "; it must be 1 or -1");
+    }
+    Out.Tangents.insert(Out.Tangents.end(), V, V + 4);
+  }
+
+  /// Every vn has its vtan, once the file is read (a file without vtan has no tangents).
+  void checkTangents() {
+    const size_t NT = Out.Tangents.size() / 4, NN = Out.Normals.size() / 3;
+    if (NT == 0 || NT == NN)
+      return;
+    Line = LastTangentLine;
+    fail("the file has " + std::to_string(NT) + " vtan and " + std::to_string(NN) +
+         " vn; each vn needs its vtan (the tangent of the vn of the same index)");
   }
 
   void face(const char *P, const char *End) {
@@ -386,11 +436,14 @@ ObjText parseObj(const std::string &Path, const std::string &Text) {
       R.numbers(P + 3, End, 3, Out.Normals);
     else if (P + 2 < End && P[0] == 'v' && P[1] == 't' && isBlank(P[2]))
       R.numbers(P + 3, End, 2, Out.TexCoords);
+    else if (End - P >= 4 && std::memcmp(P, "vtan", 4) == 0 && (End - P == 4 || isBlank(P[4])))
+      R.tangent(P + 4, End);
     else if (P + 1 < End && P[0] == 'f' && isBlank(P[1]))
       R.face(P + 2, End);
     P = Next;
   }
   R.splitQuads();
+  R.checkTangents();
   return Out;
 }
 
@@ -406,6 +459,9 @@ static TriangleMesh readObj(const std::string &Path) {
   const size_t Corners = A.Corners.size();
   TriangleMesh M;
   M.Positions.reserve(Corners), M.Normals.reserve(Corners), M.UVs.reserve(Corners);
+  const bool Tangents = !A.Tangents.empty();
+  if (Tangents)
+    M.Tangents.reserve(Corners);
   std::vector<int> PosIndex;
   PosIndex.reserve(Corners);
   std::vector<bool> HasNormals;
@@ -437,6 +493,8 @@ static TriangleMesh readObj(const std::string &Path) {
       M.Positions.push_back(P[C]);
       M.Normals.push_back(FileNormals ? N[C] : Vec3{0, 0, 0});
       M.UVs.push_back(UV[C]);
+      if (Tangents) // a face without normals has none
+        M.Tangents.push_back(FileNormals ? Fc.T[C] : Vec4{0, 0, 0, 0});
       PosIndex.push_back(A.Corners[F + size_t(C)].V);
     }
     HasNormals.push_back(FileNormals);

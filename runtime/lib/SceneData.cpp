@@ -130,6 +130,7 @@ int flattenBsdf(const LayoutBsdf &B, const LayoutMaterial &M, std::vector<RtBsdf
 struct GatheredMesh {
   std::vector<Vec3> P, N;
   std::vector<Vec2> UV;
+  std::vector<Vec4> T; // tangents (world space, w the sign), zero for a mesh without them
   std::vector<int> Mesh;
 };
 
@@ -159,6 +160,7 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
     };
     Grow(G.P, TM.Positions.size()), Grow(G.N, TM.Positions.size());
     Grow(G.UV, TM.Positions.size()), Grow(G.Mesh, TM.triangleCount());
+    Grow(G.T, TM.Positions.size());
     const bool HasTransform = Mi.Transform != std::array<float, 16>{1, 0, 0, 0, 0, 1, 0, 0,
                                                                      0, 0, 1, 0, 0, 0, 0, 1};
     for (size_t K = 0; K < TM.Positions.size(); ++K) {
@@ -185,6 +187,11 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
                                float(Inv[0][1] * N[0] + Inv[1][1] * N[1] + Inv[2][1] * N[2]),
                                float(Inv[0][2] * N[0] + Inv[1][2] * N[1] + Inv[2][2] * N[2])}));
       G.UV.push_back(TM.UVs[K]);
+      // A tangent lies in the surface: it transforms as the positions' differences do.
+      Vec4 T = TM.Tangents.empty() ? Vec4{0, 0, 0, 0} : TM.Tangents[K];
+      const std::array<float, 16> &X = Mi.Transform;
+      G.T.push_back({X[0] * T[0] + X[1] * T[1] + X[2] * T[2], X[4] * T[0] + X[5] * T[1] + X[6] * T[2],
+                     X[8] * T[0] + X[9] * T[1] + X[10] * T[2], T[3]});
     }
     for (size_t T = 0; T < TM.triangleCount(); ++T)
       G.Mesh.push_back(int(MI));
@@ -380,6 +387,10 @@ static SceneData gatherSceneData(const Scene &S, const Layout &L) {
     At.uv2 = f4(G.UV[3 * T + 2][0], G.UV[3 * T + 2][1], 0);
     At.mesh = G.Mesh[T];
     At.light = -1;
+    for (int C = 0; C < 3; ++C) {
+      const Vec4 &Tc = G.T[3 * T + size_t(C)];
+      (C == 0 ? At.t0 : C == 1 ? At.t1 : At.t2) = f4(Tc[0], Tc[1], Tc[2], Tc[3]);
+    }
   }
   buildMaterials(L, D.Materials, D.BsdfNodes);
   buildLights(S, D);

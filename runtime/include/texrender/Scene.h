@@ -4,6 +4,7 @@
 // scene.json (docs/scene.md) and its OBJ meshes, loaded into plain host data. Errors name the
 // file, the JSON path and the reason.
 
+#include "texrender/ViewTransform.h"
 #include <array>
 #include <string>
 #include <vector>
@@ -12,12 +13,17 @@ namespace texrender {
 
 using Vec3 = std::array<float, 3>;
 using Vec2 = std::array<float, 2>;
+using Vec4 = std::array<float, 4>;
 
 /// A triangle mesh as loaded from OBJ: three corners per triangle.
 struct TriangleMesh {
   std::vector<Vec3> Positions; // 3 per triangle
   std::vector<Vec3> Normals;   // 3 per triangle, empty when the file had none
   std::vector<Vec2> UVs;       // 3 per triangle, zeros when the file had none
+  // 3 per triangle when the file gives tangents (vtan, docs/scene.md "Tangents"): xyz the
+  // UV tangent, w the bitangent sign (1 or -1); w = 0 for a triangle without them. Empty when
+  // the file gives none.
+  std::vector<Vec4> Tangents;
   size_t triangleCount() const { return Positions.size() / 3; }
 };
 
@@ -38,6 +44,7 @@ struct ObjCorner {
 /// finite float or a face corner that is not one.
 struct ObjText {
   std::vector<float> Positions, Normals, TexCoords;
+  std::vector<float> Tangents; // vtan: 4 floats each, one per vn (checked by parseObj)
   std::vector<ObjCorner> Corners;
 };
 ObjText parseObj(const std::string &Path, const std::string &Text);
@@ -94,6 +101,8 @@ struct RenderSettings {
   /// texrender --region: the part of the film to render (RegionWidth 0: the whole film). Its
   /// pixels keep their full-film coordinates and random streams (kernels/raygen.cl).
   int RegionX = 0, RegionY = 0, RegionWidth = 0, RegionHeight = 0;
+  /// film.view: a .png's Color Management (Config empty: texrender's --ocio-config or $OCIO).
+  ViewSettings View;
   int Frame = 0;  // readSetting("Frame") (texrender --frame)
   float Time = 0; // readSetting("Time"), seconds (texrender: Frame / --fps)
 };

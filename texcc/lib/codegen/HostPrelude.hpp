@@ -492,6 +492,8 @@ inline float2 texcc_attr_TexCoord0(const TexccCtx *c) {
 }
 inline float texcc_attr_AO(const TexccCtx *c) { return c->hit.uvAO.s[2]; }
 inline float3 texcc_attr_ViewDir(const TexccCtx *c) { return texcc_f3(c->hit.viewDir); }
+inline float texcc_attr_TangentSign(const TexccCtx *c) { return c->hit.tangent.s[3]; }
+inline float texcc_attr_Backfacing(const TexccCtx *c) { return c->hit.uvAO.s[3]; }
 
 inline float texcc_setting_Time(const TexccCtx *c) { return c->settings->time; }
 inline int texcc_setting_Frame(const TexccCtx *c) { return c->settings->frame; }

@@ -33,6 +33,10 @@ static std::string hitAttribute(int Id) {
     return "(float4)(h->uvAO.xy, 0.0f, 0.0f)";
   if (Id == attributeId("AO"))
     return "(float4)(h->uvAO.z, 0.0f, 0.0f, 0.0f)";
+  if (Id == attributeId("TangentSign"))
+    return "(float4)(h->tangent.w, 0.0f, 0.0f, 0.0f)";
+  if (Id == attributeId("Backfacing"))
+    return "(float4)(h->uvAO.w, 0.0f, 0.0f, 0.0f)";
   return std::string("h->") + Members[Id];
 }
 

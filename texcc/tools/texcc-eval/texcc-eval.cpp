@@ -137,6 +137,9 @@ TexccHitAttrs randomHit(Rng &R) {
   H.tangent = unitVector(R);
   H.viewDir = unitVector(R);
   H.uvAO = f4(R.uniform(-0.5f, 1.5f), R.uniform(-0.5f, 1.5f), R.uniform(0, 1), 0.0f);
+  // TangentSign and Backfacing from draws already made (the stream of earlier draws stays).
+  H.tangent.s[3] = H.viewDir.s[0] >= 0 ? 1.0f : -1.0f;
+  H.uvAO.s[3] = H.viewDir.s[1] >= 0 ? 1.0f : 0.0f;
   return H;
 }
 

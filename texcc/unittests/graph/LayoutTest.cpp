@@ -269,13 +269,15 @@ TEST(Types, SpellingsRoundTrip) {
 }
 
 TEST(Signature, AttributeTableIsAbiOrder) {
-  const char *Names[] = {"WorldPos", "ObjectPos", "Normal", "GeomNormal",
-                         "Tangent",  "TexCoord0", "AO",     "ViewDir"};
-  ASSERT_EQ(attributeTable().size(), 8u);
-  for (int I = 0; I < 8; ++I)
+  const char *Names[] = {"WorldPos", "ObjectPos", "Normal",      "GeomNormal", "Tangent",
+                         "TexCoord0", "AO",       "ViewDir",     "TangentSign", "Backfacing"};
+  ASSERT_EQ(attributeTable().size(), 10u);
+  for (int I = 0; I < 10; ++I)
     EXPECT_EQ(attributeId(Names[I]), I);
   EXPECT_EQ(attributeTable()[5].second, BaseType::Float2);
   EXPECT_EQ(attributeTable()[6].second, BaseType::Float);
+  EXPECT_EQ(attributeTable()[8].second, BaseType::Float);
+  EXPECT_EQ(attributeTable()[9].second, BaseType::Float);
   EXPECT_EQ(attributeId("Nope"), -1);
   ASSERT_EQ(settingTable().size(), 3u);
   EXPECT_EQ(settingTable()[1].second, BaseType::Int);

@@ -128,8 +128,8 @@ TEST(Validate, UnknownImageAndAttribute) {
             "'TexCoord0'? [/nodes/0/args/uv]\n");
   EXPECT_EQ(errorsOf(oneNode(R"({"id": "a", "fn": "neg", "args": {"x": {"attr": "Foo"}}})")),
             "g.json:2:40: error: node 'a': unknown attribute 'Foo'; the attributes are "
-            "'WorldPos', 'ObjectPos', 'Normal', 'GeomNormal', 'Tangent', 'TexCoord0', 'AO' or "
-            "'ViewDir' [/nodes/0/args/x]\n");
+            "'WorldPos', 'ObjectPos', 'Normal', 'GeomNormal', 'Tangent', 'TexCoord0', 'AO', "
+            "'ViewDir', 'TangentSign' or 'Backfacing' [/nodes/0/args/x]\n");
 }
 
 TEST(Validate, BsdfInputTypes) {

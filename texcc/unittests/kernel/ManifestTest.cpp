@@ -239,9 +239,11 @@ TEST(Manifest, KernelLayoutWithoutCapabilitiesIsRefused) {
 }
 
 TEST(Attributes, OneTable) {
-  EXPECT_EQ(NumAttributes, 8u);
+  EXPECT_EQ(NumAttributes, 10u);
   EXPECT_EQ(attributeId("WorldPos"), 0);
   EXPECT_EQ(attributeId("ViewDir"), 7);
+  EXPECT_EQ(attributeId("TangentSign"), 8);
+  EXPECT_EQ(attributeId("Backfacing"), 9);
   EXPECT_EQ(attributeId("viewdir"), -1);
   EXPECT_STREQ(attributeName(6), "AO");
   EXPECT_EQ(AttributeTable[5].Components, 2u); // TexCoord0

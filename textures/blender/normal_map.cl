@@ -1,0 +1,55 @@
+/* blender/normal_map.cl: Blender's Normal Map node in Tangent Space (Cycles, Blender 5.0).
+ *
+ *   float3 blNormalMap(float3 color, float strength)
+ *                        the perturbed normal (world space, unit) of the hit: the colour in the
+ *                        frame of the mesh's UV tangent (Tangent, TangentSign) and the shading
+ *                        normal (Normal), turned back on a back face (Backfacing)
+ *   float3 blNormalMapFrame(float3 color, float strength, float3 normal, float3 tangent,
+ *                           float tangentSign, float backfacing)
+ *                        the same with the frame as arguments (what the Cycles fixtures
+ *                        compare: a bake's plane has one known frame)
+ *
+ * As Cycles' svm_node_normal_map: the colour (linear; a normal map image is Non-Color) maps to
+ * c = 2 (color - 0.5); Strength scales its tangent-plane part, c.xy * strength, and moves
+ * c.z from 1 towards itself, mix(1, c.z, clamp(strength, 0, 1)); the normal is
+ * normalize(c.x T + c.y B + c.z N) with B = tangentSign * cross(N, T). On a back face (the ray
+ * hit the side the triangle's winding faces away from) Cycles builds the frame with the
+ * normal of the winding's side and turns the result; texrender's Normal faces the ray, so N is
+ * turned first and the result after. A zero result is the shading normal.
+ *
+ * The tangent is the mesh's MikkTSpace tangent when its OBJ file gives one (vtan; the Blender
+ * exporter writes Blender's), interpolated across the triangle as Cycles interpolates it;
+ * without one, dP/du of the triangle's UVs (docs/abi.md "Attributes").
+ *
+ * Parameters (Blender's defaults):
+ *
+ *   | name        | type   | default        | meaning                                       |
+ *   |-------------|--------|----------------|-----------------------------------------------|
+ *   | color       | float3 | 0.5, 0.5, 1    | the tangent-space normal, 0..1 per axis        |
+ *   | strength    | float  | 1              | 0: the shading normal; above 1 exaggerates     |
+ *   | normal      | float3 | Normal         | unit shading normal, facing the ray            |
+ *   | tangent     | float3 | Tangent        | unit UV tangent                                |
+ *   | tangentSign | float  | TangentSign    | bitangent sign, 1 or -1                        |
+ *   | backfacing  | float  | Backfacing     | 1 on a back face, else 0                       |
+ */
+
+float3 blNormalMapFrame(float3 color, float strength, float3 normal, float3 tangent,
+                        float tangentSign, float backfacing) {
+  float3 c = 2.0f * (color - (float3)(0.5f));
+  c.x *= strength;
+  c.y *= strength;
+  c.z = mix(1.0f, c.z, clamp(strength, 0.0f, 1.0f));
+  const float3 n = backfacing > 0.5f ? -normal : normal;
+  const float3 b = tangentSign * cross(n, tangent);
+  float3 r = c.x * tangent + c.y * b + c.z * n;
+  const float len = length(r);
+  if (!(len > 0.0f))
+    return normal;
+  r /= len;
+  return backfacing > 0.5f ? -r : r;
+}
+
+float3 blNormalMap(float3 color, float strength) {
+  return blNormalMapFrame(color, strength, readAttr("Normal"), readAttr("Tangent"),
+                          readAttr("TangentSign"), readAttr("Backfacing"));
+}
