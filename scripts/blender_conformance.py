@@ -613,6 +613,28 @@ for blend in (0.5, 0.2, 0.85):
             {"blend": blend, "normal": NORMAL_FEED, "incoming": "INCOMING"})
 
 
+# Normal Map in Tangent Space (textures/blender/normal_map.cl): blNormalMapFrame, which
+# blNormalMap calls with the hit's Normal, Tangent, TangentSign and Backfacing, with the bake
+# plane's frame as arguments: the normal of AXIS_U x AXIS_V, the MikkTSpace tangent of its UVs
+# (dP/du = AXIS_U, normalized) and the sign +1 (its UVs are not mirrored), a front face. The
+# Color is the position (values beyond 0..1 too); Strength below, at and above 1.
+def _unit(v):
+    n = sum(c * c for c in v) ** 0.5
+    return [c / n for c in v]
+
+
+PLANE_NORMAL = _unit([AXIS_U[1] * AXIS_V[2] - AXIS_U[2] * AXIS_V[1],
+                      AXIS_U[2] * AXIS_V[0] - AXIS_U[0] * AXIS_V[2],
+                      AXIS_U[0] * AXIS_V[1] - AXIS_U[1] * AXIS_V[0]])
+PLANE_TANGENT = _unit(list(AXIS_U))
+for strength in (0.0, 0.5, 1.0, 2.0):
+    variant("normalmap-strength-%g" % strength, "ShaderNodeNormalMap", {"space": "TANGENT"},
+            {"Strength": strength}, {"Color": "P"}, "normal_map.cl",
+            [("Normal", "blNormalMapFrame", 3)],
+            {"color": "P", "strength": strength, "normal": PLANE_NORMAL,
+             "tangent": PLANE_TANGENT, "tangentSign": 1.0, "backfacing": 0.0})
+
+
 # --- Baking ---------------------------------------------------------------------------------
 
 def setup_scene(size):

@@ -40,6 +40,7 @@ from blender_nodes import (  # noqa: E402
 from blender_materials import (  # noqa: E402
     ExportError, MaterialTranslator, Problems, ProblemsFound, finite, sanitize_id)
 from blender_settings import check_render_settings  # noqa: E402
+from blender_tangents import mikk_tangents, uses_normal_map  # noqa: E402
 
 
 # --- The scene ------------------------------------------------------------------------------
@@ -384,14 +385,29 @@ class Export(LightsExport):
                 uv = np.empty(len(mesh.loops) * 2, np.float32)
                 layer.data.foreach_get("uv", uv)
                 uv = uv.reshape(-1, 2)
+            # A Normal Map node needs the UV tangents as Cycles has them (blender_tangents.py):
+            # written as vtan, one per vn (docs/scene.md "Tangents").
+            tangents = None
+            if any(uses_normal_map(s.material) for s in obj_eval.material_slots):
+                if uv is None:
+                    self.problems.refuse(
+                        "object '%s': a Normal Map node shades it, but the mesh has no UV map; "
+                        "supported: a mesh with a UV map (the Normal Map's tangents are the UV "
+                        "map's)" % obj_eval.name, "using tangents of no UV map (arbitrary)")
+                else:
+                    tangents = mikk_tangents(co, tv, uv[tl], corner_normals)
             files = []
             for slot in sorted(set(mi.tolist())):
                 pick = mi == slot
                 corners = tl[pick].reshape(-1)
                 # Each position, normal and UV once (smooth meshes share them between corners).
                 verts, vidx = np.unique(tv[pick].reshape(-1), return_inverse=True)
-                vn, nidx = np.unique(corner_normals[pick].reshape(-1, 3), axis=0,
-                                     return_inverse=True)
+                if tangents is None:
+                    vn, nidx = np.unique(corner_normals[pick].reshape(-1, 3), axis=0,
+                                         return_inverse=True)
+                else:  # each distinct (normal, tangent, sign) its own vn and vtan
+                    both = np.concatenate([corner_normals[pick], tangents[pick]], axis=2)
+                    vn, nidx = np.unique(both.reshape(-1, 7), axis=0, return_inverse=True)
                 columns = [vidx.reshape(-1) + 1]
                 if uv is not None:
                     vt, tidx = np.unique(uv[corners], axis=0, return_inverse=True)
@@ -406,7 +422,10 @@ class Export(LightsExport):
                     f.write("# %s, material slot %d (blender_export.py)\n" % (obj_eval.name,
                                                                             slot))
                     f.write("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in co[verts].tolist()))
-                    f.write("".join("vn %.7g %.7g %.7g\n" % tuple(n) for n in vn.tolist()))
+                    f.write("".join("vn %.7g %.7g %.7g\n" % tuple(n[:3]) for n in vn.tolist()))
+                    if tangents is not None:
+                        f.write("".join("vtan %.7g %.7g %.7g %d\n" % (t[3], t[4], t[5], t[6])
+                                        for t in vn.tolist()))
                     if uv is not None:
                         f.write("".join("vt %.7g %.7g\n" % tuple(t) for t in vt.tolist()))
                     f.write("".join(face % tuple(c) for c in corner))

@@ -424,6 +424,8 @@ class MaterialTranslator:
                                found[0]), "using the object's own")
         if node.bl_idname == "ShaderNodeAttribute":
             self.attribute_checks(node)
+        if node.bl_idname == "ShaderNodeNormalMap":
+            self.normal_map_checks(node)
         if node.bl_idname == "ShaderNodeTexCoord" and node.object is not None:
             self.refuse("%s: 'From' another object ('%s') is not supported"
                         % (self.node_where(node), node.object.name),
@@ -432,6 +434,26 @@ class MaterialTranslator:
     def links_from(self, socket):
         tree = socket.id_data
         return [link for link in tree.links if link.from_socket == socket and not link.is_muted]
+
+    def normal_map_checks(self, node):
+        """The Normal Map node in Tangent Space over the render UV map: the tangents the
+        exporter writes (blender_tangents.py) are that map's."""
+        if node.space != "TANGENT":
+            self.refuse("%s: Space '%s' is not supported; supported: TANGENT (texrender's "
+                        "normal map is the tangent-space one)" % (self.node_where(node),
+                                                                  node.space),
+                        "using Tangent Space")
+        if node.uv_map:
+            mesh = getattr(self.obj, "data", None)
+            layers = getattr(mesh, "uv_layers", None) or []
+            render = next((l for l in layers if l.active_render), None) or \
+                (layers.active if layers else None)
+            if render is None or node.uv_map != render.name:
+                self.refuse("%s: UV map '%s' is not supported; supported: the mesh's render UV "
+                            "map%s (texrender's meshes carry its tangents only)"
+                            % (self.node_where(node), node.uv_map,
+                               " '%s'" % render.name if render is not None else ", which it lacks"),
+                            "using the render UV map")
 
     def attribute_checks(self, node):
         """The Attribute node reads the UV map texrender exports (the render UV map, TexCoord0):
@@ -491,10 +513,16 @@ class MaterialTranslator:
         source = self.link_source(socket)
         if source is None:
             return
+        if source.node is not None and source.node.bl_idname == "ShaderNodeNormalMap":
+            # A library node (textures/blender/normal_map.cl) like any other.
+            value = self.socket_value(node, socket, "float3")
+            if value[0] == "node":
+                bsdf["normal"] = {"node": value[1]}
+            return
         if source.node is None or source.node.bl_idname != "ShaderNodeBump":
             fed = source.node or source.out.node
-            self.refuse("%s: input '%s' is fed by '%s' (%s); supported: a Bump node"
-                        % (self.node_where(node), socket.name, fed.name, fed.bl_idname),
+            self.refuse("%s: input '%s' is fed by '%s' (%s); supported: a Bump or Normal Map "
+                        "node" % (self.node_where(node), socket.name, fed.name, fed.bl_idname),
                         "using the surface's normal")
             return
         with self.inside(source.path):
@@ -546,9 +574,13 @@ class MaterialTranslator:
                 "distance": distance, "normal": {"attr": "Normal"}}
         if inner_id is not None:
             args["normal"] = {"node": inner_id}
+        elif fed is not None and fed.bl_idname == "ShaderNodeNormalMap":
+            normal = self.input(node, "Normal", "float3")
+            if isinstance(normal, dict):
+                args["normal"] = normal
         elif fed is not None:
-            self.refuse("%s: input 'Normal' is fed by '%s' (%s); supported: a Bump node"
-                        % (self.node_where(node), fed.name, fed.bl_idname),
+            self.refuse("%s: input 'Normal' is fed by '%s' (%s); supported: a Bump or Normal "
+                        "Map node" % (self.node_where(node), fed.name, fed.bl_idname),
                         "using the surface's normal")
         self.stack.pop()
         key = (self.node_key(node), "Normal")

@@ -333,6 +333,11 @@ OBJECT_INFO_OUTPUTS = {"Location": ("blObjectInfoLocation", "location"),
                        "Random": ("blObjectInfoRandom", "objectRandom")}
 NODES["ShaderNodeObjectInfo"] = dict(fn={o: fn for o, (fn, _) in OBJECT_INFO_OUTPUTS.items()},
                                      object_info=True)
+# Normal Map in Tangent Space over the render UV map's tangents (textures/blender/normal_map.cl;
+# the exporter writes the mesh's MikkTSpace tangents, blender_tangents.py); blender_materials
+# refuses the other spaces and UV maps.
+NODES["ShaderNodeNormalMap"] = dict(fn={"Normal": "blNormalMap"},
+                                    sockets={"color": "Color", "strength": "Strength"})
 # Attribute: the UV map texrender exports (TexCoord0) only; blender_materials refuses the rest.
 NODES["ShaderNodeAttribute"] = dict(fn={"Vector": "blAttributeUV", "Color": "blAttributeUV",
                                         "Fac": "blAttributeUVFac", "Alpha": "blAttributeUVAlpha"})

@@ -104,6 +104,9 @@ def main():
             fn, drop = output["fn"], set(output.get("drop", []))
             if fn.endswith("Incoming"):  # the fixture's incoming direction is ViewDir's
                 fn, drop = fn[:-len("Incoming")], drop | {"incoming"}
+            if fn == "blNormalMapFrame":  # the fixture's frame is the hit's attributes'
+                fn, drop = "blNormalMap", drop | {"normal", "tangent", "tangentSign",
+                                                  "backfacing"}
             if got["fn"] != fn:
                 print("%s: function %s, fixture %s" % (where, got["fn"], output["fn"]))
                 bad += 1
