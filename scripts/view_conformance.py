@@ -101,19 +101,36 @@ def blender_png(bpy, exr, png, case):
 
 
 def check_render(args, config):
-    """Renders args.render to render.exr, and to a PNG through AgX - Punchy at +0.5 stops:
-    the PNG must be the EXR through --from-exr, byte for byte. Returns the EXR (None: differ)."""
+    """Renders args.render to render.exr; to a PNG through AgX - Punchy at +0.5 stops given on
+    the command line; and to a PNG from a copy of the scene whose film.view says the same, the
+    config from $OCIO. Both PNGs must be the EXR through --from-exr, byte for byte. Returns the
+    EXR (None: they differ)."""
+    import json
     exr = os.path.join(args.out, "render.exr")
+    settings = {"transform": "AgX", "look": "AgX - Punchy", "exposure": 0.5}
     view = ["--view-transform", "AgX", "--look", "AgX - Punchy", "--exposure", "0.5",
             "--ocio-config", config]
     subprocess.run([args.exe, args.render, "--quiet", "-o", exr], check=True)
-    direct, converted = (os.path.join(args.out, "render-%s.png" % k) for k in ("direct", "exr"))
-    subprocess.run([args.exe, args.render, "--quiet", "-o", direct] + view, check=True)
-    subprocess.run([args.exe, "--from-exr", exr, "-o", converted] + view, check=True)
-    same = open(direct, "rb").read() == open(converted, "rb").read()
-    print("render: the PNG through AgX - Punchy +0.5 is %s" %
-          ("its EXR through --from-exr, byte for byte" if same else "NOT its EXR's PNG: FAIL"))
-    return exr if same else None
+    pngs = [os.path.join(args.out, "render-%s.png" % k) for k in ("exr", "options", "scene")]
+    subprocess.run([args.exe, "--from-exr", exr, "-o", pngs[0]] + view, check=True)
+    subprocess.run([args.exe, args.render, "--quiet", "-o", pngs[1]] + view, check=True)
+    scene = json.load(open(args.render))
+    scene.setdefault("film", {})["view"] = settings
+    base = os.path.dirname(os.path.abspath(args.render))
+    if "textures" in scene:
+        scene["textures"] = os.path.join(base, scene["textures"])
+    for mesh in scene.get("meshes", []):
+        mesh["obj"] = os.path.join(base, mesh["obj"])
+    copy = os.path.join(args.out, "scene-view.json")
+    json.dump(scene, open(copy, "w"))
+    subprocess.run([args.exe, copy, "--quiet", "-o", pngs[2]], check=True,
+                   env=dict(os.environ, OCIO=config))
+    same = [open(p, "rb").read() == open(pngs[0], "rb").read() for p in pngs[1:]]
+    for how, ok in zip(("the command line's view options", "the scene's film.view"), same):
+        print("render: the PNG through %s (AgX - Punchy, +0.5) is %s" %
+              (how, "its EXR through --from-exr, byte for byte" if ok else
+               "NOT its EXR's PNG: FAIL"))
+    return exr if all(same) else None
 
 
 def compare(a, b):

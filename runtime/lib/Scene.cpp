@@ -190,6 +190,33 @@ void parseCamera(const Reader &R, const json &J, Camera &C) {
     R.fail("/camera/up", "'up' is parallel to the view direction (or zero)");
 }
 
+/// film.view: Blender's Color Management of a .png (ViewTransform.h); names as Blender's.
+void parseView(const Reader &R, const json &J, ViewSettings &V) {
+  R.checkKeys(J, "/film/view", {"transform", "look", "exposure", "gamma"});
+  auto Quoted = [](const std::vector<std::string> &Names) {
+    std::string S;
+    for (const std::string &N : Names)
+      S += (S.empty() ? "'" : ", '") + N + "'";
+    return S;
+  };
+  if (J.contains("transform")) V.Transform = R.string(J["transform"], "/film/view/transform");
+  const auto &Views = viewTransformNames();
+  if (std::find(Views.begin(), Views.end(), V.Transform) == Views.end())
+    R.fail("/film/view/transform", "view transform '" + V.Transform + "' is not supported; "
+           "supported: " + Quoted(Views));
+  if (J.contains("look")) V.Look = R.string(J["look"], "/film/view/look");
+  const std::vector<std::string> Looks = lookNames(V.Transform);
+  if (std::find(Looks.begin(), Looks.end(), V.Look) == Looks.end())
+    R.fail("/film/view/look", "look '" + V.Look + "' is not a look of view transform '" +
+           V.Transform + "'; its looks: " + Quoted(Looks));
+  if (J.contains("exposure")) V.Exposure = R.number(J["exposure"], "/film/view/exposure");
+  if (J.contains("gamma")) V.Gamma = R.number(J["gamma"], "/film/view/gamma");
+  if (std::fabs(V.Exposure) > 32.0f)
+    R.fail("/film/view/exposure", "expected -32 to 32 stops");
+  if (!(V.Gamma > 0.0f))
+    R.fail("/film/view/gamma", "expected a number above 0");
+}
+
 void parseRender(const Reader &R, const json &J, RenderSettings &S) {
   R.checkKeys(J, "/render", {"spp", "maxDepth", "aoSamples", "aoDistance", "seed"});
   if (J.contains("spp")) S.Spp = R.integer(J["spp"], "/render/spp");
@@ -437,13 +464,15 @@ static Scene readScene(const std::string &Path) {
   if (J.contains("camera"))
     parseCamera(R, J["camera"], S.Cam);
   if (J.contains("film")) {
-    R.checkKeys(J["film"], "/film", {"width", "height"});
+    R.checkKeys(J["film"], "/film", {"width", "height", "view"});
     if (J["film"].contains("width")) S.Render.Width = R.integer(J["film"]["width"], "/film/width");
     if (J["film"].contains("height")) S.Render.Height = R.integer(J["film"]["height"], "/film/height");
     if (S.Render.Width < 1 || S.Render.Height < 1)
       R.fail("/film", "width and height must be at least 1");
     if (std::string Why = tooManyPixels(S.Render.Width, S.Render.Height); !Why.empty())
       R.fail("/film", Why);
+    if (J["film"].contains("view"))
+      parseView(R, J["film"]["view"], S.Render.View);
   }
   if (J.contains("render"))
     parseRender(R, J["render"], S.Render);

@@ -381,14 +381,15 @@ Scene loadSceneWithOptions(const Options &O) {
   return S;
 }
 
-/// The .png's view (Blender's Color Management): the command line's settings, the OCIO config
-/// from --ocio-config or $OCIO. Made before the render, so that an unknown look or a missing
-/// LUT file is an error before any work. Null for an .exr and for plain sRGB.
-std::unique_ptr<ViewTransform> makeViewTransform(const Options &O) {
+/// The .png's view (Blender's Color Management): the scene's film.view (Scene's default for
+/// --from-exr) with the command line's settings over it, the OCIO config from --ocio-config or
+/// $OCIO. Made before the render, so that a missing LUT file is an error before any work.
+/// Null for an .exr and for plain sRGB.
+std::unique_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSettings &Scene) {
   std::string Ext = fs::path(O.Output).extension().string();
   if (Ext != ".png" && Ext != ".PNG")
     return nullptr;
-  ViewSettings V;
+  ViewSettings V = Scene;
   if (O.ViewTransform) V.Transform = *O.ViewTransform;
   if (O.Look) V.Look = *O.Look;
   if (O.Exposure) V.Exposure = *O.Exposure;
@@ -428,7 +429,7 @@ int run(int Argc, char **Argv) try {
   if (O.Serve)
     execServe(O, Argv[0]);
   if (!O.FromExr.empty()) {
-    const std::unique_ptr<ViewTransform> View = makeViewTransform(O);
+    const std::unique_ptr<ViewTransform> View = makeViewTransform(O, ViewSettings());
     ImageRGBA In = loadExr(O.FromExr);
     std::vector<float> RGB(size_t(In.Width) * In.Height * 3);
     for (size_t I = 0; I < RGB.size() / 3; ++I)
@@ -449,7 +450,7 @@ int run(int Argc, char **Argv) try {
     SlowStep Step("loading the scene");
     return loadSceneWithOptions(O);
   }();
-  const std::unique_ptr<ViewTransform> View = makeViewTransform(O);
+  const std::unique_ptr<ViewTransform> View = makeViewTransform(O, S.Render.View);
   // The size of every image written: the region's, or the film's.
   const RenderSettings &G = S.Render;
   const int OutW = G.RegionWidth ? G.RegionWidth : G.Width, OutH = G.RegionWidth ? G.RegionHeight : G.Height;
