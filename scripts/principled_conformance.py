@@ -151,33 +151,46 @@ def sphere(args, tools):
     for variant in args.variants.split(","):
         blend = sphere_blend(tools.work, variant, args.depth, args.light)
         scene_json, textures = tools.export(blend, "sphere-" + variant)
-        cyc, tex = [], []
+        builds = [("", tools)]
+        if args.before:
+            builds.append(("before", Tools(os.path.abspath(args.before), tools.work)))
+        cyc, texs = [], {label: [] for label, _ in builds}
         for seed in args.seeds:
             bpy.ops.wm.open_mainfile(filepath=blend)
             cyc.append(cycles_render(bpy.context.scene, w, h, args.spp, seed,
                                      os.path.join(tools.work, "cyc-%s-%d" % (variant, seed))))
-            tex.append(tools.render(scene_json, textures,
-                                    os.path.join(tools.work, "tex-%s-%d.exr" % (variant, seed)),
-                                    args.size, args.spp, seed))
-        rel, se, ta, tb = block_compare(cyc, tex)
-        worst = np.abs(rel).max(axis=-1)
-        within = worst <= 0.01
-        mean_rel = np.mean(tex, axis=(0, 1, 2)) / np.mean(cyc, axis=(0, 1, 2)) - 1
-        r = {"blocks": int(within.size), "within1": int(within.sum()),
-             "worstPercent": 100 * float(worst.max()),
-             "meanRelPercent": (100 * mean_rel).tolist(),
-             "relPercent": (100 * rel.mean(axis=-1)).round(2).tolist(),
-             "sePercent": (100 * se.mean(axis=-1)).round(2).tolist()}
-        out[variant] = r
-        print("sphere %-7s depth %d light %s: image mean %+.2f/%+.2f/%+.2f%%, 16x16 blocks within"
-              " 1%%: %d/%d, worst %.2f%%" % (variant, args.depth, args.light, *r["meanRelPercent"],
-                                             r["within1"], r["blocks"], r["worstPercent"]))
-        print("  per block, texrender / Cycles - 1 (%, grey mean of channels; se in brackets):")
-        for i in range(rel.shape[0]):
-            print("  " + " ".join("%+5.1f(%3.1f)" % (100 * rel[i, j].mean(), 100 * se[i, j].mean())
-                                  for j in range(rel.shape[1])))
-        sys.stdout.flush()
+            for label, tl in builds:
+                texs[label].append(tl.render(
+                    scene_json, textures,
+                    os.path.join(tools.work, "tex%s-%s-%d.exr" % (label, variant, seed)),
+                    args.size, args.spp, seed))
+        for label, _ in builds:
+            key = variant + ("-" + label if label else "")
+            out[key] = sphere_table(cyc, texs[label], "%s%s" % (
+                variant, " [before: %s]" % args.before if label else ""), args)
     return out
+
+
+def sphere_table(cyc, tex, variant, args):
+    import numpy as np
+    rel, se, ta, tb = block_compare(cyc, tex)
+    worst = np.abs(rel).max(axis=-1)
+    within = worst <= 0.01
+    mean_rel = np.mean(tex, axis=(0, 1, 2)) / np.mean(cyc, axis=(0, 1, 2)) - 1
+    r = {"blocks": int(within.size), "within1": int(within.sum()),
+         "worstPercent": 100 * float(worst.max()),
+         "meanRelPercent": (100 * mean_rel).tolist(),
+         "relPercent": (100 * rel.mean(axis=-1)).round(2).tolist(),
+         "sePercent": (100 * se.mean(axis=-1)).round(2).tolist()}
+    print("sphere %-7s depth %d light %s: image mean %+.2f/%+.2f/%+.2f%%, 16x16 blocks within"
+          " 1%%: %d/%d, worst %.2f%%" % (variant, args.depth, args.light, *r["meanRelPercent"],
+                                         r["within1"], r["blocks"], r["worstPercent"]))
+    print("  per block, texrender / Cycles - 1 (%, grey mean of channels; se in brackets):")
+    for i in range(rel.shape[0]):
+        print("  " + " ".join("%+5.1f(%3.1f)" % (100 * rel[i, j].mean(), 100 * se[i, j].mean())
+                              for j in range(rel.shape[1])))
+    sys.stdout.flush()
+    return r
 
 
 # --- The table: one sphere per case on a grid, furnace and single bounce ---------------------
@@ -287,43 +300,57 @@ def table(args, tools):
     for lighting in ("furnace", "single"):
         blend, w, h, rows = grid_blend(tools.work, which, lighting)
         scene_json, textures = tools.export(blend, "grid-" + lighting)
-        cyc, tex = [], []
+        builds = [("", tools)] + [("before", Tools(os.path.abspath(args.before), tools.work))
+                                  if args.before else None]
+        builds = [b for b in builds if b]
+        cyc, tex = [], {label: [] for label, _ in builds}
         for seed in args.seeds:
             bpy.ops.wm.open_mainfile(filepath=blend)
             cyc.append(cycles_render(bpy.context.scene, w, h, args.spp, seed,
                                      os.path.join(tools.work, "cyc-%s-%d" % (lighting, seed))))
-            tex.append(tools.render(scene_json, textures,
-                                    os.path.join(tools.work, "tex-%s-%d.exr" % (lighting, seed)),
-                                    "%dx%d" % (w, h), args.spp, seed))
-        a, b = np.mean(cyc, axis=0), np.mean(tex, axis=0)
-        print("\n%s (%dx%d, %d spp x %d seeds): per ring of cos wo %s, Cycles' mean (grey) and"
-              " texrender / Cycles - 1 (worst channel)" % (
-                  lighting, w, h, args.spp, len(args.seeds),
-                  " ".join("%.2f-%.2f" % r for r in RINGS)))
-        print("%-22s %s | %8s %8s" % ("case", " ".join("%15s" % ("%.2f-%.2f" % r) for r in RINGS),
-                                      "max", "mean"))
-        res = {}
-        for k, (name, r, m, spec, base) in enumerate(which):
-            errs, cells = [], []
-            for mask in sphere_rings(k, w, h, rows):
-                ca, tb = a[mask].mean(axis=0), b[mask].mean(axis=0)
-                e = tb / np.maximum(ca, 1e-6) - 1
-                worst = e[np.argmax(np.abs(e))]
-                errs.append(float(worst))
-                cells.append("%6.4f %+6.2f%%" % (ca.mean(), 100 * worst))
-            res[name] = {"roughness": r, "metallic": m, "specular": spec, "base": base,
-                         "ringErrorsPercent": [100 * e for e in errs],
-                         "maxPercent": 100 * max(abs(e) for e in errs),
-                         "meanPercent": 100 * float(np.mean(np.abs(errs)))}
-            print("%-22s %s | %7.2f%% %7.2f%%" % (name, " ".join("%15s" % c for c in cells),
-                                                 res[name]["maxPercent"],
-                                                 res[name]["meanPercent"]))
-        allmax = max(v["maxPercent"] for v in res.values())
-        print("%s: worst ring %.2f%%, mean of the cases' mean %.2f%%" % (
-            lighting, allmax, float(np.mean([v["meanPercent"] for v in res.values()]))))
-        out[lighting] = res
-        sys.stdout.flush()
+            for label, tl in builds:
+                tex[label].append(tl.render(
+                    scene_json, textures,
+                    os.path.join(tools.work, "tex%s-%s-%d.exr" % (label, lighting, seed)),
+                    "%dx%d" % (w, h), args.spp, seed))
+        a = np.mean(cyc, axis=0)
+        for label, _ in builds:
+            out[lighting + ("-" + label if label else "")] = ring_table(
+                which, a, np.mean(tex[label], axis=0), w, h, rows,
+                "%s%s (%dx%d, %d spp x %d seeds)" % (
+                    lighting, " [%s: %s]" % (label, args.before) if label else "", w, h,
+                    args.spp, len(args.seeds)))
     return out
+
+
+def ring_table(which, a, b, w, h, rows, title):
+    import numpy as np
+    lighting = title.split()[0]
+    print("\n%s: per ring of cos wo, Cycles' mean (grey) and texrender / Cycles - 1 (worst"
+          " channel)" % title)
+    print("%-22s %s | %8s %8s" % ("case", " ".join("%15s" % ("%.2f-%.2f" % r) for r in RINGS),
+                                  "max", "mean"))
+    res = {}
+    for k, (name, r, m, spec, base) in enumerate(which):
+        errs, cells = [], []
+        for mask in sphere_rings(k, w, h, rows):
+            ca, tb = a[mask].mean(axis=0), b[mask].mean(axis=0)
+            e = tb / np.maximum(ca, 1e-6) - 1
+            worst = e[np.argmax(np.abs(e))]
+            errs.append(float(worst))
+            cells.append("%6.4f %+6.2f%%" % (ca.mean(), 100 * worst))
+        res[name] = {"roughness": r, "metallic": m, "specular": spec, "base": base,
+                     "ringErrorsPercent": [100 * e for e in errs],
+                     "maxPercent": 100 * max(abs(e) for e in errs),
+                     "meanPercent": 100 * float(np.mean(np.abs(errs)))}
+        print("%-22s %s | %7.2f%% %7.2f%%" % (name, " ".join("%15s" % c for c in cells),
+                                             res[name]["maxPercent"],
+                                             res[name]["meanPercent"]))
+    allmax = max(v["maxPercent"] for v in res.values())
+    print("%s: worst ring %.2f%%, mean of the cases' mean %.2f%%" % (
+        lighting, allmax, float(np.mean([v["meanPercent"] for v in res.values()]))))
+    sys.stdout.flush()
+    return res
 
 
 
@@ -337,7 +364,10 @@ def main():
     ap.add_argument("--variants", default="user,nobump,plain")
     ap.add_argument("--depth", type=int, default=2)
     ap.add_argument("--light", choices=("both", "sun", "sky"), default="both")
-    ap.add_argument("--cases")
+    ap.add_argument("--cases", help="table: only the cases whose names contain one of these "
+                    "(comma-separated), e.g. m0_s0.5,r1_")
+    ap.add_argument("--before", help="also texrender of this build folder (bin/, "
+                    "kernels/) against the same Cycles images")
     ap.add_argument("--json")
     args = ap.parse_args()
     tools = Tools(os.path.abspath(args.build), tempfile.mkdtemp(prefix="texcc-principled-"))
