@@ -512,7 +512,7 @@ class Export(LightsExport):
     def run(self, scene, staging, final_dir):
         self.final_dir = final_dir
         self.scene = scene
-        check_render_settings(scene, self.problems.refuse)
+        view = check_render_settings(scene, self.problems.refuse)
         self.use_render_settings(scene)
         view_layer = next((v for v in scene.view_layers if v.use), scene.view_layers[0])
         # A scene other than the context's has no depsgraph until one is asked for in its context.
@@ -521,6 +521,8 @@ class Export(LightsExport):
                 scene.frame_set(self.options.frame)
             depsgraph = self.bpy.context.evaluated_depsgraph_get()
         camera, film = self.camera(scene, depsgraph)
+        if view:
+            film["view"] = view
         lights, meshes, written = [], [], {}
         sky = self.world(scene, staging)
         if sky:
