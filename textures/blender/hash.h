@@ -51,14 +51,12 @@ uint blHash4(uint x, uint y, uint z, uint w) {
   return blHashFinal(a + w, b, c);
 }
 
-/* lookup3 of 3 words in four lanes at once: blHash3 of each lane (Perlin 3D hashes four lattice
- * corners per call, as Cycles' SSE code does). Shift counts are unsigned because the host
- * target's vector operators (GLM) take a count of the vector's own element type. */
+/* lookup3 in four lanes at once: blHash2/3/4 of each lane (Perlin hashes four lattice corners
+ * per call, as Cycles' SSE code does). Shift counts are unsigned because the host target's
+ * vector operators (GLM) take a count of the vector's own element type. */
 uint4 blRot4(uint4 x, uint k) { return (x << k) | (x >> (32U - k)); }
 
-uint4 blHash3x4(uint4 x, uint4 y, uint4 z) {
-  uint s = 0xdeadbeefU + 12U + 13U;
-  uint4 a = x + s, b = y + s, c = z + s;
+uint4 blHashFinal4(uint4 a, uint4 b, uint4 c) {
   c ^= b;
   c -= blRot4(b, 14U);
   a ^= c;
@@ -76,10 +74,43 @@ uint4 blHash3x4(uint4 x, uint4 y, uint4 z) {
   return c;
 }
 
+uint4 blHash2x4(uint4 x, uint4 y) {
+  uint s = 0xdeadbeefU + 8U + 13U;
+  return blHashFinal4(x + s, y + s, (uint4)(s));
+}
+
+uint4 blHash3x4(uint4 x, uint4 y, uint4 z) {
+  uint s = 0xdeadbeefU + 12U + 13U;
+  return blHashFinal4(x + s, y + s, z + s);
+}
+
+uint4 blHash4x4(uint4 x, uint4 y, uint4 z, uint4 w) {
+  uint s = 0xdeadbeefU + 16U + 13U;
+  uint4 a = x + s, b = y + s, c = z + s;
+  a -= c; a ^= blRot4(c, 4U); c += b;
+  b -= a; b ^= blRot4(a, 6U); a += c;
+  c -= b; c ^= blRot4(b, 8U); b += a;
+  a -= c; a ^= blRot4(c, 16U); c += b;
+  b -= a; b ^= blRot4(a, 19U); a += c;
+  c -= b; c ^= blRot4(b, 4U); b += a;
+  return blHashFinal4(a + w, b, c);
+}
+
+/* The bits of an int4 as a uint4 and back. OpenCL reinterprets (as_uint4, as_int4); the host
+ * target's prelude has no as_uint4, and its vector conversion between int and uint lanes keeps
+ * the bits (two's complement). */
+#ifdef __OPENCL_C_VERSION__
+#define BL_UINT4_BITS(v) as_uint4(v)
+#define BL_INT4_BITS(v) as_int4(v)
+#else
+#define BL_UINT4_BITS(v) uint4(v)
+#define BL_INT4_BITS(v) int4(v)
+#endif
+
 /* -v in the lanes of v whose mask lane has its top bit set, v elsewhere (exact: a sign flip).
  * OpenCL flips the sign bits with one xor; the host target, whose prelude has no as_float4,
  * selects -v. Both give the same bits. */
-#ifdef __OPENCL_VERSION__
+#ifdef __OPENCL_C_VERSION__
 #define BL_NEGATE_IF4(v, mask) as_float4(as_uint4(v) ^ ((mask) & 0x80000000U))
 #else
 #define BL_NEGATE_IF4(v, mask) select((v), -(v), (mask))
@@ -151,3 +182,57 @@ float4 blHashInt4(int x, int y, int z, int w) {
   d += b * c;
   return (float4)(blPcgToUnit(a), blPcgToUnit(b), blPcgToUnit(c), blPcgToUnit(d));
 }
+
+/* blHashInt2/3/4 in four lanes: lane l of *ha.. is component 0.. of blHashIntN of lane l's
+ * cell (Voronoi hashes a row of three cells per call). dims 2 leaves *hc and *hd alone, 3 *hd. */
+uint4 blXorShift16x4(uint4 v) { return v ^ BL_UINT4_BITS(BL_INT4_BITS(v) >> 16); }
+
+float4 blPcgToUnit4(uint4 v) {
+  return convert_float4(BL_INT4_BITS(v & 0x7FFFFFFFU)) * (1.0f / 2147483648.0f);
+}
+
+void blHashIntx4(int dims, uint4 a, uint4 b, uint4 c, uint4 d, float4 *ha, float4 *hb,
+                 float4 *hc, float4 *hd) {
+  a = a * 1664525U + 1013904223U;
+  b = b * 1664525U + 1013904223U;
+  if (dims == 2) {
+    a += b * 1664525U;
+    b += a * 1664525U;
+    a = blXorShift16x4(a);
+    b = blXorShift16x4(b);
+    a += b * 1664525U;
+    b += a * 1664525U;
+  } else if (dims == 3) {
+    c = c * 1664525U + 1013904223U;
+    a += b * c;
+    b += c * a;
+    c += a * b;
+    a = blXorShift16x4(a);
+    b = blXorShift16x4(b);
+    c = blXorShift16x4(c);
+    a += b * c;
+    b += c * a;
+    c += a * b;
+    *hc = blPcgToUnit4(c);
+  } else {
+    c = c * 1664525U + 1013904223U;
+    d = d * 1664525U + 1013904223U;
+    a += b * d;
+    b += c * a;
+    c += a * b;
+    d += b * c;
+    a = blXorShift16x4(a);
+    b = blXorShift16x4(b);
+    c = blXorShift16x4(c);
+    d = blXorShift16x4(d);
+    a += b * d;
+    b += c * a;
+    c += a * b;
+    d += b * c;
+    *hc = blPcgToUnit4(c);
+    *hd = blPcgToUnit4(d);
+  }
+  *ha = blPcgToUnit4(a);
+  *hb = blPcgToUnit4(b);
+}
+

@@ -65,29 +65,6 @@ float blGrad1(uint hash, float x) {
   return blNegateIf(g, h & 8) * x;
 }
 
-float blGrad2(uint hash, float x, float y) {
-  int h = (int)(hash & 7U);
-  float u = h < 4 ? x : y;
-  float v = 2.0f * (h < 4 ? y : x);
-  return blNegateIf(u, h & 1) + blNegateIf(v, h & 2);
-}
-
-float blGrad3(uint hash, float x, float y, float z) {
-  int h = (int)(hash & 15U);
-  float u = h < 8 ? x : y;
-  float vt = (h == 12 || h == 14) ? x : z;
-  float v = h < 4 ? y : vt;
-  return blNegateIf(u, h & 1) + blNegateIf(v, h & 2);
-}
-
-float blGrad4(uint hash, float x, float y, float z, float w) {
-  int h = (int)(hash & 31U);
-  float u = h < 24 ? x : y;
-  float v = h < 16 ? y : z;
-  float s = h < 8 ? z : w;
-  return blNegateIf(u, h & 1) + blNegateIf(v, h & 2) + blNegateIf(s, h & 4);
-}
-
 float blMix(float a, float b, float t) { return a + t * (b - a); }
 
 float blPerlin1(float x) {
@@ -97,22 +74,37 @@ float blPerlin1(float x) {
                blFade(fx));
 }
 
-float blPerlin2(float x, float y) {
-  int X, Y;
-  float fx = blFloorFrac(x, &X), fy = blFloorFrac(y, &Y);
-  float u = blFade(fx), v = blFade(fy);
-  uint X0 = (uint)X, X1 = (uint)(X + 1), Y0 = (uint)Y, Y1 = (uint)(Y + 1);
-  float v0 = blGrad2(blHash2(X0, Y0), fx, fy);
-  float v1 = blGrad2(blHash2(X1, Y0), fx - 1.0f, fy);
-  float v2 = blGrad2(blHash2(X0, Y1), fx, fy - 1.0f);
-  float v3 = blGrad2(blHash2(X1, Y1), fx - 1.0f, fy - 1.0f);
-  return blMix(blMix(v0, v1, u), blMix(v2, v3, u), v);
+/* The gradients of Cycles' Perlin noise, of four corners at once: corner l's hash h (lane l of
+ * the hash) picks two (2D, 3D) or three (4D) of its offsets x, y, z, w and their signs.
+ * select and BL_NEGATE_IF4 take the top bit of each mask lane, so each condition on h's low
+ * bits is shifted there.
+ * 2D: h & 4 ? y : x, plus twice h & 4 ? x : y; h & 1 negates the first, h & 2 the second. */
+float4 blGrad2x4(uint4 h, float4 x, float4 y) {
+  float4 u = select(x, y, h << 29U);
+  float4 v = 2.0f * select(y, x, h << 29U);
+  return BL_NEGATE_IF4(u, h << 31U) + BL_NEGATE_IF4(v, h << 30U);
 }
 
-/* blGrad3 in four lanes. select and BL_NEGATE_IF4 take the top bit of each mask lane, so each
- * condition on the hash's low 4 bits is moved there: bit 3 (h >= 8: y, else x); bit 3 or 2
- * (h >= 4: vt, else y); (h & 13) ^ 12 minus 1, which wraps to all ones for h = 12 and 14 only
- * (vt = x, else z); bits 0 and 1 (negate u, v). */
+/* The 4 corners of one 2D lattice cell in lanes (x, y) = (0, 0), (1, 0), (0, 1), (1, 1), blended
+ * over x, then y, in the scalar order (blMix(blMix(c00, c10, u), blMix(c01, c11, u), v)). */
+float blPerlin2(float x, float y) {
+  float2 p = (float2)(x, y);
+  float2 f = floor(p);
+  int2 I = convert_int2(f);
+  float2 fr = p - f;
+  float2 uv = fr * fr * fr * (fr * (fr * 6.0f - 15.0f) + 10.0f);
+  uint X0 = (uint)I.x, Y0 = (uint)I.y;
+  uint4 h = blHash2x4((uint4)(X0, X0 + 1U, X0, X0 + 1U), (uint4)(Y0, Y0, Y0 + 1U, Y0 + 1U));
+  float4 g = blGrad2x4(h, (float4)(fr.x, fr.x - 1.0f, fr.x, fr.x - 1.0f),
+                       (float4)(fr.y, fr.y, fr.y - 1.0f, fr.y - 1.0f));
+  float2 lo = (float2)(g.x, g.z), hi = (float2)(g.y, g.w);
+  float2 ab = lo + uv.x * (hi - lo);
+  return ab.x + uv.y * (ab.y - ab.x);
+}
+
+/* 3D: (h & 15) < 8 ? x : y (bit 3), plus (h & 15) < 4 ? y : (h & 15 is 12 or 14 ? x : z)
+ * (bit 3 or 2; (h & 13) ^ 12 minus 1 wraps to all ones for 12 and 14 only); h & 1 negates the
+ * first, h & 2 the second. */
 float4 blGrad3x4(uint4 h, float4 x, float4 y, float4 z) {
   float4 u = select(x, y, h << 28U);
   float4 vt = select(z, x, ((h & 13U) ^ 12U) - 1U);
@@ -142,31 +134,42 @@ float blPerlin3(float x, float y, float z) {
   return ab.x + uvw.z * (ab.y - ab.x);
 }
 
-/* One w-slice (W given) of the 4D lattice cell, blended over x, y, z. */
-float blPerlin4Slice(int X, int Y, int Z, uint W, float fx, float fy, float fz, float fw,
-                     float u, float v, float t) {
-  uint X0 = (uint)X, X1 = (uint)(X + 1), Y0 = (uint)Y, Y1 = (uint)(Y + 1);
-  uint Z0 = (uint)Z, Z1 = (uint)(Z + 1);
-  float gx = fx - 1.0f, gy = fy - 1.0f, gz = fz - 1.0f;
-  float a = blMix(blMix(blGrad4(blHash4(X0, Y0, Z0, W), fx, fy, fz, fw),
-                        blGrad4(blHash4(X1, Y0, Z0, W), gx, fy, fz, fw), u),
-                  blMix(blGrad4(blHash4(X0, Y1, Z0, W), fx, gy, fz, fw),
-                        blGrad4(blHash4(X1, Y1, Z0, W), gx, gy, fz, fw), u), v);
-  float b = blMix(blMix(blGrad4(blHash4(X0, Y0, Z1, W), fx, fy, gz, fw),
-                        blGrad4(blHash4(X1, Y0, Z1, W), gx, fy, gz, fw), u),
-                  blMix(blGrad4(blHash4(X0, Y1, Z1, W), fx, gy, gz, fw),
-                        blGrad4(blHash4(X1, Y1, Z1, W), gx, gy, gz, fw), u), v);
-  return blMix(a, b, t);
+/* 4D: (h & 31) < 24 ? x : y (bits 4 and 3), plus (h & 31) < 16 ? y : z (bit 4), plus
+ * (h & 31) < 8 ? z : w (bit 4 or 3); h & 1, 2, 4 negate them. */
+float4 blGrad4x4(uint4 h, float4 x, float4 y, float4 z, float4 w) {
+  float4 u = select(x, y, (h & (h << 1U)) << 27U);
+  float4 v = select(y, z, h << 27U);
+  float4 s = select(z, w, (h | (h << 1U)) << 27U);
+  return BL_NEGATE_IF4(u, h << 31U) + BL_NEGATE_IF4(v, h << 30U) + BL_NEGATE_IF4(s, h << 29U);
+}
+
+/* One w-slice (W given, fw its fraction) of the 4D lattice cell: lanes and blends as in
+ * blPerlin3. */
+float blPerlin4Slice(uint X0, uint4 Yl, uint4 Zl, uint W, float4 fr, float4 fy, float4 fz,
+                     float fw, float4 uvts) {
+  float4 g0 = blGrad4x4(blHash4x4((uint4)(X0), Yl, Zl, (uint4)(W)), (float4)(fr.x), fy, fz,
+                        (float4)(fw));
+  float4 g1 = blGrad4x4(blHash4x4((uint4)(X0 + 1U), Yl, Zl, (uint4)(W)), (float4)(fr.x - 1.0f),
+                        fy, fz, (float4)(fw));
+  float4 m = g0 + uvts.x * (g1 - g0);
+  float2 lo = (float2)(m.x, m.z), hi = (float2)(m.y, m.w);
+  float2 ab = lo + uvts.y * (hi - lo);
+  return ab.x + uvts.z * (ab.y - ab.x);
 }
 
 float blPerlin4(float x, float y, float z, float w) {
-  int X, Y, Z, W;
-  float fx = blFloorFrac(x, &X), fy = blFloorFrac(y, &Y), fz = blFloorFrac(z, &Z);
-  float fw = blFloorFrac(w, &W);
-  float u = blFade(fx), v = blFade(fy), t = blFade(fz), s = blFade(fw);
-  float a = blPerlin4Slice(X, Y, Z, (uint)W, fx, fy, fz, fw, u, v, t);
-  float b = blPerlin4Slice(X, Y, Z, (uint)(W + 1), fx, fy, fz, fw - 1.0f, u, v, t);
-  return blMix(a, b, s);
+  float4 p = (float4)(x, y, z, w);
+  float4 f = floor(p);
+  int4 I = convert_int4(f);
+  float4 fr = p - f;
+  float4 uvts = fr * fr * fr * (fr * (fr * 6.0f - 15.0f) + 10.0f);
+  uint Y0 = (uint)I.y, Z0 = (uint)I.z, W0 = (uint)I.w;
+  uint4 Yl = (uint4)(Y0, Y0 + 1U, Y0, Y0 + 1U), Zl = (uint4)(Z0, Z0, Z0 + 1U, Z0 + 1U);
+  float4 fy = (float4)(fr.y, fr.y - 1.0f, fr.y, fr.y - 1.0f);
+  float4 fz = (float4)(fr.z, fr.z, fr.z - 1.0f, fr.z - 1.0f);
+  float a = blPerlin4Slice((uint)I.x, Yl, Zl, W0, fr, fy, fz, fr.w, uvts);
+  float b = blPerlin4Slice((uint)I.x, Yl, Zl, W0 + 1U, fr, fy, fz, fr.w - 1.0f, uvts);
+  return a + uvts.w * (b - a);
 }
 
 /* Signed noise of dimension dims (1..4; 1D uses p.w) at p: wrapped every 100000 as Blender
