@@ -78,7 +78,7 @@ def read_png(bpy, path):
     return np.rint(values.reshape(h, w, 4)[::-1, :, :3] * 255).astype(np.int32)
 
 
-def blender_png(bpy, exr, png, case):
+def blender_png(bpy, exr, png, case, dither=0.0):
     view, look, exposure, gamma = case
     scene = bpy.context.scene
     vs = scene.view_settings
@@ -89,7 +89,7 @@ def blender_png(bpy, exr, png, case):
     vs.gamma = gamma
     vs.use_curve_mapping = False
     vs.use_white_balance = False
-    scene.render.dither_intensity = 0.0
+    scene.render.dither_intensity = dither
     settings = scene.render.image_settings
     settings.file_format = "PNG"
     settings.color_mode = "RGB"
@@ -149,6 +149,10 @@ def main():
                     "byte for byte its EXR through --from-exr")
     ap.add_argument("--all", action="store_true", help="every view and look (else a quick set)")
     ap.add_argument("--min-within", type=float, default=0.99)
+    ap.add_argument("--dither", type=float, default=0.0,
+                    help="Blender's Post Processing > Dither for its PNGs (default 0, off)")
+    ap.add_argument("--baseline", action="store_true",
+                    help="also compare Blender's PNG with texrender's plain sRGB PNG (no view)")
     args = ap.parse_args()
     import bpy  # after argparse: --help needs no Blender
     config = os.path.join(bpy.utils.system_resource("DATAFILES"), "colormanagement", "config.ocio")
@@ -170,7 +174,7 @@ def main():
             subprocess.run([args.exe, "--from-exr", exr, "-o", ours, "--view-transform", view,
                             "--look", look, "--exposure", repr(exposure), "--gamma", repr(gamma),
                             "--ocio-config", config], check=True)
-            blender_png(bpy, os.path.abspath(exr), os.path.abspath(theirs), case)
+            blender_png(bpy, os.path.abspath(exr), os.path.abspath(theirs), case, args.dither)
             result = compare(read_png(bpy, ours), read_png(bpy, theirs))
             good = all(within >= args.min_within for within, _ in result)
             ok &= good
@@ -179,6 +183,13 @@ def main():
                   "B %.5f  max %d/%d/%d  identical %.4f  %s"
                   % (name, view, look, exposure, gamma, *[w for w, _ in result],
                      *[m for _, m in result], same, "ok" if good else "FAIL"))
+            if args.baseline:
+                plain = os.path.join(args.out, "%s-plain.png" % name)
+                if not os.path.exists(plain):
+                    subprocess.run([args.exe, "--from-exr", exr, "-o", plain], check=True)
+                old = compare(read_png(bpy, plain), read_png(bpy, theirs))
+                print("%-10s   plain sRGB PNG (texrender before): within 1/255 R %.5f G %.5f B %.5f"
+                      "  max %d/%d/%d" % (name, *[w for w, _ in old], *[m for _, m in old]))
     return 0 if ok else 1
 
 
