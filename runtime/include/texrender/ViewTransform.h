@@ -3,8 +3,8 @@
 
 // The picture Blender shows: linear scene colour through Blender's Color Management (view
 // transform, look, exposure, gamma; display sRGB) to the display values an 8-bit PNG stores
-// (docs/runtime.md, "View transforms"). Standard is computed here; AgX and Filmic run through
-// OpenColorIO with the LUT files of the user's Blender, read when the transform is made.
+// (docs/cli.md, "texrender view transforms"). Standard is computed here; AgX and Filmic run
+// through OpenColorIO with the LUT files of the user's Blender, read when the transform is made.
 
 #include <memory>
 #include <string>
