@@ -112,12 +112,90 @@ float blSmoothstep01(float x) {
   return (3.0f - 2.0f * x) * (x * x);
 }
 
+/* The metric (0 Euclidean, 1 Manhattan, 2 Chebychev) of the differences (x, y, z, w) in four
+ * lanes at once, over the first dims (2..4) components: blVoronoiMetric's arithmetic, per lane. */
+float4 blVoronoiMetric4(float4 x, float4 y, float4 z, float4 w, int dims, int metric) {
+  if (metric == 1) {
+    float4 s = fabs(x) + fabs(y);
+    if (dims >= 3)
+      s += fabs(z);
+    return dims == 4 ? s + fabs(w) : s;
+  }
+  if (metric == 2) {
+    float4 s = fmax(fabs(x), fabs(y));
+    if (dims >= 3)
+      s = fmax(s, fabs(z));
+    return dims == 4 ? fmax(s, fabs(w)) : s;
+  }
+  float4 s = x * x + y * y;
+  if (dims >= 3)
+    s += z * z;
+  return sqrt(dims == 4 ? s + w * w : s);
+}
+
+/* One candidate of F1 / F2 in the scalar loop's order: d1 and d2 the two smallest distances so
+ * far, o1 and o2 their cells' offsets; v1 and v2 whether p1 and p2 of the scalar loop would
+ * hold a point yet (it starts them at 0 and copies p1 into p2). */
+void blVoronoiKeep(float d, float4 off, float *d1, float *d2, float4 *o1, float4 *o2, int *v1,
+                   int *v2) {
+  if (d < *d1) {
+    *d2 = *d1;
+    *o2 = *o1;
+    *v2 = *v1;
+    *d1 = d;
+    *o1 = off;
+    *v1 = 1;
+  } else if (d < *d2) {
+    *d2 = d;
+    *o2 = off;
+    *v2 = 1;
+  }
+}
+
+/* F1 (feature 0) or F2 (1) of one octave in 2D-4D with metric 0-2, as blVoronoiOctave's loop
+ * computes it, a row of three cells (i = -1, 0, 1; a fourth lane is computed and unused) at a
+ * time: the row's PCG hashes, points and distances on vector types, then the three candidates
+ * in the loop's order. The chosen cells' points are computed again after the loop, with the
+ * same arithmetic, so every value is the scalar loop's. */
+float blVoronoiOctaveRows(float4 cell, float4 rel, int dims, int feature, int metric,
+                          float randomness, float3 *color, float4 *pos) {
+  int kreach = dims <= 2 ? 0 : 1, ureach = dims == 4 ? 1 : 0;
+  float4 lane = (float4)(-1.0f, 0.0f, 1.0f, 2.0f);
+  uint4 cx = BL_UINT4_BITS(convert_int4(cell.x + lane));
+  float d1 = 3.402823466e+38f, d2 = 3.402823466e+38f;
+  float4 o1 = (float4)(0.0f), o2 = (float4)(0.0f);
+  int v1 = 0, v2 = 0;
+  float4 hx, hy, hz = (float4)(0.0f), hw = (float4)(0.0f);
+  for (int u = -ureach; u <= ureach; u++)
+    for (int k = -kreach; k <= kreach; k++)
+      for (int j = -1; j <= 1; j++) {
+        float fj = (float)j, fk = (float)k, fu = (float)u;
+        blHashIntx4(dims, cx, (uint4)((uint)(int)(cell.y + fj)), (uint4)((uint)(int)(cell.z + fk)),
+                    (uint4)((uint)(int)(cell.w + fu)), &hx, &hy, &hz, &hw);
+        float4 d = blVoronoiMetric4((lane + hx * randomness) - rel.x,
+                                    (fj + hy * randomness) - rel.y,
+                                    (fk + hz * randomness) - rel.z,
+                                    (fu + hw * randomness) - rel.w, dims, metric);
+        blVoronoiKeep(d.x, (float4)(-1.0f, fj, fk, fu), &d1, &d2, &o1, &o2, &v1, &v2);
+        blVoronoiKeep(d.y, (float4)(0.0f, fj, fk, fu), &d1, &d2, &o1, &o2, &v1, &v2);
+        blVoronoiKeep(d.z, (float4)(1.0f, fj, fk, fu), &d1, &d2, &o1, &o2, &v1, &v2);
+      }
+  float4 o = feature == 1 ? o2 : o1;
+  int v = feature == 1 ? v2 : v1;
+  float4 p = v ? o + blVoronoiCellOffset(cell + o, dims) * randomness : (float4)(0.0f);
+  *color = blVoronoiCellColor(cell + o, dims);
+  *pos = p + cell;
+  return feature == 1 ? d2 : d1;
+}
+
 /* One octave of F1 (feature 0), F2 (1) or Smooth F1 (2, smoothness already halved and > 0):
  * distance in .w of the result, colour in *color, position (in cells) in *pos. */
 float blVoronoiOctave(float4 coord, int dims, int feature, int metric, float exponent,
                       float randomness, float smoothness, float3 *color, float4 *pos) {
   float4 cell = floor(coord);
   float4 rel = coord - cell;
+  if (dims >= 2 && feature != 2 && metric != 3)
+    return blVoronoiOctaveRows(cell, rel, dims, feature, metric, randomness, color, pos);
   int reach = feature == 2 ? 2 : 1;
   int jreach = dims == 1 ? 0 : reach, kreach = dims <= 2 ? 0 : reach;
   int ureach = dims == 4 ? reach : 0;
