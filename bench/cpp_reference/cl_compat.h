@@ -71,6 +71,13 @@ CLC_VEC(float4, 4)
 OVL float3 convert_float3(uint3 v) { return __builtin_convertvector(v, float3); }
 OVL float3 convert_float3(int3 v) { return __builtin_convertvector(v, float3); }
 OVL int3 convert_int3(float3 v) { return __builtin_convertvector(v, int3); }
+OVL int2 convert_int2(float2 v) { return __builtin_convertvector(v, int2); }
+OVL int4 convert_int4(float4 v) { return __builtin_convertvector(v, int4); }
+OVL float4 convert_float4(int4 v) { return __builtin_convertvector(v, float4); }
+
+/* OpenCL's select on vectors: b in the lanes whose mask has its top bit set, a elsewhere (the
+ * Blender library's Perlin and Voronoi code on uint4 masks). */
+OVL float4 select(float4 a, float4 b, uint4 c) { return as_int4(c) < 0 ? b : a; }
 
 
 /* What the kernel of proctex.cl calls besides the math: one work-item at a time, on one thread
