@@ -415,6 +415,9 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     s.ns = rt_valid_reflection_normal(s.ng, wo, s.ns);
   /* A principled leaf's GGX lobes lift theirs the same way; its diffuse base keeps s.ns. */
   pr.nSpec = leaf.type == RT_BSDF_PRINCIPLED ? rt_valid_reflection_normal(s.ng, wo, s.ns) : s.ns;
+  RtPrincipledAtWo prw;
+  if (leaf.type == RT_BSDF_PRINCIPLED)
+    prw = rt_principled_at_wo(pr, wo);
   int canExtend = prm.maxDepth < 0 || p.depth + 1 <= prm.maxDepth;
   uint sunShare = canExtend ? rt_sun_share(lights, prm, s.ns) : 0u;
 
@@ -431,7 +434,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     if (lp > 0.0f && dot(wi, s.ng) > 0.0f) {
       float bp;
       float3 f = leaf.type == RT_BSDF_PRINCIPLED
-                     ? rt_principled_eval(pr, s.ns, wo, wi, &bp)
+                     ? rt_principled_eval(pr, prw, s.ns, wo, wi, &bp)
                      : rt_bsdf_eval(leaf.type, color, param, s.ns, wo, wi, &bp);
       /* rt_principled_eval's f includes its lobes' cosines (to their own normals). */
       float cosI = leaf.type == RT_BSDF_PRINCIPLED ? 1.0f : dot(wi, s.ns);
@@ -470,7 +473,7 @@ __kernel void shade(__global const RtTri *tris, __global const RtTriAttr *triAtt
     float3 wgt = (float3)(0.0f);
     if (leaf.type == RT_BSDF_PRINCIPLED) {
       delta = 0;
-      wgt = rt_principled_sample(pr, s.ns, wo, u1, u2, &wi, &pdf);
+      wgt = rt_principled_sample(pr, prw, s.ns, wo, u1, u2, &wi, &pdf);
     } else {
       wgt = rt_bsdf_sample(leaf.type, color, param, s.ns, wo, u1, u2, &wi, &pdf, &delta);
       if (bumped && leaf.type == RT_BSDF_DIFFUSE)

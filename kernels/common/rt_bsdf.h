@@ -261,7 +261,8 @@ static inline float rt_fresnel_dielectric(float c, float eta) {
 }
 
 /* What principled needs at wo: the lobes' multiple-scattering scales, the dielectric layer's
- * IOR and the base's weight (what the layer does not take). */
+ * IOR, the base's weight (what the layer does not take) and the lobe choice; shade.cl makes it
+ * once per hit for both next-event estimation and the next direction. */
 typedef struct RtPrincipledAtWo {
   float eta;      /* of the dielectric layer; 1: no layer */
   float f0Real;   /* ((eta - 1) / (eta + 1))^2 */
@@ -269,7 +270,17 @@ typedef struct RtPrincipledAtWo {
   float3 scaleM;  /* the metal's */
   float albedoD;  /* the dielectric layer's estimated albedo */
   float diffuseW; /* (1 - metallic) x (1 - albedoD) */
+  float pd;       /* the probability of sampling the diffuse base */
 } RtPrincipledAtWo;
+
+/* The probability of sampling the diffuse base at wo (the rest: the GGX lobes), by the lobes'
+ * estimated albedos. */
+static inline float rt_principled_pdiffuse(RtPrincipled P, RtPrincipledAtWo w, float3 wo) {
+  float3 fm = rt_schlick(P.base, dot(wo, P.nSpec));
+  float wd = w.diffuseW * (P.base.x + P.base.y + P.base.z) / 3.0f;
+  float ws = (1.0f - P.metallic) * w.albedoD + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
+  return wd + ws > 0.0f ? wd / (wd + ws) : 0.5f;
+}
 
 static inline RtPrincipledAtWo rt_principled_at_wo(RtPrincipled P, float3 wo) {
   RtPrincipledAtWo w;
@@ -280,7 +291,8 @@ static inline RtPrincipledAtWo rt_principled_at_wo(RtPrincipled P, float3 wo) {
   w.f0Real = sf0 * sf0;
   w.scaleD = 1.0f;
   w.albedoD = 0.0f;
-  if (w.eta > 1.0f) {
+  w.scaleM = (float3)(1.0f);
+  if (w.eta > 1.0f && P.metallic < 1.0f) {
     /* The mean Fresnel over the hemisphere (Cycles' fit of a dielectric's, rescaled as the
      * Fresnel is). */
     float fssReal = (w.eta - 1.0f) / (4.08567f + 1.00071f * w.eta);
@@ -290,21 +302,18 @@ static inline RtPrincipledAtWo rt_principled_at_wo(RtPrincipled P, float3 wo) {
     float s = rt_ggx_lookup3(rt_ggx_s_ior, clamp(P.roughness, 0.0f, 1.0f), cosO, z, 16);
     w.albedoD = w.scaleD / (1.0f + g.missing) * mix(P.f0, 1.0f, s);
   }
-  w.scaleM = rt_ggx_ms_scale(g, mix(P.base, (float3)(1.0f), 1.0f / 21.0f));
+  if (P.metallic > 0.0f)
+    w.scaleM = rt_ggx_ms_scale(g, mix(P.base, (float3)(1.0f), 1.0f / 21.0f));
   w.diffuseW = (1.0f - P.metallic) * clamp(1.0f - w.albedoD, 0.0f, 1.0f);
+  w.pd = rt_principled_pdiffuse(P, w, wo);
   return w;
 }
 
-/* The probability of sampling the diffuse base at wo (the rest: the GGX lobes). */
-static inline float rt_principled_pdiffuse(RtPrincipled P, RtPrincipledAtWo w, float3 wo) {
-  float3 fm = rt_schlick(P.base, dot(wo, P.nSpec));
-  float wd = w.diffuseW * (P.base.x + P.base.y + P.base.z) / 3.0f;
-  float ws = (1.0f - P.metallic) * w.albedoD + P.metallic * (fm.x + fm.y + fm.z) / 3.0f;
-  return wd + ws > 0.0f ? wd / (wd + ws) : 0.5f;
-}
-
-static inline float3 rt_principled_eval_at(RtPrincipled P, RtPrincipledAtWo w, float pd,
-                                           float3 n, float3 wo, float3 wi, float *pdf) {
+/* f x cos: each lobe's cosine to its own normal (the diffuse base's n, the GGX lobes'
+ * nSpec), and the pdf of sampling wi; w = rt_principled_at_wo(P, wo). */
+static inline float3 rt_principled_eval(RtPrincipled P, RtPrincipledAtWo w, float3 n, float3 wo,
+                                        float3 wi, float *pdf) {
+  const float pd = w.pd;
   float cosI = dot(wi, n);
   float3 f = (float3)(0.0f);
   float diffPdf = 0.0f;
@@ -319,30 +328,22 @@ static inline float3 rt_principled_eval_at(RtPrincipled P, RtPrincipledAtWo w, f
   float dg = rt_ggx_lobe(P.nSpec, wo, wi, a * a, &specPdf, &cosD);
   if (dg > 0.0f) {
     float fd = 0.0f;
-    if (w.eta > 1.0f) {
+    if (w.albedoD > 0.0f) { /* a dielectric layer (metallic < 1, specular > 0) */
       float s = (rt_fresnel_dielectric(cosD, w.eta) - w.f0Real) / (1.0f - w.f0Real);
       fd = mix(P.f0, 1.0f, clamp(s, 0.0f, 1.0f)) * w.scaleD;
     }
-    float3 fm = rt_schlick(P.base, cosD) * w.scaleM;
+    float3 fm = P.metallic > 0.0f ? rt_schlick(P.base, cosD) * w.scaleM : (float3)(0.0f);
     f += ((1.0f - P.metallic) * fd + P.metallic * fm) * (dg * dot(wi, P.nSpec));
   }
   *pdf = pd * diffPdf + (1.0f - pd) * specPdf;
   return f;
 }
 
-/* f x cos: each lobe's cosine to its own normal (the diffuse base's n, the GGX lobes'
- * nSpec), and the pdf of sampling wi. */
-static inline float3 rt_principled_eval(RtPrincipled P, float3 n, float3 wo, float3 wi,
-                                        float *pdf) {
-  RtPrincipledAtWo w = rt_principled_at_wo(P, wo);
-  return rt_principled_eval_at(P, w, rt_principled_pdiffuse(P, w, wo), n, wo, wi, pdf);
-}
-
-static inline float3 rt_principled_sample(RtPrincipled P, float3 n, float3 wo, float u1,
-                                          float u2, float3 *wi, float *pdf) {
+/* Samples wi; returns (f x cos) / pdf (0 when invalid). */
+static inline float3 rt_principled_sample(RtPrincipled P, RtPrincipledAtWo w, float3 n, float3 wo,
+                                          float u1, float u2, float3 *wi, float *pdf) {
   *pdf = 0.0f;
-  RtPrincipledAtWo w = rt_principled_at_wo(P, wo);
-  float pd = rt_principled_pdiffuse(P, w, wo);
+  const float pd = w.pd;
   if (u1 < pd) {
     u1 = u1 / pd;
     *wi = rt_to_world(rt_sample_cosine(u1, u2), n);
@@ -351,7 +352,7 @@ static inline float3 rt_principled_sample(RtPrincipled P, float3 n, float3 wo, f
     float a = rt_ggx_alpha(P.roughness);
     *wi = rt_ggx_sample_dir(P.nSpec, wo, a * a, u1, u2);
   }
-  float3 f = rt_principled_eval_at(P, w, pd, n, wo, *wi, pdf);
+  float3 f = rt_principled_eval(P, w, n, wo, *wi, pdf);
   if (*pdf <= 0.0f)
     return (float3)(0.0f);
   return f / *pdf;
