@@ -10,8 +10,8 @@
 Under a uniform sky of radiance 1 a convex object's pixel shows its directional albedo at
 the view direction. So every material must be <= 1 (energy conservation), a white one ~1 at
 every metallic and roughness (a white metal's Fresnel is 1 and the multiple-scattering
-compensation gives back what single-scattering GGX loses; a white dielectric's base gets what
-its specular layer does not reflect: within 1.5%, 1% for a smooth metal), and a
+compensation gives back what single-scattering GGX loses; a white dielectric's base gets 1 - its
+specular layer's estimated albedo, as in Cycles: within 1.5%, 1% for a smooth metal), and a
 principled dielectric with specular 0 is a Lambertian base: exactly its base color.
 """
 import os
@@ -27,8 +27,8 @@ for m in (0.0, 0.5, 1.0):
         name = "m%g_r%g" % (m, r)
         # white keeps its energy at every roughness: the metal by the multiple-scattering
         # compensation (single-scattering GGX alone returns 0.31 at roughness 1), the
-        # dielectric by giving the base exactly what the specular layer does not reflect
-        # (1 - F(cos wo) instead returned 0.971 at roughness 1)
+        # dielectric by giving the base 1 - the specular layer's estimated albedo (Cycles'
+        # layering; 1 - F(cos wo) instead returned 0.971 at roughness 1)
         MATERIALS[name] = ({"baseColor": [1, 1, 1], "metallic": m, "roughness": r},
                            ("near", 1.0, 0.015))
 MATERIALS["spec1_r0.2"] = ({"baseColor": [1, 1, 1], "metallic": 0.0, "roughness": 0.2,
