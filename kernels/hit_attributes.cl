@@ -46,15 +46,24 @@ __kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAtt
   if (attrMask & ((1u << TEXCC_ATTR_TANGENT) | (1u << TEXCC_ATTR_TANGENTSIGN))) {
     /* The UV tangent: the corners' vtan interpolated as Cycles interpolates its MikkTSpace
      * tangent attribute (barycentric, not normalized), with the interpolated bitangent sign;
-     * without vtan (or where it vanishes), dP/du of the triangle's UVs and the sign of their
-     * orientation. Then made orthogonal to the shading normal and normalized (Cycles'
-     * Geometry Tangent); any orthogonal vector when all else is degenerate. */
+     * without vtan (or where it vanishes), dP/du of the triangle's UVs made orthogonal to the
+     * shading normal and normalized, and the sign of the UVs' orientation; any orthogonal
+     * vector when all else is degenerate. */
     __global const RtTriAttr *ta = &triAttrs[h.tri];
     const float b0 = 1.0f - h.u - h.v;
     float3 t = b0 * ta->t0.xyz + h.u * ta->t1.xyz + h.v * ta->t2.xyz;
     float sgn = b0 * ta->t0.w + h.u * ta->t1.w + h.v * ta->t2.w;
     /* The shading normal on the side of the winding (s.ns faces the ray). */
     const float3 nWound = s.front ? s.ns : -s.ns;
+    if (ta->t0.w != 0.0f && dot(t, t) >= 1e-24f) {
+      /* Cycles' Normal Map combines the tangent and the normal as interpolated, neither
+       * normalized: both divided by the normal's length (Tangent and TangentSign in the units
+       * of the unit Normal), its frame stays Cycles' exactly. */
+      const float len = ta->n0.w > 0.0f ? length(b0 * ta->n0.xyz + h.u * ta->n1.xyz +
+                                                 h.v * ta->n2.xyz) : 1.0f;
+      if (len > 0.0f)
+        a.tangent = (float4)(t / len, sgn * len);
+    }
     if (ta->t0.w == 0.0f || dot(t, t) < 1e-24f) {
       float2 duv1 = ta->uv01.zw - ta->uv01.xy, duv2 = ta->uv2.xy - ta->uv01.xy;
       float det = duv1.x * duv2.y - duv1.y * duv2.x;
@@ -67,12 +76,14 @@ __kernel void hit_attributes(__global const RtTri *tris, __global const RtTriAtt
         sgn = dot(cross(nWound, t), dpdv) < 0.0f ? -1.0f : 1.0f;
       }
     }
-    t -= dot(t, s.ns) * s.ns;
-    if (length(t) < 1e-12f) {
-      float3 b;
-      rt_frame(s.ns, &t, &b);
+    if (a.tangent.w == 0.0f) {
+      t -= dot(t, s.ns) * s.ns;
+      if (length(t) < 1e-12f) {
+        float3 b;
+        rt_frame(s.ns, &t, &b);
+      }
+      a.tangent = (float4)(normalize(t), sgn);
     }
-    a.tangent = (float4)(normalize(t), sgn);
   }
   if (attrMask & (1u << TEXCC_ATTR_BACKFACING))
     a.uvAO.w = s.front ? 0.0f : 1.0f;

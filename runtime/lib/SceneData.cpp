@@ -187,11 +187,16 @@ void gatherMeshes(const Scene &S, const Layout &L, SceneData &D, GatheredMesh &G
                                float(Inv[0][1] * N[0] + Inv[1][1] * N[1] + Inv[2][1] * N[2]),
                                float(Inv[0][2] * N[0] + Inv[1][2] * N[1] + Inv[2][2] * N[2])}));
       G.UV.push_back(TM.UVs[K]);
-      // A tangent lies in the surface: it transforms as the positions' differences do.
+      // A tangent lies in the surface: it turns as the positions' differences do, and keeps
+      // its length, as the normals keep theirs (Cycles combines them in object space).
       Vec4 T = TM.Tangents.empty() ? Vec4{0, 0, 0, 0} : TM.Tangents[K];
       const std::array<float, 16> &X = Mi.Transform;
-      G.T.push_back({X[0] * T[0] + X[1] * T[1] + X[2] * T[2], X[4] * T[0] + X[5] * T[1] + X[6] * T[2],
-                     X[8] * T[0] + X[9] * T[1] + X[10] * T[2], T[3]});
+      Vec3 TW = {X[0] * T[0] + X[1] * T[1] + X[2] * T[2], X[4] * T[0] + X[5] * T[1] + X[6] * T[2],
+                X[8] * T[0] + X[9] * T[1] + X[10] * T[2]};
+      const float From = std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2]),
+                  To = std::sqrt(TW[0] * TW[0] + TW[1] * TW[1] + TW[2] * TW[2]);
+      const float Keep = To > 0 ? From / To : 0.0f;
+      G.T.push_back({TW[0] * Keep, TW[1] * Keep, TW[2] * Keep, T[3]});
     }
     for (size_t T = 0; T < TM.triangleCount(); ++T)
       G.Mesh.push_back(int(MI));

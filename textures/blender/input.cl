@@ -15,7 +15,9 @@
  *   float3 blGeometryPosition()      Geometry's Position: WorldPos
  *   float3 blGeometryNormal()        Normal: the shading normal (world space)
  *   float3 blGeometryTrueNormal()    True Normal: GeomNormal
- *   float3 blGeometryTangent()       Tangent: texrender's Tangent (dP/du of the mesh's UVs;
+ *   float3 blGeometryTangent()       Tangent: texrender's Tangent made orthogonal to Normal
+ *                                    and unit, as Cycles does (the mesh's MikkTSpace tangent
+ *                                    when its OBJ gives vtan, else dP/du of its UVs;
  *                                    Cycles' Geometry Tangent is radial about Z without a UV
  *                                    map, so the two agree only with UVs)
  *   float3 blGeometryIncoming()      Incoming: ViewDir (towards the viewer, as Cycles' I)
@@ -110,7 +112,11 @@ float3 blGeometryNormal() { return readAttr("Normal"); }
 
 float3 blGeometryTrueNormal() { return readAttr("GeomNormal"); }
 
-float3 blGeometryTangent() { return readAttr("Tangent"); }
+float3 blGeometryTangent() {
+  /* Cycles' svm_node_tangent: the tangent made orthogonal to the normal, unit. */
+  const float3 n = readAttr("Normal");
+  return cross(n, normalize(cross(readAttr("Tangent"), n)));
+}
 
 float3 blGeometryIncoming() { return readAttr("ViewDir"); }
 

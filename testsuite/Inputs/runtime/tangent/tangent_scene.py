@@ -9,8 +9,8 @@
         (u -> 1 - u: the orientation -1, dP/du along -x).
     tangent_scene.py check IMAGE.exr WHAT [--back] [--mirror] [--vtan rotated|none]
         compares the image of material WHAT (tangent, sign, nmap) with the values expected at
-        each pixel's centre (the corners' tangents interpolated barycentrically, normalized):
-        every pixel within 0.01 per channel.
+        each pixel's centre (the corners' tangents interpolated barycentrically, as Cycles
+        interpolates them: not normalized): every pixel within 0.01 per channel.
 """
 import json
 import math
@@ -77,8 +77,8 @@ def expected(what, back, mirror, vtan):
             else:
                 a, b, c, k = (1 - y) / 2, (1 + x) / 2, (y - x) / 2, (0, 2, 3)
             if vtan == "rotated":
+                # Interpolated, not normalized (over the unit normal's length, 1 here).
                 tan = a * t[k[0]] + b * t[k[1]] + c * t[k[2]]
-                tan /= np.linalg.norm(tan)
                 sign = SIGN
             else:  # dP/du of the UVs and their orientation
                 tan = np.array([-1.0 if mirror else 1.0, 0.0, 0.0])
