@@ -31,9 +31,20 @@ NOT_YET = [
      "input-attributes-{host,device}.test check them against the same hit's attributes"),
     ("Geometry Normal, True Normal, Tangent, Incoming (`blGeometry*`)",
      "implemented as the attributes Normal, GeomNormal, Tangent and ViewDir; no fixture, for the "
-     "same reason. Tangent is texrender's dP/du of the mesh's UVs; Cycles' Geometry Tangent is "
-     "radial about Z when the mesh has no UV map, so they agree only with one. Backfacing, "
-     "Parametric, Pointiness and Random Per Island have no texrender attribute"),
+     "same reason. Tangent is the mesh's MikkTSpace tangent where its OBJ gives one (the "
+     "exporter writes it for meshes a Normal Map shades), else dP/du of its UVs; Cycles' "
+     "Geometry Tangent is radial about Z when the mesh has no UV map, so they agree only with "
+     "one. Backfacing (an attribute since the Normal Map needs it), Parametric, Pointiness and "
+     "Random Per Island are not translated"),
+    ("Normal Map, Tangent Space (`blNormalMap`)",
+     "its fixtures above (normalmap-strength-*) compare `blNormalMapFrame`, which it calls with "
+     "the hit's Normal, Tangent, TangentSign and Backfacing, with the bake plane's frame as "
+     "arguments; the frame itself (the exporter's MikkTSpace tangents, interpolated as Cycles "
+     "interpolates them) is checked by blender-export/export-normal-map.test against Cycles' "
+     "picture (spheres at Strength 0 to 2, planes with turned, scaled and mirrored UVs, a back "
+     "face, a lit sphere through a Bump; every 8x8 block within 1%; figures in "
+     "bench/blender-nodes.md) and by runtime/tangent-*.test against the values expected per "
+     "pixel. Object, World and Blender spaces and other UV maps are refused"),
     ("Fresnel and Layer Weight with ViewDir (`blFresnel`, `blLayerWeightFresnel`, "
      "`blLayerWeightFacing`)",
      "their fixtures above (fresnel-*, layerweight-*) compare the `*Incoming` functions these "

@@ -33,12 +33,13 @@ typedef struct TexccHitAttrs {
   TEXCC_F4 objectPos;  /* xyz */
   TEXCC_F4 normal;     /* xyz, shading normal, unit, facing the incoming ray */
   TEXCC_F4 geomNormal; /* xyz, unit, facing the incoming ray */
-  /* xyz: unit, across the shading normal: the mesh's UV tangent (the OBJ file's vtan, as
-   * Cycles' MikkTSpace tangent: interpolated, then made orthogonal to the normal), or dP/du
-   * of the triangle's UVs without vtan, or any vector orthogonal to the normal without UVs;
-   * w: TangentSign, the bitangent sign (1 or -1): the vtan's interpolated, or the UVs'
-   * orientation (the sign making sign * cross(normal, tangent) point along dP/dv, with the
-   * normal on the side of the triangle's winding). */
+  /* xyz: the mesh's UV tangent. With the OBJ file's vtan: the corners' tangents interpolated
+   * as Cycles interpolates its MikkTSpace tangent, over the length of the interpolated shading
+   * normal (neither normalized: Cycles' Normal Map combines them so); without vtan: dP/du of
+   * the triangle's UVs made orthogonal to the normal, unit (any orthogonal unit vector
+   * without UVs). w: TangentSign, the bitangent sign (the vtan's interpolated, times the same
+   * length; else the UVs' orientation, 1 or -1): sign * cross(normal, tangent) is the
+   * bitangent (along dP/dv), the normal taken on the side of the triangle's winding. */
   TEXCC_F4 tangent;
   TEXCC_F4 viewDir;    /* xyz, unit, from the hit towards the viewer (-ray direction) */
   /* xy = TexCoord0, z = AO (1 = unoccluded), w = Backfacing (1: the ray hit the side the

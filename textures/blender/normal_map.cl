@@ -18,8 +18,10 @@
  * turned first and the result after. A zero result is the shading normal.
  *
  * The tangent is the mesh's MikkTSpace tangent when its OBJ file gives one (vtan; the Blender
- * exporter writes Blender's), interpolated across the triangle as Cycles interpolates it;
- * without one, dP/du of the triangle's UVs (docs/abi.md "Attributes").
+ * exporter writes Blender's), interpolated across the triangle as Cycles interpolates it, and
+ * like the sign divided by the interpolated normal's length, so that with the unit Normal the
+ * frame is Cycles' own (neither normalized); without one, dP/du of the triangle's UVs and the
+ * sign of their orientation (docs/abi.md "Attribute ids").
  *
  * Parameters (Blender's defaults):
  *
@@ -28,8 +30,8 @@
  *   | color       | float3 | 0.5, 0.5, 1    | the tangent-space normal, 0..1 per axis        |
  *   | strength    | float  | 1              | 0: the shading normal; above 1 exaggerates     |
  *   | normal      | float3 | Normal         | unit shading normal, facing the ray            |
- *   | tangent     | float3 | Tangent        | unit UV tangent                                |
- *   | tangentSign | float  | TangentSign    | bitangent sign, 1 or -1                        |
+ *   | tangent     | float3 | Tangent        | UV tangent, in the unit normal's units         |
+ *   | tangentSign | float  | TangentSign    | bitangent sign (times the same scale)          |
  *   | backfacing  | float  | Backfacing     | 1 on a back face, else 0                       |
  */
 
