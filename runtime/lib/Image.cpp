@@ -412,8 +412,22 @@ void writeImage(const std::string &Path, int Width, int Height, const std::vecto
   writeImageWith(Path, Width, Height, RGB, false, nullptr, View);
 }
 
+/// The view of writePreviewImage's .png (setPreviewViewTransform); null: plain sRGB.
+static std::mutex PreviewViewLock;
+static std::shared_ptr<const ViewTransform> PreviewView;
+
+void setPreviewViewTransform(std::shared_ptr<const ViewTransform> View) {
+  std::lock_guard<std::mutex> Lock(PreviewViewLock);
+  PreviewView = std::move(View);
+}
+
 void writePreviewImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB) {
-  writeImageWith(Path, Width, Height, RGB, true);
+  std::shared_ptr<const ViewTransform> View;
+  {
+    std::lock_guard<std::mutex> Lock(PreviewViewLock);
+    View = PreviewView;
+  }
+  writeImageWith(Path, Width, Height, RGB, true, nullptr, View.get());
 }
 
 } // namespace texrender

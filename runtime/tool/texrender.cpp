@@ -385,7 +385,7 @@ Scene loadSceneWithOptions(const Options &O) {
 /// --from-exr) with the command line's settings over it, the OCIO config from --ocio-config or
 /// $OCIO. Made before the render, so that a missing LUT file is an error before any work.
 /// Null for an .exr and for plain sRGB.
-std::unique_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSettings &Scene) {
+std::shared_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSettings &Scene) {
   std::string Ext = fs::path(O.Output).extension().string();
   if (Ext != ".png" && Ext != ".PNG")
     return nullptr;
@@ -397,7 +397,7 @@ std::unique_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSet
   V.Config = O.OcioConfig;
   if (V.isPlainSrgb())
     return nullptr;
-  return std::make_unique<ViewTransform>(V);
+  return std::make_shared<ViewTransform>(V);
 }
 
 /// stats.json: statsJson's, with the threads that rendered: "pool", the count each pool was
@@ -429,7 +429,7 @@ int run(int Argc, char **Argv) try {
   if (O.Serve)
     execServe(O, Argv[0]);
   if (!O.FromExr.empty()) {
-    const std::unique_ptr<ViewTransform> View = makeViewTransform(O, ViewSettings());
+    const std::shared_ptr<ViewTransform> View = makeViewTransform(O, ViewSettings());
     ImageRGBA In = loadExr(O.FromExr);
     std::vector<float> RGB(size_t(In.Width) * In.Height * 3);
     for (size_t I = 0; I < RGB.size() / 3; ++I)
@@ -450,7 +450,7 @@ int run(int Argc, char **Argv) try {
     SlowStep Step("loading the scene");
     return loadSceneWithOptions(O);
   }();
-  const std::unique_ptr<ViewTransform> View = makeViewTransform(O, S.Render.View);
+  const std::shared_ptr<ViewTransform> View = makeViewTransform(O, S.Render.View);
   // The size of every image written: the region's, or the film's.
   const RenderSettings &G = S.Render;
   const int OutW = G.RegionWidth ? G.RegionWidth : G.Width, OutH = G.RegionWidth ? G.RegionHeight : G.Height;
@@ -489,6 +489,8 @@ int run(int Argc, char **Argv) try {
   // Likewise an interp kernel gets value-stack headroom only when edits may need it.
   RO.InterpStackHeadroom = EditSession;
   if (O.Watch) {
+    // The preview's view is the one at the start: a reloaded scene's film.view does not change it.
+    setPreviewViewTransform(View);
     WatchOptions W;
     W.ScenePath = O.Scene, W.Output = O.Output, W.Width = OutW, W.Height = OutH;
     W.LoadScene = [&O] { return loadSceneWithOptions(O); };

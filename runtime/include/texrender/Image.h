@@ -5,6 +5,7 @@
 // 8-bit, EXR in linear float), and EXR in (for tests and comparisons).
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ void writeImage(const std::string &Path, int Width, int Height, const std::vecto
 /// encoded for speed (no per-row filter search, the fastest deflate level: a larger file); an
 /// .exr as writeImage. Batch outputs use writeImage.
 void writePreviewImage(const std::string &Path, int Width, int Height, const std::vector<float> &RGB);
+/// The view writePreviewImage's .png goes through (texrender --watch sets the one it starts
+/// with); null (the default): plain sRGB.
+void setPreviewViewTransform(std::shared_ptr<const ViewTransform> View);
 
 /// Runs Write on a temporary name next to Path (a hidden file in the same folder) and renames
 /// it to Path only when Write has succeeded, so that a crash, a kill or an error never leaves a
