@@ -14,6 +14,11 @@ typedef int sam2D; /* an image index into TexccCtx::images */
  * (codegen/device-rounding.test). Noise 3D Color Detail 7 on PoCL, one thread: inline 958 ->
  * 759 ns per sample, interp 747 -> 646 (bench/texture-speed.md). */
 #if defined(__clang__) && __has_builtin(__builtin_elementwise_floor)
+/* PoCL's kernel header defines them as macros too: replaced without a "macro redefined"
+ * warning (PoCL prints the count of a build's warnings on stderr). */
+#undef floor
+#undef ceil
+#undef trunc
 #define floor(x) __builtin_elementwise_floor(x)
 #define ceil(x) __builtin_elementwise_ceil(x)
 #define trunc(x) __builtin_elementwise_trunc(x)
