@@ -19,9 +19,6 @@
 #include "rt_sampling.h"
 #include "rt_types.h"
 
-#define RT_ENV_SRGB 1    /* texels hold sRGB-encoded values, decoded after interpolation */
-#define RT_ENV_CLOSEST 2 /* the nearest texel (else bilinear) */
-
 static inline float3 rt_env_texel(__global const float *env, int w, int h, int x, int y) {
   x %= w;
   if (x < 0)

@@ -209,4 +209,8 @@ typedef struct RtShadeParams {
   int envFlags;  /* RT_ENV_* */
 } RtShadeParams;
 
+/* RtShadeParams.envFlags (runtime/lib/Environment.cpp sets them, rt_env.h reads them). */
+#define RT_ENV_SRGB 1    /* texels hold sRGB-encoded values, decoded after interpolation */
+#define RT_ENV_CLOSEST 2 /* the nearest texel (else bilinear) */
+
 #endif

@@ -9,14 +9,15 @@ extern "C" {
 #include "rt_types.h"
 }
 
-// rt_env.h's flags (the kernel header needs OpenCL C; its two defines are repeated here and
-// checked by the env tests' renders).
-#define RT_ENV_SRGB 1
-#define RT_ENV_CLOSEST 2
-
 namespace texrender {
 
 namespace {
+
+/// The luminance (Rec. 709) of a linear RGB texel; negative values count as 0.
+double texelLuminance(const std::vector<float> &Linear, size_t K) {
+  return std::max(0.0, 0.2126 * Linear[3 * K] + 0.7152 * Linear[3 * K + 1] +
+                           0.0722 * Linear[3 * K + 2]);
+}
 
 /// The texels as the kernel interpolates them, in Cycles' row order (row 0 the bottom).
 /// Colour images (not Non-Color) have their alpha associated as Cycles associates it (an 8- or
@@ -62,8 +63,7 @@ void prepareTexels(const ImageRGBA &Img, const std::string &Space, EnvironmentMa
 std::vector<double> texelWeights(const std::vector<float> &Linear, int W, int H, bool Closest) {
   std::vector<double> L(size_t(W) * H);
   for (size_t K = 0; K < L.size(); ++K)
-    L[K] = std::max(0.0, 0.2126 * Linear[3 * K] + 0.7152 * Linear[3 * K + 1] +
-                             0.0722 * Linear[3 * K + 2]);
+    L[K] = texelLuminance(Linear, K);
   if (!Closest) {
     std::vector<double> T(L.size());
     for (int Y = 0; Y < H; ++Y)
@@ -148,9 +148,7 @@ EnvironmentMap loadEnvironmentMap(const Light &L, const std::string &Where) {
   for (int Y = 0; Y < M.Height; ++Y) {
     const double S = std::sin(M_PI * (Y + 0.5) / M.Height);
     for (int X = 0; X < M.Width; ++X) {
-      const size_t K = size_t(Y) * M.Width + X;
-      Sum += S * std::max(0.0, 0.2126 * Linear[3 * K] + 0.7152 * Linear[3 * K + 1] +
-                                   0.0722 * Linear[3 * K + 2]);
+      Sum += S * texelLuminance(Linear, size_t(Y) * M.Width + X);
     }
   }
   // The mean over the sphere: each texel's solid angle is (2 pi / W)(pi / H) sin(theta).
