@@ -11,7 +11,7 @@ packages=(
   clang-15 libclang-15-dev llvm-15-dev llvm-15-tools libclc-15
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers
   libglm-dev libstb-dev nlohmann-json3-dev libtinyobjloader-dev libtinyexr-dev libgtest-dev
-  zlib1g-dev libembree-dev libopencolorio-dev
+  zlib1g-dev libembree-dev libopencolorio-dev pkg-config
 )
 # Extra packages a caller may ask for (e.g. TEXCC_EXTRA_PACKAGES="valgrind").
 read -r -a extra <<<"${TEXCC_EXTRA_PACKAGES:-}"
