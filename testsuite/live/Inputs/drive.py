@@ -25,6 +25,7 @@ import subprocess
 import sys
 import threading
 import time
+from waits import WAIT_S  # noqa: E402
 
 
 def parse(args):
@@ -58,7 +59,7 @@ def main():
             want = "err" if kind == "--wait" else "out"
             while True:
                 try:
-                    name, line = lines.get(timeout=60)
+                    name, line = lines.get(timeout=WAIT_S)
                 except queue.Empty:
                     proc.kill()
                     sys.exit(f"drive.py: timed out waiting for /{vals[0]}/")
@@ -90,12 +91,12 @@ def main():
         elif kind == "--signal":
             proc.send_signal({"INT": signal.SIGINT, "TERM": signal.SIGTERM}[vals[0]])
     while len(ended) < 2:
-        name, line = lines.get(timeout=120)
+        name, line = lines.get(timeout=WAIT_S)
         if line is None:
             ended.add(name)
         else:
             sys.stdout.write(line)
-    print(f"exit {proc.wait(timeout=60)}")
+    print(f"exit {proc.wait(timeout=WAIT_S)}")
 
 
 if __name__ == "__main__":

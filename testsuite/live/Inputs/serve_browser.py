@@ -29,6 +29,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
+from waits import WAIT_S  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SERVE = os.path.join(HERE, "..", "..", "..", "scripts", "serve.py")
@@ -100,7 +101,7 @@ class Page:
             "r.onload = () => done(r.result.split(',')[1]); r.readAsDataURL(window.preview.lastPng);")
         return base64.b64decode(b64)
 
-    def wait(self, what, test, timeout=120):
+    def wait(self, what, test, timeout=WAIT_S):
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if self.server.poll() is not None:
@@ -185,18 +186,18 @@ def source_steps(page, spp, work, before):
         f.write(good.replace("return smoothstep(threshold - s, threshold + s, c);",
                              "return smoothstep(threshold - s, threshold + s, c)"))
     page.wait("the error in the page", lambda s: re.search(r"rust\.cl:\d+:\d+: error",
-                                                           page.text("errors")), timeout=60)
+                                                           page.text("errors")), timeout=WAIT_S)
     error = next(l for l in page.text("errors").splitlines() if re.search(r"rust\.cl:\d+:\d+:", l))
     print("syntax error shown: " + error[error.rindex("/") + 1:])
     # The save restarted accumulation with the old kernel; the frames since (before or after the
     # error, depending on how fast texcc fails) must show the old texture.
-    page.wait("a complete frame since the save", complete(spp, after_frames=saved_at), timeout=60)
+    page.wait("a complete frame since the save", complete(spp, after_frames=saved_at), timeout=WAIT_S)
     print(f"after the error: frames keep coming, the old texture: {page.png() == before}")
     with open(path, "w") as f:
         f.write(good.replace("return smoothstep(threshold - s, threshold + s, c);",
                              "return 1.0f - smoothstep(threshold - s, threshold + s, c);"))
     page.wait("the new texture", lambda s: page.text("errors") == "none"
-              and s["hellos"] > hellos and complete(spp)(s) and page.png() != before, timeout=120)
+              and s["hellos"] > hellos and complete(spp)(s) and page.png() != before, timeout=WAIT_S)
     print(f"fixed: errors panel: {page.text('errors')}; the new texture renders: True")
 
 
@@ -209,7 +210,7 @@ def main():
     page = None
     try:
         page = Page(url, server)
-        s = page.wait("the first complete frame", complete(spp), timeout=180)
+        s = page.wait("the first complete frame", complete(spp), timeout=WAIT_S)
         first = {"builds": s["meta"]["builds"], "png": page.png()}
         print(f"first frame: {spp} spp, tier {s['meta']['tier']}")
         png, s = slider_step(page, spp, opts, render_args, first)
@@ -222,7 +223,7 @@ def main():
         if page:
             page.driver.quit()
         server.send_signal(signal.SIGTERM)
-        print(f"server exit {server.wait(timeout=30)}")
+        print(f"server exit {server.wait(timeout=WAIT_S)}")
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ import threading
 import time
 
 import aiohttp
+from waits import WAIT_S  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SERVE = os.path.join(HERE, "..", "..", "..", "scripts", "serve.py")
@@ -70,7 +71,7 @@ class Session:
     def stop(self):
         self.proc.send_signal(signal.SIGTERM)
         try:
-            code = self.proc.wait(timeout=20)
+            code = self.proc.wait(timeout=WAIT_S)
         except subprocess.TimeoutExpired:
             self.proc.kill()
             code = "killed"
@@ -83,7 +84,7 @@ async def open_page(session, http, **kw):
     return ws, hello
 
 
-async def next_of(ws, kind, timeout=20):
+async def next_of(ws, kind, timeout=WAIT_S):
     """The next text message of type KIND (frames and their PNGs are skipped)."""
     deadline = time.monotonic() + timeout
     while True:
@@ -112,7 +113,7 @@ async def still_serving(s, http):
                                   "value": 0.5}))
     applied = await next_of(ws, "applied")
     frame = await next_of(ws, "frame")
-    png = (await ws.receive(timeout=20)).data
+    png = (await ws.receive(timeout=WAIT_S)).data
     is_png = png[:8] == PNG_SIGNATURE
     print(f"applied id={applied['id']} value={applied['value']}; then a frame of "
           f"{len(png)} bytes (PNG: {is_png})")
@@ -182,9 +183,9 @@ async def case_oversized(s, http):
                                   "value": 0.25}))
     print(f"next message applied: id={(await next_of(ws, 'applied'))['id']}")
     await ws.send_str("x" * (2 * 1024 * 1024))
-    msg = await ws.receive(timeout=20)
+    msg = await ws.receive(timeout=WAIT_S)
     while msg.type in (aiohttp.WSMsgType.TEXT, aiohttp.WSMsgType.BINARY):
-        msg = await ws.receive(timeout=20)
+        msg = await ws.receive(timeout=WAIT_S)
     print(f"2 MiB message: socket {msg.type.name} code {ws.close_code}")
     print(f"lines that reached texrender: {s.forwarded()}")
     await still_serving(s, http)
@@ -241,7 +242,7 @@ async def burst(ws, first_id, n):
                                       "arg": "gain", "value": (i + 1) / n}))
     last = first_id + n - 1
     while True:
-        applied = await next_of(ws, "applied", timeout=60)
+        applied = await next_of(ws, "applied", timeout=WAIT_S)
         if applied["id"] == last:
             return applied
 
@@ -275,7 +276,7 @@ async def case_flood_unread(s, http):
     sent_rss = s.rss_kib()
     errors = 0
     while errors < n:
-        msg = await ws.receive(timeout=60)
+        msg = await ws.receive(timeout=WAIT_S)
         if msg.type == aiohttp.WSMsgType.TEXT and json.loads(msg.data)["type"] == "error":
             errors += 1
         elif msg.type not in (aiohttp.WSMsgType.TEXT, aiohttp.WSMsgType.BINARY):
@@ -392,7 +393,7 @@ async def case_fuzz(s, http):
     async def drain(until_zero):
         nonlocal pending, answered
         while pending > 0:
-            msg = await ws.receive(timeout=60)
+            msg = await ws.receive(timeout=WAIT_S)
             if msg.type == aiohttp.WSMsgType.TEXT:
                 data = json.loads(msg.data)
                 if data["type"] == "error":
@@ -412,9 +413,9 @@ async def case_fuzz(s, http):
         if kind == "raw-text":
             await drain(True)
             await ws.send_frame(payload, aiohttp.WSMsgType.TEXT)
-            msg = await ws.receive(timeout=20)
+            msg = await ws.receive(timeout=WAIT_S)
             while msg.type in (aiohttp.WSMsgType.TEXT, aiohttp.WSMsgType.BINARY):
-                msg = await ws.receive(timeout=20)
+                msg = await ws.receive(timeout=WAIT_S)
             if ws.close_code == 1007:
                 closed += 1
             else:
@@ -520,7 +521,7 @@ async def case_graph_not_a_file(s, http):
         tmp = graph + ".new"
         make(tmp)
         os.replace(tmp, graph)
-        err = await next_of(ws, "error", timeout=60)
+        err = await next_of(ws, "error", timeout=WAIT_S)
         print(f"{what}: the page shows: {err['message'][err['message'].index('graph.json'):][:80]}")
         other, hello = await open_page(s, http)
         print(f"{what}: a new page is served, its hello has the error: {hello['error'] is not None}")
@@ -528,7 +529,7 @@ async def case_graph_not_a_file(s, http):
         with open(tmp, "w") as f:
             f.write(good)
         os.replace(tmp, graph)
-        hello = await next_of(ws, "hello", timeout=60)
+        hello = await next_of(ws, "hello", timeout=WAIT_S)
         print(f"{what}: graph.json restored: a new hello, error {hello['error']}")
 
     await replace(os.mkfifo, "a FIFO")

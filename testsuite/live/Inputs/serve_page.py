@@ -15,11 +15,12 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select
 
 from serve_browser import Page, start_server
+from waits import WAIT_S  # noqa: E402
 
 FAKE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve_fake_texrender.py")
 
 
-def control_lines(log, n, timeout=20):
+def control_lines(log, n, timeout=WAIT_S):
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if os.path.exists(log):
@@ -76,7 +77,7 @@ def main():
         if page:
             page.driver.quit()
         server.terminate()
-        print(f"server exit {server.wait(timeout=30)}")
+        print(f"server exit {server.wait(timeout=WAIT_S)}")
 
 
 if __name__ == "__main__":

@@ -8,6 +8,7 @@ import os
 import sys
 
 from serve_browser import Page, start_server
+from waits import WAIT_S  # noqa: E402
 
 FAKE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve_fake_texrender.py")
 
@@ -22,14 +23,14 @@ def main():
     try:
         page = Page(url, server)
         page.wait("the page's error", lambda s: s["frames"] > 0
-                  and page.text("errors").startswith("page error"), timeout=60)
+                  and page.text("errors").startswith("page error"), timeout=WAIT_S)
         print("errors panel: " + page.text("errors").splitlines()[0])
         print(f"frames keep coming: {page.state()['frames'] > 0}")
     finally:
         if page:
             page.driver.quit()
         server.terminate()
-        print(f"server exit {server.wait(timeout=30)}")
+        print(f"server exit {server.wait(timeout=WAIT_S)}")
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
 from serve_browser import Page, batch_equal, complete, start_server
+from waits import WAIT_S  # noqa: E402
 
 
 def readme_graph(readme):
@@ -70,14 +71,14 @@ def main():
     page = None
     try:
         page = Page(url, server)
-        s = page.wait("the first complete frame", complete(spp), timeout=300)
+        s = page.wait("the first complete frame", complete(spp), timeout=WAIT_S)
         print(f"3: an image ({s['meta']['width']}x{s['meta']['height']}), errors panel: "
               f"{page.text('errors')}")
         print("3: controls of dots: " + "; ".join(controls(page, "dots")))
         # 4. Change a parameter without rebuilding.
         retype(page, "ctl-dots-scale-value", "8")
         sent = retype(page, "ctl-dots-blur-value", "0.05")
-        s = page.wait("the refined frame", complete(spp, edit=sent["id"]), timeout=120)
+        s = page.wait("the refined frame", complete(spp, edit=sent["id"]), timeout=WAIT_S)
         builds = s["meta"]["builds"]
         png = page.png()
         print(f"4: scale=8, blur=0.05 typed in: equals the README's batch command bit for bit: "
@@ -93,7 +94,7 @@ def main():
         with open(graph_path, "w") as f:
             json.dump(final, f, indent=2)
         page.wait("the new graph", lambda s: s["hellos"] > hellos and complete(spp)(s),
-                  timeout=300)
+                  timeout=WAIT_S)
         nodes = [n["id"] for n in page.js("return window.preview.schema.nodes;")]
         radius = page.driver.find_element(By.ID, "ctl-dots-radius").text
         print(f"5: nodes {nodes}; radius: {radius}; image changed: {page.png() != png}")
@@ -108,20 +109,20 @@ def main():
         with open(dots, "w") as f:
             f.write(bad)
         page.wait("the error in the page", lambda s: "error:" in page.text("errors"),
-                  timeout=120)
+                  timeout=WAIT_S)
         line = next(x for x in page.text("errors").splitlines() if "error:" in x)
         print("6: the page shows: " + line[line.rindex("/") + 1:])
         hellos = page.state()["hellos"]
         with open(dots, "w") as f:
             f.write(good)
         page.wait("the fix", lambda s: s["hellos"] > hellos and page.text("errors") == "none",
-                  timeout=300)
+                  timeout=WAIT_S)
         print(f"6: fixed: errors panel: {page.text('errors')}")
     finally:
         if page:
             page.driver.quit()
         server.send_signal(signal.SIGTERM)
-        print(f"server exit {server.wait(timeout=30)}")
+        print(f"server exit {server.wait(timeout=WAIT_S)}")
 
 
 if __name__ == "__main__":

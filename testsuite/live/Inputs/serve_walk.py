@@ -28,6 +28,7 @@ import sys
 import time
 
 from serve_browser import Page, start_server
+from waits import WAIT_S  # noqa: E402
 
 ATTR_FOR = {"float3": "ObjectPos", "float2": "TexCoord0"}
 ROWS = {"float4": [[0.0, 0.1, 0.2, 0.3], [1.0, 0.9, 0.8, 0.7]],
@@ -165,7 +166,7 @@ def walk_session(page, name, server, url, timing):
     page.server = server
     page.driver.get(url)
     page.wait("the first image", lambda s: s["hellos"] > 0 and s["frames"] > 0
-              and s["meta"] and s["meta"].get("width"), timeout=600)
+              and s["meta"] and s["meta"].get("width"), timeout=WAIT_S)
     t_image = time.monotonic() - t0
     schema = page.js("return window.preview.schema;")
     meta = page.state()["meta"]
@@ -176,7 +177,7 @@ def walk_session(page, name, server, url, timing):
     ids = [d["id"] for d in driven if "id" in d]
     try:
         page.wait("texrender's answers", lambda s: len(page.js(ANSWERS, ids)) == len(ids),
-                  timeout=300)
+                  timeout=WAIT_S)
     except SystemExit:
         pass
     answers = {int(k): v for k, v in page.js(ANSWERS, ids).items()}
@@ -247,7 +248,7 @@ def main():
                 if page:  # the page lets go of the server's socket
                     page.driver.get("about:blank")
                 server.terminate()
-                server.wait(timeout=60)
+                server.wait(timeout=WAIT_S)
     finally:
         if page:
             page.driver.quit()
