@@ -26,8 +26,17 @@ machine PoCL builds them with AVX-512 whatever POCL_LLVM_CPU_NAME says, and unde
 sees another CPU and builds again (minutes per Noise kernel); bench/texture-speed.md has the
 counts taken that way. The figures without --callgrind are saved before the counting starts.
 
+--nodes measures instead the single Blender nodes of bench/per_node_cycles.py (Noise 3D Color
+fBM and Ridged Multifractal, Voronoi 3D F1, Wave; its NODES) in every mode, and with
+--baseline REV the same nodes built from REV's textures/blender/ beside them: each node's
+baseline and current folders in one texcc-eval --time process (rounds interleave them), --reps
+processes, medians, the ratio of each current mode to the baseline's same mode, and whether the
+two give the same values at every grid point ("identical", texcc-eval's %.9g output compared).
+
 usage: bench/texture_speed.py [--build DIR] [--work DIR] [--rounds R] [--reps K] [--grid N]
                               [--callgrind] [--modes inline,interp,shape] [--out FILE]
+       bench/texture_speed.py --nodes [--baseline REV] [--rounds R] [--reps K] [--grid N]
+                              [--out FILE]
 """
 import argparse
 import json
@@ -223,6 +232,82 @@ def measure(args):
     return data
 
 
+def measure_nodes(args):
+    """Per-node ns per sample of the current textures/blender/ (and of --baseline REV's)."""
+    import per_node_cycles
+    work = args.work
+    os.makedirs(work, exist_ok=True)
+    tools = common.Tools(args.build, work)
+    eval_tool = os.path.join(args.build, "bin", "texcc-eval")
+    modes = args.modes.split(",")
+    roots = {"current": os.path.join(common.ROOT, "textures", "blender")}
+    if args.baseline:
+        base = os.path.join(work, "baseline-src")
+        os.makedirs(base, exist_ok=True)
+        out, _ = sh(["git", "-C", common.ROOT, "ls-tree", "--name-only", args.baseline,
+                     "textures/blender/"])
+        for path in out.split():
+            text, _ = sh(["git", "-C", common.ROOT, "show", "%s:%s" % (args.baseline, path)])
+            with open(os.path.join(base, os.path.basename(path)), "w") as f:
+                f.write(text)
+        roots = {"baseline": base, "current": roots["current"]}
+    folders = {}
+    for name, (_, _, _, _, node) in per_node_cycles.NODES.items():
+        for version, root in roots.items():
+            graph = {"texcc": 1, "sources": [os.path.join(root, node["src"])],
+                     "nodes": [{"id": "n", "fn": node["fn"], "args": node["args"]}],
+                     "materials": {"m": {"bsdf": "diffuse", "color": {"node": "n"}}}}
+            path = os.path.join(work, "%s-%s.json" % (name, version))
+            with open(path, "w") as f:
+                json.dump(graph, f)
+            for mode in modes:
+                folder = os.path.join(work, "%s-%s-%s" % (name, version, mode))
+                common.texcc(tools, path, folder, mode)
+                folders[(name, version, mode)] = folder
+    env1 = dict(os.environ, POCL_MAX_PTHREAD_COUNT="1")
+    identical = {}
+    for name in per_node_cycles.NODES:
+        dumps = {key: sh([eval_tool, folder, "--grid", str(args.grid)], env=env1)[0]
+                 for key, folder in folders.items() if key[0] == name}
+        first = dumps[(name, "current", modes[0])]
+        identical[name] = all(d == first for d in dumps.values())
+        common.log("%s: every version and mode gives the same values: %s" % (name, identical[name]))
+    samples, loads = {}, []
+    for rep in range(args.reps):
+        loads.append(os.getloadavg()[0])
+        for name in per_node_cycles.NODES:
+            keys = [(name, v, m) for v in roots for m in modes]
+            out, _ = sh([eval_tool] + [folders[k] for k in keys] +
+                        ["--time", str(args.rounds), "--grid", str(args.grid)], env=env1)
+            for k, f in zip(keys, json.loads(out)["folders"]):
+                samples.setdefault(k, []).extend(f["nsPerHit"])
+        common.log("repetition %d of %d done (load %.1f)" % (rep + 1, args.reps, loads[-1]))
+    loads.append(os.getloadavg()[0])
+    rows = {}
+    for name in per_node_cycles.NODES:
+        row = {}
+        for version in roots:
+            for mode in modes:
+                xs = samples[(name, version, mode)]
+                row.setdefault(version, {})[mode] = {"medianNsPerSample": statistics.median(xs),
+                                                     "minNsPerSample": min(xs),
+                                                     "samples": len(xs)}
+        if "baseline" in roots:
+            for mode in modes:
+                row["current"][mode]["ratioToBaseline"] = (
+                    row["current"][mode]["medianNsPerSample"] /
+                    row["baseline"][mode]["medianNsPerSample"])
+        rows[name] = {"versions": row, "identical": identical[name]}
+        common.log("%s: median ns/sample %s" % (name, {
+            "%s %s" % (v, m): round(row[v][m]["medianNsPerSample"], 1)
+            for v in roots for m in modes}))
+    data = {"machine": common.machine(), "git": common.git_head(), "baseline": args.baseline,
+            "grid": args.grid, "rounds": args.rounds, "reps": args.reps,
+            "poclMaxPthreadCount": "1", "loadAverage1min": loads, "nodes": rows}
+    common.save(None, data, args.out)
+    return data
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
@@ -233,9 +318,19 @@ def main():
     ap.add_argument("--modes", default="inline,interp,shape")
     ap.add_argument("--callgrind", action="store_true")
     ap.add_argument("--callgrind-points", type=int, default=4096)
-    ap.add_argument("--out", default=os.path.join(common.RESULTS, "texture_speed.json"))
+    ap.add_argument("--out", default=None)
+    ap.add_argument("--nodes", action="store_true")
+    ap.add_argument("--baseline", default=None)
     args = ap.parse_args()
+    if args.nodes:
+        args.work = args.work or os.path.join(args.build, "bench-texture-speed-nodes")
+        args.out = args.out or os.path.join(common.RESULTS, "texture_speed_nodes.json")
+        measure_nodes(args)
+        return
+    if args.baseline:
+        raise common.BenchError("--baseline needs --nodes")
     args.work = args.work or os.path.join(args.build, "bench-texture-speed")
+    args.out = args.out or os.path.join(common.RESULTS, "texture_speed.json")
     measure(args)
 
 
