@@ -15,7 +15,7 @@ by 0.7; with the UVs
 mirrored (bitangent sign -1); and seen from behind (Cycles turns the normal on a back face).
 The eighth, bottom right, is a UV sphere whose Diffuse BSDF takes the Normal Map's Normal
 through a Bump node's Normal (Strength 0.7), lit by a sun. `refused` adds what the exporter
-refuses: Object Space, another UV map, a mesh without UVs.
+refuses: Object Space, another UV map, a mesh without UVs, a non-uniform scale.
 """
 import math
 import os
@@ -156,6 +156,7 @@ def make(out, refused=False):
         bare = bpy.data.meshes.new("Bare")
         bare.from_pydata([(-1, 0, -1), (1, 0, -1), (1, 0, 1)], [], [(0, 1, 2)])
         link(bpy, scene, "Bare", bare, bpy.data.materials["Strength0.5"], (0.0, 2.0, 3.0))
+        bpy.data.objects["Mirrored"].scale = (1.0, 1.0, 0.5)
     bpy.ops.wm.save_as_mainfile(filepath=os.path.abspath(out))
 
 
