@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -89,6 +91,24 @@ void requireKernelsDeclared(const std::string &File, const std::string &Source,
     if (!declaresKernel(Source, Name))
       throw Error(File + ": no kernel '" + Name +
                   "' in the texture program (layout.json names it; the source declares none)");
+}
+
+int backgroundBuildNice() {
+  static const int Nice = [] {
+    const char *E = std::getenv("TEXRENDER_BUILD_NICE");
+    return E && *E ? std::clamp(std::atoi(E), 0, 19) : DefaultBackgroundBuildNice;
+  }();
+  return Nice;
+}
+
+void lowerThisThreadsPriority(int Increment) {
+  if (Increment <= 0)
+    return;
+  errno = 0;
+  const int Own = getpriority(PRIO_PROCESS, 0); // this thread's, as inherited at its creation
+  if (Own == -1 && errno != 0)
+    return;
+  setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), std::min(19, Own + Increment));
 }
 
 namespace {
@@ -201,10 +221,7 @@ BackgroundBuild::BackgroundBuild(std::function<TierBuildResult()> Job, size_t Ev
   std::packaged_task<TierBuildResult()> Task(std::move(Job));
   Result = Task.get_future();
   Thread = std::thread([Task = std::move(Task), Nice]() mutable {
-    // Nice 19: frames first (on a CPU device the build competes with the renderer for the
-    // same cores).
-    if (Nice != 0)
-      setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), Nice);
+    lowerThisThreadsPriority(Nice);
     Task();
   });
 }

@@ -217,7 +217,7 @@ void TierManager::buildShapeTiers(const char *Reason) {
   if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
     TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater,
-                ShapeText, FallbackText, 19};
+                ShapeText, FallbackText, backgroundBuildNice()};
     if (DeferFallback && !Plan.ShapeLater)
       Deferred = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
     else
@@ -233,7 +233,7 @@ bool TierManager::buildQuickTier(const char *Reason) {
   const texcc::kernel::KernelEntries &K = Lay.Manifest.Kernel;
   if (!QuickTier || FramesRendered == 0 || K.QuickPrograms.empty() || K.QuickEntry.empty())
     return false;
-  // A warm-up still in flight is not waited for (it can take seconds at nice 19): without its
+  // A warm-up still in flight is not waited for (it can take seconds, niced): without its
   // programs the edit takes the shape kernel's path, as before the quick tier.
   mergeQuickWarmUp(/*Wait=*/false);
   std::vector<std::string> Paths, Texts;
@@ -313,8 +313,7 @@ bool TierManager::warmQuickPrograms() {
   const std::string Options = ProgramOptions;
   const double Start = Epoch;
   QuickWarming = std::async(std::launch::async, [Ctx, Work, Options, Start] {
-    // As BackgroundBuild's thread: nice 19 (Linux: a thread's nice value is its own).
-    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), 19);
+    lowerThisThreadsPriority(backgroundBuildNice()); // as BackgroundBuild's thread
     std::vector<QuickWarmed> Out;
     for (const Todo &T : Work) {
       QuickWarmed W;
@@ -409,7 +408,8 @@ void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
   HasTextureWork = HasWork;
   if (HasTextureWork && !ActiveFallback)
     activate(InterpProgram, true);
-  startBackgroundBuild(std::move(MakeLayout), TierJob{false, true, true, {}, {}, 19},
+  startBackgroundBuild(std::move(MakeLayout),
+                       TierJob{false, true, true, {}, {}, backgroundBuildNice()},
                        std::move(Reencode), "shape change");
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -89,8 +90,10 @@ TEST(Tier, BackgroundBuildHandsOverItsResult) {
   EXPECT_EQ(R.Error, "none");
 }
 
-// A background build's thread runs at the nice value asked for: 19 by default (frames first),
-// the renderer's own with 0 (the shape kernel behind the quick tier, docs/live.md).
+// A background build's thread runs the nice increment asked for above the thread that starts it:
+// DefaultBackgroundBuildNice (5) by default (frames first, without starving behind every other
+// process: at an absolute 19 a continuous nice-0 load left it 1.5% of a core), capped at 19, the
+// renderer's own with 0 (the shape kernel behind the quick tier, docs/live.md).
 TEST(Tier, BackgroundBuildRunsAtItsNiceValue) {
   auto NiceOf = [](std::optional<int> Nice) {
     int Seen = -100;
@@ -106,9 +109,12 @@ TEST(Tier, BackgroundBuildRunsAtItsNiceValue) {
     return Seen;
   };
   const int Own = getpriority(PRIO_PROCESS, 0);
-  EXPECT_EQ(NiceOf(std::nullopt), 19);
+  if (std::getenv("TEXRENDER_BUILD_NICE"))
+    GTEST_SKIP() << "$TEXRENDER_BUILD_NICE sets another increment";
+  EXPECT_EQ(NiceOf(std::nullopt), std::min(19, Own + 5));
   EXPECT_EQ(NiceOf(19), 19);
   EXPECT_EQ(NiceOf(0), Own);
+  EXPECT_EQ(NiceOf(3), std::min(19, Own + 3));
 }
 
 // Background compiles wait for a pause in interactive edits (PoCL holds up every launch while

@@ -67,6 +67,19 @@ struct TierBuildResult {
 /// kernel from a texcc before the #ifndef: then the result is "".
 std::string stackHeadroomOption(const Layout &L, const std::string &Source, unsigned &Capacity);
 
+/// How much lower than the thread that starts them background builds run: a nice increment,
+/// so that texrender's own frames come first (on a CPU device the build competes with them for
+/// the same cores) without the build starving behind every other process of the machine. At
+/// +19 (before) a continuous nice-0 load left it about 1.5% of a core: a fallback build of 30 s
+/// took 400 s, a tier test 20 times its time alone (bench/test-suite.md, session 13).
+/// $TEXRENDER_BUILD_NICE (0-19) overrides it, for measurements.
+constexpr int DefaultBackgroundBuildNice = 5;
+int backgroundBuildNice();
+/// Raises the calling thread's nice value by Increment over the one it started with (inherited
+/// from the thread that created it; capped at 19; Linux: a thread's nice value is its own).
+/// Increment 0: nothing.
+void lowerThisThreadsPriority(int Increment);
+
 /// What a background job builds.
 struct TierJob {
   bool SameLayout = false; // for the layout the renderer runs, else for MakeLayout's new one
@@ -75,10 +88,10 @@ struct TierJob {
   // The programs' texts when read already (non-empty): a live edit's regenerated layout lives
   // in a temporary folder that is gone by the time a deferred build runs.
   std::string ShapeText, FallbackText;
-  // The build thread's nice value: 19 (frames first), or 0 for the shape kernel that takes over
-  // from the quick tier (TierManager::buildShapeTiers: at nice 19 it waited a minute behind a
-  // loaded machine).
-  int Nice = 19;
+  // The build thread's nice increment: backgroundBuildNice() (frames first), or 0 for the shape
+  // kernel that takes over from the quick tier (TierManager::buildShapeTiers: at nice 19 it
+  // waited a minute behind a loaded machine).
+  int Nice = backgroundBuildNice();
   // Extra build options of the shape (or, for another mode, the layout's own) program: an
   // interp-mode kernel's value-stack headroom.
   std::string ShapeOptions;
@@ -120,12 +133,14 @@ void waitForEditPause();
 void requireKernelsDeclared(const std::string &File, const std::string &Source,
                             const std::vector<std::string> &Kernels);
 
-/// A job on its own std::thread at nice value Nice (Linux: a thread's nice value is its own).
+/// A job on its own std::thread, Nice above the creating thread's nice value
+/// (lowerThisThreadsPriority).
 /// The thread owns every OpenCL object it creates; only the programs cross over (kernels are
 /// created from them on the main thread, so no cl_kernel is ever shared for clSetKernelArg).
 class BackgroundBuild {
 public:
-  BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex, int Nice = 19);
+  BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex,
+                  int Nice = backgroundBuildNice());
   ~BackgroundBuild();
   BackgroundBuild(const BackgroundBuild &) = delete;
   BackgroundBuild &operator=(const BackgroundBuild &) = delete;
