@@ -10,6 +10,7 @@
 #include "texcc/Support/AtomicWrite.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <cstdlib>
@@ -233,8 +234,8 @@ Edit parseEdit(const std::string &LineIn) {
   return E;
 }
 
-LiveEditor::LiveEditor(const Layout &L, std::string Texcc)
-    : Lay(L), TexccPath(Texcc.empty() ? findTexcc() : std::move(Texcc)) {
+LiveEditor::LiveEditor(const Layout &L, std::shared_ptr<const Regenerator> R)
+    : Lay(L), Regen(R ? std::move(R) : std::make_shared<const Regenerator>()) {
   if (Lay.GraphPath.empty())
     throw Error(Lay.Dir + "/layout.json: no \"graph\": live edits need the graph the kernel was made from");
   texcc::graph::DiagnosticSink Diags;
@@ -370,25 +371,19 @@ TempFolder::~TempFolder() {
   fs::remove_all(Path, EC);
 }
 
-LiveEditor::Regeneration LiveEditor::writeEditedGraph() {
-  if (!fs::exists(TexccPath))
-    throw Error("this edit needs the texture kernel regenerated, but texcc was not found at " +
-                TexccPath + " (set TEXCC, or re-run texcc and restart texrender)");
-  fs::path Work = fs::temp_directory_path() /
-                  ("texrender-edit-" + std::to_string(getpid()) + "-" + std::to_string(++Generation));
-  auto Folder = std::make_shared<const TempFolder>(Work.string());
-  Regeneration R{Folder, (Work / fs::path(Lay.GraphPath).filename()).string(),
-                 (Work / "out").string(), (Work / "texcc.log").string()};
-  std::string Why;
-  if (!texcc::writeFileAtomically(R.Graph, graphJson(absoluteGraph()).dump(2), Why))
-    throw Error("cannot write the edited graph for texcc to '" + R.Graph + "': " + Why);
-  return R;
+Regeneration::Regeneration(std::shared_ptr<const TempFolder> F, std::string G, std::string T,
+                           std::vector<std::string> Opts)
+    : Folder(std::move(F)), Graph(std::move(G)), Texcc(std::move(T)),
+      Out(Folder->path() + "/out"), Log(Folder->path() + "/texcc.log"), Options(std::move(Opts)) {}
+
+Regeneration::~Regeneration() {
+  if (Thread.joinable())
+    Thread.join();
 }
 
-Layout runTexcc(const std::string &Texcc, const std::vector<std::string> &CompileOptions,
-                const std::string &Graph, const std::string &Out, const std::string &Log) {
+Layout Regeneration::run() const {
   std::vector<std::string> Argv{Texcc, "--graph", Graph, "-o", Out};
-  Argv.insert(Argv.end(), CompileOptions.begin(), CompileOptions.end());
+  Argv.insert(Argv.end(), Options.begin(), Options.end());
   int Rc = runProcess(Argv, Log);
   if (Rc != 0) {
     std::string Msg = trim(readFile(Log));
@@ -398,6 +393,61 @@ Layout runTexcc(const std::string &Texcc, const std::vector<std::string> &Compil
   return loadLayout(Out);
 }
 
+void Regeneration::start(std::function<void()> Notify) {
+  Thread = std::thread([this, Notify = std::move(Notify)] {
+    try {
+      Result = run();
+    } catch (const std::exception &E) {
+      std::error_code EC;
+      Failure = fs::exists(Log, EC) ? readWholeFile(Log) : std::string(E.what());
+    }
+    EndedAt = now();
+    Done.store(true);
+    if (Notify)
+      Notify();
+  });
+}
+
+std::optional<Layout> Regeneration::takeResult() {
+  if (Thread.joinable())
+    Thread.join();
+  return std::move(Result);
+}
+
+Regenerator::Regenerator(std::string T) : Texcc(T.empty() ? findTexcc() : std::move(T)) {}
+
+std::shared_ptr<const TempFolder> Regenerator::newFolder() const {
+  static std::atomic<unsigned> Count{0}; // one numbering per process
+  return std::make_shared<const TempFolder>(
+      (fs::temp_directory_path() /
+       ("texrender-edit-" + std::to_string(getpid()) + "-" + std::to_string(++Count)))
+          .string());
+}
+
+std::shared_ptr<Regeneration> Regenerator::ofFile(const std::string &Path,
+                                                  const std::vector<std::string> &Options) const {
+  return std::make_shared<Regeneration>(newFolder(), Path, Texcc, Options);
+}
+
+std::shared_ptr<Regeneration> Regenerator::ofGraph(const texcc::graph::Graph &G,
+                                                   const std::string &FileName,
+                                                   const std::vector<std::string> &Options) const {
+  std::shared_ptr<const TempFolder> Folder = newFolder();
+  const std::string Path = Folder->path() + "/" + FileName;
+  std::string Why;
+  if (!texcc::writeFileAtomically(Path, graphJson(G).dump(2), Why))
+    throw Error("cannot write the edited graph for texcc to '" + Path + "': " + Why);
+  return std::make_shared<Regeneration>(std::move(Folder), Path, Texcc, Options);
+}
+
+std::shared_ptr<Regeneration> LiveEditor::writeEditedGraph() {
+  if (!fs::exists(Regen->texcc()))
+    throw Error("this edit needs the texture kernel regenerated, but texcc was not found at " +
+                Regen->texcc() + " (set TEXCC, or re-run texcc and restart texrender)");
+  return Regen->ofGraph(absoluteGraph(), fs::path(Lay.GraphPath).filename().string(),
+                        Lay.CompileOptions);
+}
+
 void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   // Later edits address the regenerated kernel; the graph keeps its original folder for
   // resolving relative paths. The editor compiles the graph as it is now (edits made while a
@@ -405,33 +455,28 @@ void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   std::string Original = Lay.GraphPath;
   texcc::graph::Graph Absolute = absoluteGraph();
   Lay = New;
-  Lay.GraphPath = Absolute.Path = Files.Graph;
+  Lay.GraphPath = Absolute.Path = Files.graph();
   initEditor(Absolute);
   Lay.GraphPath = Original;
   PreviousFolder = std::move(KernelFolder);
-  KernelFolder = Files.Folder;
+  KernelFolder = Files.folder();
 }
 
 void LiveEditor::regenerate(Renderer &R) {
-  Regeneration Files = writeEditedGraph();
-  Layout New = runTexcc(TexccPath, Lay.CompileOptions, Files.Graph, Files.Out, Files.Log);
+  std::shared_ptr<Regeneration> Files = writeEditedGraph();
+  Layout New = Files->run();
   R.setLayout(New);
-  adopt(New, Files);
+  adopt(New, *Files);
 }
 
 void LiveEditor::regenerateInBackground(Renderer &R) {
-  Regeneration Files = writeEditedGraph();
-  std::string Texcc = TexccPath;
-  std::vector<std::string> Options = Lay.CompileOptions;
+  std::shared_ptr<const Regeneration> Files = writeEditedGraph();
   const auto &CG = Editor->compiled();
   KernelShapeHash = texcc::graph::shapeHash(CG);
   R.switchShapes(
-      CG.ArgsBin, CG.Attributes,
-      [Texcc, Options, Files] {
-        return runTexcc(Texcc, Options, Files.Graph, Files.Out, Files.Log);
-      },
+      CG.ArgsBin, CG.Attributes, [Files] { return Files->run(); },
       [this, Files](Layout &New) {
-        adopt(New, Files);
+        adopt(New, *Files);
         New.ArgsBin = Editor->compiled().ArgsBin;
         New.Attributes = Editor->compiled().Attributes;
       });
@@ -459,6 +504,9 @@ EditAction LiveEditor::plan(const Edit &E, bool Structural, Renderer &R) {
   F.Spill = CG.Spill;
   F.StackSlots = CG.StackSlots;
   F.MaxOutputs = CG.MaxOutputs;
+  // A fallback finished on the background thread since the last frame is what a rewiring to a
+  // new shape renders with: adopted now, not at the next frame.
+  R.adoptFinishedFallback();
   return planEdit(F, Lay.Caps, {R.tierPolicy(), R.fallbackStackSlots(), R.interpStackSlots()});
 }
 

@@ -81,7 +81,7 @@ WatchResult Session::run() {
   R = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
   R->setDeferFallbackBuilds(true); // started after a complete frame (renderFrame)
   R->setQuickTier(true);            // its programs warmed up after a complete frame
-  Editor = std::make_unique<LiveEditor>(Lay);
+  Editor = std::make_unique<LiveEditor>(Lay, Regen);
   watchFiles();
   say("watching " + GraphPath + ", its sources and " + O.ScenePath + "; Ctrl-C ends");
   if (O.Control) {
@@ -298,7 +298,7 @@ void Session::reloadScene() {
       Prime.join();
     Primed = false;
     // The new renderer has Lay's arguments: the live edits made since are applied again.
-    auto NewEditor = std::make_unique<LiveEditor>(Lay);
+    auto NewEditor = std::make_unique<LiveEditor>(Lay, Regen);
     if (std::optional<std::vector<std::string>> Edits = argumentEdits(LayGraph, Graph))
       for (const std::string &E : *Edits)
         NewEditor->apply(parseEdit(E), *New);
@@ -398,30 +398,19 @@ void Session::startJob(const json &New, const std::string &What, bool KeepEdits)
     Job->KeepEdits = Job->KeepEdits && KeepEdits;
     return;
   }
-  Job = std::make_unique<Regeneration>();
+  Job = std::make_unique<SourceJob>();
   Job->Graph = New;
   Job->Started = Noticed; // its latency is reported once its kernel is adopted
   Job->KeepEdits = KeepEdits;
-  std::string Out = TempRoot + "/gen" + std::to_string(++Generation);
+  Job->Run = Regen->ofFile(GraphPath, Lay.CompileOptions);
+  Folders.push_back(Job->Run->folder());
   say(What + " changed: texcc runs in the background; the current kernel keeps rendering");
-  Regeneration *J = Job.get();
-  Job->Thread = std::thread([J, Out, Graph = GraphPath, Options = Lay.CompileOptions,
-                             W = Waker] {
-    try {
-      J->Result = runTexcc(findTexcc(), Options, Graph, Out, Out + ".log");
-    } catch (const std::exception &E) {
-      std::error_code EC;
-      J->Log = fs::exists(Out + ".log", EC) ? readWholeFile(Out + ".log") : std::string(E.what());
-    }
-    J->TexccDone = nowSeconds();
-    J->Done.store(true);
-    W->notify(); // adopted at once, not at the next poll of the files
-  });
+  Job->Run->start([W = Waker] { W->notify(); }); // adopted at once, not at the next poll
 }
 
 void Session::adoptJob() {
-  Job->Thread.join();
-  std::unique_ptr<Regeneration> J = std::move(Job);
+  std::unique_ptr<SourceJob> J = std::move(Job);
+  std::optional<Layout> Made = J->Run->takeResult();
   if (JobAgain) {
     JobAgain = false;
     Noticed = J->Started;
@@ -431,12 +420,13 @@ void Session::adoptJob() {
       Job->KeepEdits = Keep && FileGraph == J->Graph;
     return;
   }
-  if (!J->Result) {
-    std::fputs(J->Log.c_str(), stderr);
-    if (!J->Log.empty() && J->Log.back() != '\n')
+  if (!Made) {
+    const std::string &Log = J->Run->failure();
+    std::fputs(Log.c_str(), stderr);
+    if (!Log.empty() && Log.back() != '\n')
       std::fputc('\n', stderr);
     say("texcc failed: the last good kernel keeps rendering");
-    errorEvent(J->Log);
+    errorEvent(Log);
     Dirty = true; // a new accumulation of the last good state shows that it is still there
     return;
   }
@@ -445,22 +435,22 @@ void Session::adoptJob() {
   const size_t EventsBefore = R->buildEvents().size();
   const double AdoptStart = nowSeconds();
   try {
-    R->setLayout(*J->Result);
+    R->setLayout(*Made);
   } catch (const std::exception &E) {
     say("error: " + std::string(E.what()) + "; the last good kernel keeps rendering");
     errorEvent(E.what());
     return;
   }
   json Edited = Graph;
-  Lay = *J->Result;
-  Editor = std::make_unique<LiveEditor>(Lay);
+  Lay = *Made;
+  Editor = std::make_unique<LiveEditor>(Lay, Regen);
   Graph = LayGraph = J->Graph;
   if (J->KeepEdits)
     applyKeptEdits(Edited);
   watchFiles();
   Dirty = true;
   ChangeAt = J->Started;
-  Source = {J->Started, J->TexccDone, AdoptStart, nowSeconds(), 0,
+  Source = {J->Started, J->Run->endedAt(), AdoptStart, nowSeconds(), 0,
             R->cl().foregroundBuilds() - Builds, PrimeAccount};
   const std::vector<BuildEvent> &Events = R->buildEvents();
   for (size_t I = EventsBefore; I < Events.size(); ++I)

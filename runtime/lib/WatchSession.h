@@ -61,7 +61,7 @@ struct Command {
 };
 
 /// Wakes the session's idle wait before its next poll of the files: a line of standard input
-/// read (ControlInput), texcc's process ended (Regeneration). Shared with the threads that
+/// read (ControlInput), texcc's process ended (SourceJob). Shared with the threads that
 /// notify it (ControlInput's reader is detached and may outlive the session).
 class Wake {
 public:
@@ -157,15 +157,12 @@ void applyToGraphJson(json &G, const Edit &E);
 /// each material uses. The 'ready' and 'reload' events carry it (docs/live.md).
 ordered_json editSchema(const Layout &Lay, const json &Graph);
 
-/// texcc on the changed graph, on a thread of its own, while the current kernel renders.
-struct Regeneration {
-  std::thread Thread;
-  std::atomic<bool> Done{false};
-  std::optional<Layout> Result;
-  std::string Log;   // texcc's diagnostics when it failed
+/// texcc on the saved files, on a thread of its own (Regeneration::start), while the current
+/// kernel renders.
+struct SourceJob {
+  std::shared_ptr<Regeneration> Run;
   json Graph;
   double Started = 0;
-  double TexccDone = 0; // when texcc's process ended
   // Only source files changed (graph.json as before): the control channel's edits are applied
   // again to the new kernel.
   bool KeepEdits = false;
@@ -178,22 +175,17 @@ public:
     O.Renderer.CutPass = [this] { return cutPass(); };
     GraphPath = fs::absolute(Lay.GraphPath).string();
     Graph = LayGraph = FileGraph = json::parse(readGraphFile(GraphPath));
-    TempRoot = (fs::temp_directory_path() / ("texrender-watch-" + std::to_string(::getpid()))).string();
-    fs::create_directories(TempRoot);
   }
   ~Session() {
-    if (Job && Job->Thread.joinable())
-      Job->Thread.join();
+    Job.reset(); // joins texcc's thread
     if (Prime.joinable())
       Prime.join();
-    std::error_code EC;
-    fs::remove_all(TempRoot, EC);
   }
   WatchResult run();
 
 private:
   bool stopping() const { return O.Stop && O.Stop->load(); }
-  bool jobDone() const { return Job && Job->Done.load(); }
+  bool jobDone() const { return Job && Job->Run->done(); }
   bool commandsPending() const { return Input && Input->pending(); }
   /// Something to do besides rendering: a file change, texcc done, a command, a shape kernel
   /// built in the background.
@@ -269,20 +261,25 @@ private:
   std::unique_ptr<Renderer> R;
   std::unique_ptr<LiveEditor> Editor;
   std::unique_ptr<ControlInput> Input;
-  std::string GraphPath, TempRoot;
+  std::string GraphPath;
+  // Makes every regeneration of this session's kernel (saved files here, edits in Editor).
+  std::shared_ptr<const Regenerator> Regen = std::make_shared<const Regenerator>();
+  // The folders of the kernels texcc made for this session: kept until it ends (the last good
+  // state, a fallback built later, may read their files).
+  std::vector<std::shared_ptr<const TempFolder>> Folders;
   json Graph;     // the graph rendered now: LayGraph plus the live edits applied since
   json LayGraph;  // the graph Lay was compiled from
   json FileGraph; // graph.json as last read
   FileWatcher Files;
   std::set<std::string> Changed;
-  std::unique_ptr<Regeneration> Job;
+  std::unique_ptr<SourceJob> Job;
   std::thread Prime;         // primeCompiler's build
   bool Primed = false;       // primeCompiler ran for R (its thread may still be running)
   double PrimeSeconds = 0;   // its time, set by its thread (read after joining it)
   // Wakes idle(): control lines, texcc done.
   std::shared_ptr<Wake> Waker = std::make_shared<Wake>();
   bool JobAgain = false, Ended = false, Ok = true;
-  unsigned Generation = 0, Frames = 0;
+  unsigned Frames = 0;
   // Noticed: when the change being applied was seen; ChangeAt: when the change whose first
   // refined frame is awaited was seen (0: none; set once a change is applied, not on an error).
   double Noticed = 0, ChangeAt = 0, LastWrite = 0, LastPoll = 0;

@@ -17,9 +17,13 @@
 
 #include "texcc/Graph/Graph.h"
 
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -80,11 +84,77 @@ private:
   std::string Path;
 };
 
+/// One run of texcc, the only place texrender launches it: a temporary folder of its own
+/// (texrender-edit-PID-N), the graph texcc reads, its output folder and log in that folder,
+/// the compile options it replays (layout.json's compileOptions), and, once it has run, the
+/// layout it made or why not. Made by a Regenerator; run on the calling thread (run()) or on a
+/// thread of its own (start()).
+class Regeneration {
+public:
+  Regeneration(std::shared_ptr<const TempFolder> Folder, std::string Graph, std::string Texcc,
+               std::vector<std::string> Options);
+  /// Joins start()'s thread.
+  ~Regeneration();
+  Regeneration(const Regeneration &) = delete;
+  Regeneration &operator=(const Regeneration &) = delete;
+
+  const std::shared_ptr<const TempFolder> &folder() const { return Folder; }
+  /// The graph file texcc reads.
+  const std::string &graph() const { return Graph; }
+  /// Runs texcc on graph() into the folder, waits for it and loads the layout it wrote.
+  /// Thread-safe (posix_spawn, not fork). Throws Error: "regenerating the texture kernel failed
+  /// (texcc exit N): <texcc's first line>".
+  Layout run() const;
+  /// run() on a thread of its own; Notify (may be empty) is called on that thread when it has
+  /// ended. Once per regeneration.
+  void start(std::function<void()> Notify);
+  /// start()'s run has ended.
+  bool done() const { return Done.load(); }
+  /// After done(): joins the thread. The layout texcc made, or std::nullopt and failure().
+  std::optional<Layout> takeResult();
+  /// Why the run failed: texcc's log (its clang-style diagnostics), or the error's text when
+  /// texcc wrote none.
+  const std::string &failure() const { return Failure; }
+  /// When texcc ended (steady seconds; start()'s run only).
+  double endedAt() const { return EndedAt; }
+
+private:
+  std::shared_ptr<const TempFolder> Folder;
+  std::string Graph, Texcc, Out, Log;
+  std::vector<std::string> Options;
+  std::thread Thread;
+  std::atomic<bool> Done{false};
+  std::optional<Layout> Result;
+  std::string Failure;
+  double EndedAt = 0;
+};
+
+/// Makes the regenerations of the texture kernel (LiveEditor's edits, texrender --watch's
+/// saved files): each in a new temporary folder, with the texcc binary found once.
+class Regenerator {
+public:
+  /// Texcc: the texcc binary ("" = findTexcc()).
+  explicit Regenerator(std::string Texcc = "");
+  const std::string &texcc() const { return Texcc; }
+  /// texcc on the graph file Path where it is (a saved graph.json: its relative paths resolve
+  /// next to it), with Options.
+  std::shared_ptr<Regeneration> ofFile(const std::string &Path,
+                                       const std::vector<std::string> &Options) const;
+  /// texcc on G, written (graphJson) into the regeneration's folder as FileName; G's source
+  /// and image paths must be absolute. Throws Error when it cannot be written.
+  std::shared_ptr<Regeneration> ofGraph(const texcc::graph::Graph &G, const std::string &FileName,
+                                        const std::vector<std::string> &Options) const;
+
+private:
+  std::shared_ptr<const TempFolder> newFolder() const;
+  std::string Texcc;
+};
+
 class LiveEditor {
 public:
-  /// L: the layout the renderer currently runs. TexccPath: the texcc binary ("" = the one
-  /// next to this executable, or $TEXCC).
-  LiveEditor(const Layout &L, std::string TexccPath = "");
+  /// L: the layout the renderer currently runs. Regen: the regenerations' maker (nullptr: one
+  /// of its own, with the texcc next to this executable, or $TEXCC).
+  LiveEditor(const Layout &L, std::shared_ptr<const Regenerator> Regen = nullptr);
   ~LiveEditor();
 
   /// Applies E to the graph and to R. Throws Error (one line: the edit and the reason).
@@ -97,16 +167,12 @@ public:
   std::optional<EditProblem> check(const std::vector<Edit> &Edits) const;
 
 private:
-  /// A regeneration's files: the edited graph (paths absolute), texcc's output and log.
-  struct Regeneration {
-    std::shared_ptr<const TempFolder> Folder; // texrender-edit-PID-N in the temporary folder
-    std::string Graph, Out, Log;
-  };
   /// Applies E to the graph editor and plans it (planEdit, with the layout's capabilities).
   EditAction plan(const Edit &E, bool Structural, Renderer &R);
   void regenerate(Renderer &R);
   void regenerateInBackground(Renderer &R);
-  Regeneration writeEditedGraph();
+  /// A regeneration of the edited graph (paths absolute), written into its folder.
+  std::shared_ptr<Regeneration> writeEditedGraph();
   void adopt(const Layout &New, const Regeneration &Files);
   /// Model with the paths of its sources and images absolute (for a graph written elsewhere).
   texcc::graph::Graph absoluteGraph() const;
@@ -119,7 +185,7 @@ private:
   bool applyToModel(const Edit &E);
 
   Layout Lay;
-  std::string TexccPath;
+  std::shared_ptr<const Regenerator> Regen;
   // The graph with every edit so far (the graph library's model; a regeneration writes it
   // with graphJson), the baked arguments of texcc's command line marked in it.
   texcc::graph::Graph Model;
@@ -127,7 +193,6 @@ private:
   // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
   // edit that changes them needs a new shape kernel, one that keeps them is an upload.
   std::string KernelShapeHash;
-  unsigned Generation = 0;
   // The folders of the regenerated kernel in use and of the one before (the renderer may still
   // read their files: a tier built later, a fallback); older ones are removed.
   std::shared_ptr<const TempFolder> KernelFolder, PreviousFolder;
@@ -135,12 +200,6 @@ private:
 
 /// The texcc binary: $TEXCC, else "texcc" in the folder of this executable.
 std::string findTexcc();
-
-/// Runs texcc on Graph into Out with CompileOptions (layout.json's, so the kernel is made as
-/// the original was), its output in Log, and loads the layout.
-/// Thread-safe (posix_spawn): the renderer's background thread calls it.
-Layout runTexcc(const std::string &Texcc, const std::vector<std::string> &CompileOptions,
-                const std::string &Graph, const std::string &Out, const std::string &Log);
 
 } // namespace texrender
 

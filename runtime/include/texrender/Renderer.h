@@ -151,9 +151,8 @@ public:
   const TierManager &tiers() const { return *Tiers; }
   TierPolicy tierPolicy() const { return Opts.Tier; }
   const std::string &activeTier() const { return Tiers->activeTier(); }
-  /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none. A
-  /// fallback finished on the background thread is adopted first.
-  unsigned fallbackStackSlots() { return Tiers->fallbackStackSlots(); }
+  /// The value-stack slots the adopted interp fallback holds (stackHeadroomOption); 0: none.
+  unsigned fallbackStackSlots() const { return Tiers->fallbackStackSlots(); }
   /// TierManager::adoptFinishedFallback (texrender --watch, while idle).
   std::optional<double> adoptFinishedFallback() { return Tiers->adoptFinishedFallback(); }
   /// interp mode: the value-stack slots the built kernel holds (with InterpStackHeadroom more

@@ -57,9 +57,10 @@ public:
   /// foreground and, tier auto, the other tier on the background thread. HasTextureWork false:
   /// no texture kernel at all.
   void build(bool HasTextureWork);
-  /// Whether switchShapes can run: a shape-mode layout whose interp fallback is built (one
-  /// finished on the background thread is adopted here: adoptFinishedFallback).
-  bool canSwitchShapes() { return Lay.Caps.InterpFallback && fallbackBuilt(); }
+  /// Whether switchShapes can run: a shape-mode layout whose interp fallback is built and
+  /// adopted (a fallback finished on the background thread counts once adoptFinishedFallback,
+  /// or a frame, has adopted it). No side effect.
+  bool canSwitchShapes() const { return Lay.Caps.InterpFallback && InterpProgram(); }
   /// Renderer::switchShapes: the interp fallback renders at once, MakeLayout's layout is built
   /// on the background thread and Reencode fills it at adoption (TextureTiers.h). The renderer
   /// has uploaded the re-encoded arguments before.
@@ -84,8 +85,8 @@ public:
   }
   /// Adopts a finished background build that made only the interp fallback (the layout's own
   /// kernel renders meanwhile), now rather than at the next frame: an idle session renders none,
-  /// and a rewiring to a new shape needs the fallback (canSwitchShapes, fallbackStackSlots ask
-  /// here first). Returns the build's wall seconds when one was adopted by this call.
+  /// and a rewiring to a new shape needs the fallback (LiveEditor calls this before it reads
+  /// fallbackStackSlots). Returns the build's wall seconds when one was adopted by this call.
   std::optional<double> adoptFinishedFallback();
   /// On: a background build that makes only the interp fallback of a layout whose own kernel
   /// renders (tier auto: the shape kernel built in the foreground, or built behind the quick
@@ -148,9 +149,9 @@ public:
 
   TierPolicy policy() const { return Policy; }
   const std::string &activeTier() const { return ActiveTier; }
-  /// The value-stack slots the built interp fallback holds (stackHeadroomOption); 0: none. A
-  /// fallback finished on the background thread is adopted first (adoptFinishedFallback).
-  unsigned fallbackStackSlots() { return fallbackBuilt() ? FallbackSlots : 0; }
+  /// The value-stack slots the adopted interp fallback holds (stackHeadroomOption); 0: none
+  /// (also while it is built on the background thread and not adopted). No side effect.
+  unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
   /// interp mode: the value-stack slots the built kernel holds.
   unsigned interpStackSlots() const { return InterpModeSlots; }
   const std::vector<BuildEvent> &buildEvents() const { return Events; }
@@ -158,10 +159,6 @@ public:
   double foregroundBuildSeconds() const;
 
 private:
-  bool fallbackBuilt() {
-    adoptFinishedFallback();
-    return bool(InterpProgram());
-  }
   /// The job makes a kernel frames switch to (the shape kernel, or a new layout).
   static bool switches(const TierJob &J) { return J.Shape || !J.SameLayout; }
   void buildShapeTiers(const char *Reason);
