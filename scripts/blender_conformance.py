@@ -632,7 +632,8 @@ for strength in (0.0, 0.5, 1.0, 2.0):
             {"Strength": strength}, {"Color": "P"}, "normal_map.cl",
             [("Normal", "blNormalMapFrame", 3)],
             {"color": "P", "strength": strength, "normal": PLANE_NORMAL,
-             "tangent": PLANE_TANGENT, "tangentSign": 1.0, "backfacing": 0.0})
+             "tangent": PLANE_TANGENT, "tangentSign": 1.0, "backfacing": 0.0,
+             "axisX": [1.0, 0.0, 0.0], "axisY": [0.0, 1.0, 0.0], "axisZ": [0.0, 0.0, 1.0]})
 
 
 # --- Baking ---------------------------------------------------------------------------------

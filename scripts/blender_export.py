@@ -40,7 +40,7 @@ from blender_nodes import (  # noqa: E402
 from blender_materials import (  # noqa: E402
     ExportError, MaterialTranslator, Problems, ProblemsFound, finite, sanitize_id)
 from blender_settings import check_render_settings  # noqa: E402
-from blender_tangents import mikk_tangents, non_uniform_scale, uses_normal_map  # noqa: E402
+from blender_tangents import mikk_tangents, uses_normal_map  # noqa: E402
 
 
 # --- The scene ------------------------------------------------------------------------------
@@ -65,7 +65,6 @@ class Export(LightsExport):
         self.files = set()
         self._principled = None
         self._images = {}  # Blender image name (or None: missing) -> graph.json image binding
-        self._normal_map_scale_seen = set()  # objects whose Normal Map scale was checked
         self._constants = {}
         self._socket_defaults = {}
         # graph.json ids: {id: owner} and {owner: id}; names that sanitise alike get a suffix.
@@ -435,21 +434,6 @@ class Export(LightsExport):
         finally:
             obj_eval.to_mesh_clear()
 
-    def normal_map_scale(self, obj, matrix):
-        """A Normal Map under a non-uniform scale or a shear is refused (blender_tangents.py
-        non_uniform_scale: Cycles' frame differs then), once per object."""
-        if obj.original.name in self._normal_map_scale_seen:
-            return
-        scale = non_uniform_scale(matrix)
-        if scale is None or not any(uses_normal_map(s.material) for s in obj.material_slots):
-            return
-        self._normal_map_scale_seen.add(obj.original.name)
-        self.problems.refuse(
-            "object '%s': a Normal Map node shades it under a non-uniform scale or shear (axes "
-            "%s long); supported: rotations and uniform scales (Cycles combines the normal "
-            "map's frame in the object's own space, texrender in world space; apply the scale)"
-            % (obj.name, ", ".join("%g" % v for v in scale)), "combining it in world space")
-
     # --- Camera, lights, world ---
     def object_visibility(self, obj):
         """Cycles' per-object ray visibility, holdout and shadow catcher: texrender's objects
@@ -572,7 +556,6 @@ class Export(LightsExport):
                 self.object_visibility(obj.original)
             if key not in written:
                 written[key] = self.write_mesh(obj, mesh_dir)
-            self.normal_map_scale(obj, inst.matrix_world)
             slots = obj.material_slots
             for name, slot in written[key]:
                 material = slots[slot].material if slot < len(slots) else None

@@ -337,7 +337,8 @@ NODES["ShaderNodeObjectInfo"] = dict(fn={o: fn for o, (fn, _) in OBJECT_INFO_OUT
 # the exporter writes the mesh's MikkTSpace tangents, blender_tangents.py); blender_materials
 # refuses the other spaces and UV maps.
 NODES["ShaderNodeNormalMap"] = dict(fn={"Normal": "blNormalMap"},
-                                    sockets={"color": "Color", "strength": "Strength"})
+                                    sockets={"color": "Color", "strength": "Strength"},
+                                    object_props=True)
 # Attribute: the UV map texrender exports (TexCoord0) only; blender_materials refuses the rest.
 NODES["ShaderNodeAttribute"] = dict(fn={"Vector": "blAttributeUV", "Color": "blAttributeUV",
                                         "Fac": "blAttributeUVFac", "Alpha": "blAttributeUVAlpha"})

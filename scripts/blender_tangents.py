@@ -29,23 +29,6 @@ def uses_normal_map(material):
     return False
 
 
-def non_uniform_scale(matrix):
-    """The scale of a 4x4 object-to-world matrix when it is not a rotation times a uniform scale
-    (its axes' lengths, rounded), else None. Cycles combines a Normal Map's frame in the
-    object's space and turns the result as a normal; texrender combines it in world space,
-    which is the same only under rotations and uniform scales."""
-    axes = [[matrix[r][c] for r in range(3)] for c in range(3)]
-    lengths = [sum(v * v for v in a) ** 0.5 for a in axes]
-    big = max(lengths)
-    if big == 0.0:
-        return None
-    skew = max(abs(sum(axes[i][k] * axes[j][k] for k in range(3))) / (lengths[i] * lengths[j])
-               for i, j in ((0, 1), (0, 2), (1, 2)) if lengths[i] * lengths[j] > 0)
-    if max(lengths) - min(lengths) <= 1e-4 * big and skew <= 1e-4:
-        return None
-    return tuple(round(v, 4) for v in lengths)
-
-
 def mikk_tangents(co, tv, corner_uv, corner_normals):
     """Per triangle corner, (tangent x, y, z, bitangent sign): MikkTSpace over the triangles
     `tv` (vertex indices, ntri x 3) of the positions `co`, with the corners' UVs and normals

@@ -9,13 +9,13 @@ A normal map made by this script (24x16 texels of sloped bumps, Non-Color, packe
 feeds Normal Map nodes (Tangent Space, the UV map) on eight objects seen from -y (128x64
 pixels; 8x8-pixel blocks of 0.5 x 0.5 at the objects' plane). Seven show the node's Normal as
 colour (0.5 N + 0.5 through an Emission, no lights): the top row four smooth UV spheres (32
-segments, 16 rings) at Strength 0, 0.5, 1 and 2; the bottom row planes at Strength 1 with UVs
+segments, 16 rings) at Strength 0, 0.5, 1 and 2 (the last scaled (1, 0.6, 0.8) and turned); the bottom row planes at Strength 1 with UVs
 turned by 90 degrees and scaled, the object turned by 30 degrees about its normal and scaled
-by 0.7; with the UVs
+by (0.7, 0.5, 0.55) (not uniformly: Cycles forms the frame in the object's space); with the UVs
 mirrored (bitangent sign -1); and seen from behind (Cycles turns the normal on a back face).
 The eighth, bottom right, is a UV sphere whose Diffuse BSDF takes the Normal Map's Normal
 through a Bump node's Normal (Strength 0.7), lit by a sun. `refused` adds what the exporter
-refuses: Object Space, another UV map, a mesh without UVs, a non-uniform scale.
+refuses: Object Space, another UV map, a mesh without UVs.
 """
 import math
 import os
@@ -132,13 +132,15 @@ def make(out, refused=False):
     image.colorspace_settings.name = "Non-Color"
 
     for k, strength in enumerate((0.0, 0.5, 1.0, 2.0)):
-        link(bpy, scene, "Sphere%d" % k, uv_sphere(bpy, "Sphere%d" % k),
-             material(bpy, "Strength%g" % strength, image, strength), (-3.0 + 2 * k, 0.0, 1.0))
+        obj = link(bpy, scene, "Sphere%d" % k, uv_sphere(bpy, "Sphere%d" % k),
+                   material(bpy, "Strength%g" % strength, image, strength),
+                   (-3.0 + 2 * k, 0.0, 1.0))
+    obj.scale, obj.rotation_euler = (1.0, 0.6, 0.8), (0.3, 0.2, 0.1)  # Strength 2: not uniform
     turned = [(0.0, 2.0), (0.0, 0.0), (2.0, 0.0), (2.0, 2.0)]  # u along the square's -z
     obj = link(bpy, scene, "Turned", square(bpy, "Turned", turned),
                material(bpy, "TurnedUV", image, 1.0), (-3.0, 0.0, -1.0),
                (0.0, math.radians(30), 0.0))
-    obj.scale = (0.7, 0.7, 0.7)  # turned, it stays inside its 2 x 2 slot
+    obj.scale = (0.7, 0.5, 0.55)  # turned, it stays inside its 2 x 2 slot; not uniform
     mirrored = [(1.0, 0.0), (0.0, 0.0), (0.0, 1.0), (1.0, 1.0)]  # u along -x
     link(bpy, scene, "Mirrored", square(bpy, "Mirrored", mirrored),
          material(bpy, "MirroredUV", image, 1.0), (-1.0, 0.0, -1.0))
@@ -156,7 +158,6 @@ def make(out, refused=False):
         bare = bpy.data.meshes.new("Bare")
         bare.from_pydata([(-1, 0, -1), (1, 0, -1), (1, 0, 1)], [], [(0, 1, 2)])
         link(bpy, scene, "Bare", bare, bpy.data.materials["Strength0.5"], (0.0, 2.0, 3.0))
-        bpy.data.objects["Mirrored"].scale = (1.0, 1.0, 0.5)
     bpy.ops.wm.save_as_mainfile(filepath=os.path.abspath(out))
 
 
