@@ -78,6 +78,8 @@ OVL float4 convert_float4(int4 v) { return __builtin_convertvector(v, float4); }
 /* OpenCL's select on vectors: b in the lanes whose mask has its top bit set, a elsewhere (the
  * Blender library's Perlin and Voronoi code on uint4 masks). */
 OVL float4 select(float4 a, float4 b, uint4 c) { return as_int4(c) < 0 ? b : a; }
+OVL float4 select(float4 a, float4 b, int4 c) { return c < 0 ? b : a; }
+OVL float3 select(float3 a, float3 b, int3 c) { return c < 0 ? b : a; }
 
 
 /* What the kernel of proctex.cl calls besides the math: one work-item at a time, on one thread
