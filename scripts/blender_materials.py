@@ -621,13 +621,20 @@ class MaterialTranslator:
         if self.link_source(aniso) is not None or aniso.default_value != 0.0:
             self.refuse("%s: Anisotropy is not supported; supported: 0, unlinked"
                         % self.node_where(node), "using an isotropic GGX")
-        if node.distribution not in ("GGX", "MULTI_GGX"):
-            self.refuse("%s: distribution '%s' is not supported; supported: GGX"
-                        % (self.node_where(node), node.distribution), "using GGX")
+        self.multiscatter_ggx(node)
         bsdf = {"bsdf": "glossy", "color": self.input(node, "Color", "float3"),
                 "roughness": self.input(node, "Roughness", "float")}
         self.normal_input(node, bsdf)
         return bsdf
+
+    def multiscatter_ggx(self, node):
+        """texrender's GGX lobes are Cycles' Multiscatter GGX (Blender's default): the energy
+        lost to single scattering is added back. Plain GGX (none added back) and the other
+        distributions render differently: refused."""
+        if node.distribution != "MULTI_GGX":
+            self.refuse("%s: distribution '%s' is not supported; supported: Multiscatter GGX "
+                        "(Blender's default)" % (self.node_where(node), node.distribution),
+                        "using Multiscatter GGX")
 
     def shader_emission(self, node):
         return {"bsdf": "emission", "color": self.input(node, "Color", "float3"),
@@ -653,6 +660,7 @@ class MaterialTranslator:
                                                      "linked" if not changed else "changed",
                                                      ", ".join(PRINCIPLED_INPUTS)),
                             "using its default")
+        self.multiscatter_ggx(node)
         bsdf = {"bsdf": "principled"}
         for ident, name in PRINCIPLED_INPUTS.items():
             want = "float3" if "Color" in ident else "float"

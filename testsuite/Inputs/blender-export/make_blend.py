@@ -11,6 +11,8 @@ cube's colour), "loop" (two Math nodes feed each other), "point-light". CASE "ao
 Occlusion node (4 samples, distance 0.7) times the noise drives the Mix Shader; "ao-conflict":
 also the ground's colour through a second AO node with another distance; "principled-coat": the
 ground is a Principled BSDF with Coat Weight 0.5 (an input the renderer does not have);
+"ggx-distribution": the ground's Principled BSDF and the cube's Glossy BSDF set to GGX (not
+Blender's default Multiscatter GGX);
 "render-settings": the cube's Subdivision renders at level 2 (viewport 1), the panel is hidden in
 renders only; "texture-only": the cube alone, its ramp's colour through an Emission shader, no
 lights, a black world, 128x96, a 100 mm lens (the texture's values, compared with Cycles per
@@ -247,6 +249,13 @@ def main():
         to_roughness.inputs["To Max"].default_value = 0.6
         tree.links.new(noise.outputs["Fac"], to_roughness.inputs["Value"])
         tree.links.new(to_roughness.outputs["Result"], principled.inputs["Roughness"])
+    if case == "ggx-distribution":
+        grey = bpy.data.materials.new("PlainGGX")
+        tree = grey.node_tree
+        principled = next(n for n in tree.nodes if n.bl_idname == "ShaderNodeBsdfPrincipled")
+        principled.distribution = "GGX"
+        glossy = rust.node_tree.nodes["Glossy BSDF"]
+        glossy.distribution = "GGX"
     if case == "principled-coat":
         grey = bpy.data.materials.new("Coated")
         tree = grey.node_tree
