@@ -1,5 +1,12 @@
 """How the Cycles references of the blender-export tests are rendered (cycles_reference.py,
-glossy_furnace.py cycles): bpy only, imported from inside Blender's Python."""
+glossy_furnace.py cycles, the make_*_blend.py scripts' --reference): imported from .venv's
+Python (bpy)."""
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def render_npy(scene, spp, exr, npy, transparent=False):
@@ -21,3 +28,26 @@ def render_npy(scene, spp, exr, npy, transparent=False):
     pixels = np.empty(len(image.pixels), np.float32)
     image.pixels.foreach_get(pixels)
     np.save(npy, pixels.reshape(image.size[1], image.size[0], 4)[::-1])
+
+
+def render_file(blend, spp, transparent=False):
+    """The Cycles image of the .blend file `blend` at `spp`, as the references are made, into
+    BLEND.exr and BLEND.npy (a make_*_blend.py script's --render)."""
+    import bpy
+    bpy.ops.wm.open_mainfile(filepath=blend)
+    render_npy(bpy.context.scene, spp, blend + ".exr", blend + ".npy", transparent)
+
+
+def write_reference(script, blend, make_args, spp, expected, blocks, tolerance, edges=False):
+    """A test's Cycles reference: `script` (a make_*_blend.py) writes `blend` (SCRIPT BLEND
+    MAKE_ARGS...), renders it in another process (SCRIPT --render BLEND SPP), and its block
+    means go into `expected` (region_means.py --write; `edges` marks the blocks a silhouette
+    crosses), which starts as BLOCKS (columns, rows) and TOLERANCE when it does not exist."""
+    subprocess.check_call([sys.executable, script, blend] + list(make_args))
+    subprocess.check_call([sys.executable, script, "--render", blend, str(spp)])
+    if not os.path.exists(expected):
+        with open(expected, "w") as f:
+            f.write(json.dumps({"blocks": list(blocks), "tolerance": tolerance, "means": []}) +
+                    "\n")
+    subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"), blend + ".npy",
+                           expected, "--write"] + (["--edges"] if edges else []))

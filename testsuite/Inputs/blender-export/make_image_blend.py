@@ -16,7 +16,6 @@ Image Texture's Color (seeded random pixels, so the file is the same every time)
 """
 import os
 import random
-import subprocess
 import sys
 import tempfile
 
@@ -144,26 +143,17 @@ def make(out, refused=False):
 
 def reference(spp):
     """Cycles' block means (8x8 pixels; the planes' edges marked) into REFERENCE."""
-    work = tempfile.mkdtemp()
-    blend = os.path.join(work, "image.blend")
-    subprocess.check_call([sys.executable, __file__, blend])
-    subprocess.check_call([sys.executable, __file__, "--render", blend, str(spp)])
-    if not os.path.exists(REFERENCE):
-        with open(REFERENCE, "w") as f:
-            f.write('{"blocks": [8, 6], "tolerance": 0.01, "means": []}\n')
-    subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"),
-                           blend + ".exr.npy", REFERENCE, "--write", "--edges"])
+    from cycles_render import write_reference
+    write_reference(__file__, os.path.join(tempfile.mkdtemp(), "image.blend"), [], spp, REFERENCE,
+                    (8, 6), 0.01, edges=True)
 
 
 if __name__ == "__main__":
     if sys.argv[1:2] == ["--reference"]:
         reference(int(sys.argv[2]) if len(sys.argv) > 2 else 1024)
     elif sys.argv[1:2] == ["--render"]:
-        import bpy
         sys.path.insert(0, HERE)
-        from cycles_render import render_npy
-        bpy.ops.wm.open_mainfile(filepath=sys.argv[2])
-        render_npy(bpy.context.scene, int(sys.argv[3]), sys.argv[2] + ".exr",
-                   sys.argv[2] + ".exr.npy", True)
+        from cycles_render import render_file
+        render_file(sys.argv[2], int(sys.argv[3]), transparent=True)
     else:
         make(sys.argv[1], sys.argv[2:3] == ["refused"])

@@ -27,7 +27,6 @@ writes the 16x16-pixel block means into cycles-lamp-CASE.json (region_means.py -
 """
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -161,31 +160,20 @@ def interior(scene, cam, floor, wall, box):
          shadow_soft_size=0.05, spot_size=math.radians(50.0), spot_blend=0.4)
 
 
-def render(blend, spp):
-    import bpy
-    from cycles_render import render_npy
-    bpy.ops.wm.open_mainfile(filepath=blend)
-    render_npy(bpy.context.scene, spp, blend + ".exr", blend + ".npy")
-
-
 def reference(spp, cases):
+    from cycles_render import write_reference
     work = tempfile.mkdtemp()
     for case in cases:
-        blend = os.path.join(work, case + ".blend")
-        subprocess.check_call([sys.executable, __file__, blend, case])
-        subprocess.check_call([sys.executable, __file__, "--render", blend, str(spp)])
         expected = os.path.join(HERE, "cycles-lamp-%s.json" % case)
-        if not os.path.exists(expected):
-            with open(expected, "w") as f:
-                f.write('{"blocks": [4, 3], "tolerance": 0.02, "means": []}\n')
-        subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"),
-                               blend + ".npy", expected, "--write"])
+        write_reference(__file__, os.path.join(work, case + ".blend"), [case], spp, expected,
+                        (4, 3), 0.02)
         print("make_lamp_blend: %s: %s (%d spp)" % (case, expected, spp))
 
 
 if __name__ == "__main__":
     if sys.argv[1] == "--render":
-        render(sys.argv[2], int(sys.argv[3]))
+        from cycles_render import render_file
+        render_file(sys.argv[2], int(sys.argv[3]))
     elif sys.argv[1] == "--reference":
         spp = int(sys.argv[sys.argv.index("--spp") + 1]) if "--spp" in sys.argv else 4096
         cases = sys.argv[sys.argv.index("--cases") + 1].split(",") if "--cases" in sys.argv \

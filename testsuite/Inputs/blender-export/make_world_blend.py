@@ -24,7 +24,6 @@ writes the 16x16-pixel block means into cycles-world-CASE.json (region_means.py 
 """
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -68,12 +67,15 @@ def map_image(bpy, folder, name, pack):
     return img
 
 
-def sphere_mesh(radius, center):
+def sphere_mesh(radius, center, uvs=False):
+    """A smooth UV sphere (48 x 24 segments); with `uvs`, its UV map "UVMap"."""
     import bmesh
     import bpy
     mesh = bpy.data.meshes.new("sphere")
     bm = bmesh.new()
-    bmesh.ops.create_uvsphere(bm, u_segments=48, v_segments=24, radius=radius)
+    if uvs:
+        bm.loops.layers.uv.new("UVMap")
+    bmesh.ops.create_uvsphere(bm, u_segments=48, v_segments=24, radius=radius, calc_uvs=uvs)
     bmesh.ops.translate(bm, verts=bm.verts, vec=center)
     bm.to_mesh(mesh)
     bm.free()
@@ -138,31 +140,20 @@ def make(out, case):
     bpy.ops.wm.save_as_mainfile(filepath=out)
 
 
-def render(blend, spp):
-    import bpy
-    from cycles_render import render_npy
-    bpy.ops.wm.open_mainfile(filepath=blend)
-    render_npy(bpy.context.scene, spp, blend + ".exr", blend + ".npy")
-
-
 def reference(spp, cases):
+    from cycles_render import write_reference
     work = tempfile.mkdtemp()
     for case in cases:
-        blend = os.path.join(work, case + ".blend")
-        subprocess.check_call([sys.executable, __file__, blend, case])
-        subprocess.check_call([sys.executable, __file__, "--render", blend, str(spp)])
         expected = os.path.join(HERE, "cycles-world-%s.json" % case)
-        if not os.path.exists(expected):
-            with open(expected, "w") as f:
-                f.write('{"blocks": [4, 3], "tolerance": 0.02, "means": []}\n')
-        subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"),
-                               blend + ".npy", expected, "--write"])
+        write_reference(__file__, os.path.join(work, case + ".blend"), [case], spp, expected,
+                        (4, 3), 0.02)
         print("make_world_blend: %s: %s (%d spp)" % (case, expected, spp))
 
 
 if __name__ == "__main__":
     if sys.argv[1] == "--render":
-        render(sys.argv[2], int(sys.argv[3]))
+        from cycles_render import render_file
+        render_file(sys.argv[2], int(sys.argv[3]))
     elif sys.argv[1] == "--reference":
         spp = int(sys.argv[sys.argv.index("--spp") + 1]) if "--spp" in sys.argv else 4096
         cases = sys.argv[sys.argv.index("--cases") + 1].split(",") if "--cases" in sys.argv \
