@@ -68,12 +68,13 @@ struct TierBuildResult {
 std::string stackHeadroomOption(const Layout &L, const std::string &Source, unsigned &Capacity);
 
 /// How much lower than the thread that starts them background builds run: a nice increment,
-/// so that texrender's own frames come first (on a CPU device the build competes with them for
-/// the same cores) without the build starving behind every other process of the machine. At
-/// +19 (before) a continuous nice-0 load left it about 1.5% of a core: a fallback build of 30 s
-/// took 400 s, a tier test 20 times its time alone (bench/test-suite.md, session 13).
-/// $TEXRENDER_BUILD_NICE (0-19) overrides it, for measurements.
-constexpr int DefaultBackgroundBuildNice = 5;
+/// 0 by default (the renderer's own priority). Frames render about 1.28x slower while a build
+/// runs beside them at +0 (1.13x at +5, 0.92x at +19), but any positive increment lets every
+/// nice-0 process of the machine go first: beside `stress-ng --cpu 2` a cold tier test took
+/// 31-34 s at +0, 44-57 s at +2 and +5, 67 s at +19 (3.4 s alone; at load 15-19 a fallback
+/// build took 33-39 s at +0 and 398 s at +19: bench/test-suite.md, session 13).
+/// $TEXRENDER_BUILD_NICE (0-19) sets another increment.
+constexpr int DefaultBackgroundBuildNice = 0;
 int backgroundBuildNice();
 /// Raises the calling thread's nice value by Increment over the one it started with (inherited
 /// from the thread that created it; capped at 19; Linux: a thread's nice value is its own).
@@ -88,9 +89,9 @@ struct TierJob {
   // The programs' texts when read already (non-empty): a live edit's regenerated layout lives
   // in a temporary folder that is gone by the time a deferred build runs.
   std::string ShapeText, FallbackText;
-  // The build thread's nice increment: backgroundBuildNice() (frames first), or 0 for the shape
-  // kernel that takes over from the quick tier (TierManager::buildShapeTiers: at nice 19 it
-  // waited a minute behind a loaded machine).
+  // The build thread's nice increment: backgroundBuildNice(), or 0 for the shape kernel that
+  // takes over from the quick tier (TierManager::buildShapeTiers: at nice 19 it waited a
+  // minute behind a loaded machine) and for the optimised build behind a quick first build.
   int Nice = backgroundBuildNice();
   // Extra build options of the shape (or, for another mode, the layout's own) program: an
   // interp-mode kernel's value-stack headroom.
