@@ -296,7 +296,7 @@ void Session::recoverFromFault(const TextureFault &X) {
       R->setLayout(Good->Lay);
       Lay = Good->Lay;
       LayGraph = Good->LayGraph;
-      Editor = std::make_unique<LiveEditor>(Lay);
+      Editor = std::make_unique<LiveEditor>(Lay, Regen);
       Graph = LayGraph;
       Back = argumentEdits(LayGraph, Good->Graph);
       Kernel = "kernel and ";
