@@ -4,15 +4,15 @@
     real_material_blend.py OUT.blend [CASE]
 
 The scene (Blender's Z up), built on make_world_blend.py's: a grey diffuse floor, a smooth UV
-sphere (radius 0.8, UV-mapped) with a Principled BSDF whose Base Color, Roughness and Normal come
-from three images this script makes beside OUT.blend -- albedo.png (8-bit, sRGB: a tile pattern
-of four colours with dark grout), roughness.png (8-bit, Non-Color: 0.25 on the tiles, 0.8 in
-the grout) and normal.png (8-bit, Non-Color: a tangent-space normal map of the grout's
-grooves and a dome on each tile, through a Normal Map node of Strength 1) -- the world an
-Environment Texture of make_world_blend.py's sky (an EXR with a small sun) and an area lamp
-(1 m square, 60 W, warm) on the other side. Cycles with the settings texrender reproduces
-(make_blend.py's reproducible()). CASES: "real" (as above), "real-metal" (Metallic 1, the
-albedo as the metal's colour).
+sphere (make_world_blend.py's, radius 0.8, UV-mapped) with a Principled BSDF whose Base Color,
+Roughness and Normal come from three images this script makes beside OUT.blend -- albedo.png
+(8-bit, sRGB: a tile pattern of four colours with dark grout), roughness.png (8-bit, Non-Color:
+0.25 on the tiles, 0.8 in the grout) and normal.png (8-bit, Non-Color: a tangent-space normal
+map of a dome on each tile, flat grout, through a Normal Map node of Strength 1) -- the world
+an Environment Texture of make_world_blend.py's sky (an EXR with a small sun) and an area lamp
+(1 m square, 60 W, warm). Cycles with the settings texrender reproduces (make_blend.py's
+reproducible()). CASES: "real" (as above), "real-metal" (Metallic 1, the albedo as the metal's
+colour).
 """
 import math
 import os
@@ -67,21 +67,6 @@ def save_png(bpy, folder, name, rgb, colorspace):
     return img
 
 
-def uv_sphere(radius, center):
-    import bmesh
-    import bpy
-    mesh = bpy.data.meshes.new("ball")
-    bm = bmesh.new()
-    bm.loops.layers.uv.new("UVMap")
-    bmesh.ops.create_uvsphere(bm, u_segments=64, v_segments=32, radius=radius, calc_uvs=True)
-    bmesh.ops.translate(bm, verts=bm.verts, vec=center)
-    bm.to_mesh(mesh)
-    bm.free()
-    for poly in mesh.polygons:
-        poly.use_smooth = True
-    return mesh
-
-
 def pbr_material(bpy, folder, metallic):
     albedo, rough, normal = patterns()
     m = bpy.data.materials.new("Tiles")
@@ -111,7 +96,7 @@ def make(out, case):
     import bpy
     from make_blend import add_mesh, new_scene, quad, simple
     from make_lamp_blend import aim, lamp
-    from make_world_blend import map_image
+    from make_world_blend import map_image, sphere_mesh
     if case not in CASES:
         raise SystemExit("real_material_blend.py: unknown case '%s' (cases: %s)"
                          % (case, ", ".join(CASES)))
@@ -125,7 +110,7 @@ def make(out, case):
     scene.camera = cam
     add_mesh("Floor", quad("floor", 8.0, 0.0), simple("Floor", "ShaderNodeBsdfDiffuse",
                                                        (0.5, 0.5, 0.5, 1)))
-    ball = add_mesh("Ball", uv_sphere(0.8, (0.0, 0.0, 0.8)),
+    ball = add_mesh("Ball", sphere_mesh(0.8, (0.0, 0.0, 0.8), uvs=True),
                     pbr_material(bpy, folder, 1.0 if case == "real-metal" else 0.0))
     ball.rotation_euler = (0.0, 0.0, math.radians(30.0))
     t = scene.world.node_tree
