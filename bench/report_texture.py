@@ -55,12 +55,12 @@ def per_node_cycles_lines(d):
     lines = ["Single Blender nodes against Cycles SVM, one thread each (`bench/per_node_cycles.py`, "
              "at %s, load average %.1f-%.1f): Cycles' cost per sample is the median over %d "
              "rounds of a %dx%d, %d spp render of the node into Emission minus a constant "
-             "Emission's (bpy, CPU); texrender's is texcc-eval --time's kernel time per hit "
+             "Emission's (bpy, CPU; %s time of the bpy process); texrender's is texcc-eval --time's kernel time per hit "
              "(%d rounds). The user fBM runs in Cycles as OSL (bench/cpp_reference/userfbm.osl "
              "in a Script node, against a constant Emission under OSL). The rounds' "
              "differences spread widely on this machine (bench/texture-speed.md)." % (
                  d["git"], min(loads), max(loads), d["reps"], d["size"], d["size"], d["spp"],
-                 d["rounds"]), "",
+                 "CPU" if d.get("clock") == "cpu" else "wall", d["rounds"]), "",
              "| node | Cycles | ns/sample | texrender inline | interp | shape |",
              "|---|---|---|---|---|---|"]
     for name, r in d["nodes"].items():
