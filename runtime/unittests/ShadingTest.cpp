@@ -156,10 +156,16 @@ TEST(Shading, EmissionSeenDirectly) {
 TEST(Shading, GlossyAlbedo) {
   if (!haveDevice())
     GTEST_SKIP() << "no OpenCL device";
-  const std::pair<float, double> Cases[] = {{0.2f, 0.9939}, {0.5f, 0.9153}, {0.9f, 0.4199}};
-  for (auto [Roughness, E] : Cases)
+  // Cycles 5.0's GGX with a constant-colour Fresnel C under a white sky, seen from above:
+  // single scattering C E (E the directional albedo at normal incidence) plus the multiple
+  // scattering its albedo scaling adds back, C F_ms (1 - E), with F_ms = C Eavg / (1 - C (1 -
+  // Eavg)) (Eavg the cosine-weighted average of E; both from rt_ggx_albedo.h's tables).
+  const struct { float Roughness; double E, Eavg; } Cases[] = {
+      {0.2f, 0.9980, 0.9920}, {0.5f, 0.9153, 0.8814}, {0.9f, 0.4200, 0.5024}};
+  for (auto [Roughness, E, Eavg] : Cases)
     for (double C : {1.0, 0.5}) {
-      const double Albedo = C * (E + C * (1.0 - E));
+      const double Fms = C * Eavg / (1.0 - C * (1.0 - Eavg));
+      const double Albedo = C * (E + Fms * (1.0 - E));
       EXPECT_NEAR(floorRadiance(leaf("glossy", float(C), Roughness), {sky(1.0f)}, 128), Albedo,
                   0.02 * Albedo)
           << "roughness " << Roughness << ", colour " << C;
