@@ -5,6 +5,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -51,3 +52,28 @@ def write_reference(script, blend, make_args, spp, expected, blocks, tolerance, 
                     "\n")
     subprocess.check_call([sys.executable, os.path.join(HERE, "region_means.py"), blend + ".npy",
                            expected, "--write"] + (["--edges"] if edges else []))
+
+
+def case_main(script, make, cases, default, kind):
+    """The command line of a make_*_blend.py script with cases (make(OUT, CASE) writes one):
+    SCRIPT OUT.blend [CASE] (default `default`); SCRIPT --all OUTDIR (every case of `cases`,
+    OUTDIR/CASE.blend, in one bpy process); SCRIPT --render BLEND SPP; SCRIPT --reference
+    [--spp N] [--cases A,B] (each case's Cycles block means into cycles-KIND-CASE.json, 4 x 3
+    blocks, tolerance 0.02 when new; N default 4096)."""
+    argv = sys.argv[1:]
+    if argv[0] == "--render":
+        render_file(argv[1], int(argv[2]))
+    elif argv[0] == "--reference":
+        spp = int(argv[argv.index("--spp") + 1]) if "--spp" in argv else 4096
+        chosen = argv[argv.index("--cases") + 1].split(",") if "--cases" in argv else cases
+        work = tempfile.mkdtemp()
+        for case in chosen:
+            expected = os.path.join(HERE, "cycles-%s-%s.json" % (kind, case))
+            write_reference(script, os.path.join(work, case + ".blend"), [case], spp, expected,
+                            (4, 3), 0.02)
+            print("%s: %s: %s (%d spp)" % (os.path.basename(script)[:-3], case, expected, spp))
+    elif argv[0] == "--all":
+        for case in cases:
+            make(os.path.join(argv[1], case + ".blend"), case)
+    else:
+        make(argv[0], argv[1] if len(argv) > 1 else default)

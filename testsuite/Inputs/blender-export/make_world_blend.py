@@ -25,7 +25,6 @@ writes the 16x16-pixel block means into cycles-world-CASE.json (region_means.py 
 import math
 import os
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -140,27 +139,6 @@ def make(out, case):
     bpy.ops.wm.save_as_mainfile(filepath=out)
 
 
-def reference(spp, cases):
-    from cycles_render import write_reference
-    work = tempfile.mkdtemp()
-    for case in cases:
-        expected = os.path.join(HERE, "cycles-world-%s.json" % case)
-        write_reference(__file__, os.path.join(work, case + ".blend"), [case], spp, expected,
-                        (4, 3), 0.02)
-        print("make_world_blend: %s: %s (%d spp)" % (case, expected, spp))
-
-
 if __name__ == "__main__":
-    if sys.argv[1] == "--render":
-        from cycles_render import render_file
-        render_file(sys.argv[2], int(sys.argv[3]))
-    elif sys.argv[1] == "--reference":
-        spp = int(sys.argv[sys.argv.index("--spp") + 1]) if "--spp" in sys.argv else 4096
-        cases = sys.argv[sys.argv.index("--cases") + 1].split(",") if "--cases" in sys.argv \
-            else CASES
-        reference(spp, cases)
-    elif sys.argv[1] == "--all":
-        for case in CASES:  # one bpy process for every case: OUTDIR/CASE.blend
-            make(os.path.join(sys.argv[2], case + ".blend"), case)
-    else:
-        make(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "env")
+    from cycles_render import case_main
+    case_main(__file__, make, CASES, "env", "world")
