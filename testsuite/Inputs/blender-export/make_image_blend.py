@@ -144,8 +144,8 @@ def make(out, refused=False):
 def reference(spp):
     """Cycles' block means (8x8 pixels; the planes' edges marked) into REFERENCE."""
     from cycles_render import write_reference
-    write_reference(__file__, os.path.join(tempfile.mkdtemp(), "image.blend"), [], spp, REFERENCE,
-                    (8, 6), 0.01, edges=True)
+    blend = os.path.join(tempfile.mkdtemp(), "image.blend")
+    write_reference(__file__, blend, [], spp, REFERENCE, (8, 6), 0.01, edges=True)
 
 
 if __name__ == "__main__":
