@@ -96,7 +96,12 @@ private:
   FileContext &FC;
 };
 
-/// Bounds every loop of user code with the work-item's loop budget (Safety.cpp): its
+/// The number of iterations of `for (int i = A; i OP B; ++i / i++ / --i / i--)` with integer
+/// constants A and B (LoopBudget.cpp); std::nullopt for any other loop. ArrayBounds uses it
+/// for the range of such a loop's counter.
+std::optional<uint64_t> constantTripCount(const clang::ForStmt *F, const clang::ASTContext &Ctx);
+
+/// Bounds every loop of user code with the work-item's loop budget (LoopBudget.cpp): its
 /// condition ends with `&& texcc_loop_continues(texcc_ctx, __LINE__)` (texcc_device.h).
 class LoopBudget : public MatchFinder::MatchCallback {
 public:
@@ -107,7 +112,7 @@ public:
 private:
   void reportUnbounded(clang::SourceLocation Loc);
   /// Iterations a charged `for` accounts for per iteration of its own: 1 plus the whole count of
-  /// every constant loop nested in it that it charges for (Safety.cpp, perIteration); 1 when
+  /// every constant loop nested in it that it charges for (LoopBudget.cpp, perIteration); 1 when
   /// it charges for none. Memoized per loop.
   uint64_t perIteration(const clang::ForStmt *F, const clang::FunctionDecl *Fn);
   std::map<const clang::Stmt *, uint64_t> PerIterationMemo;

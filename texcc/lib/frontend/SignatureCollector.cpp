@@ -76,10 +76,11 @@ std::set<std::string> SignatureCollector::reachableFrom(const std::string &Renam
   return Seen;
 }
 
-/// The number of times a for loop runs when that is plain from its text: `for (int i = A;
-/// i < B; ++i)` with integer constants A and B (also <=, >, >=, i++, --i, i--, i += C, i -= C);
-/// otherwise std::nullopt.
-static std::optional<uint64_t> constantTripCount(const ForStmt *F, const ASTContext &Ctx) {
+/// For the cost estimate: the number of times a for loop runs when that is plain from its
+/// text: `for (int i = A; i < B; ++i)` with integer constants A and B (also <=, >, >=, i++,
+/// --i, i--, i += C, i -= C); otherwise std::nullopt. The loop budget's own count, which also
+/// requires that the body only reads the counter, is LoopBudget.cpp's constantTripCount.
+static std::optional<uint64_t> estimatedTripCount(const ForStmt *F, const ASTContext &Ctx) {
   const auto *Init = dyn_cast_or_null<DeclStmt>(F->getInit());
   const auto *Cond = dyn_cast_or_null<BinaryOperator>(F->getCond());
   if (!Init || !Init->isSingleDecl() || !Cond)
@@ -146,7 +147,7 @@ unsigned SignatureCollector::workCost(const FunctionDecl *FD,
       Cost += Times;
     uint64_t Inner = Times; // for the loop body, the condition and the increment
     if (const auto *F = dyn_cast<ForStmt>(S)) {
-      Inner = std::min(Cap, Times * constantTripCount(F, FC.Ctx).value_or(UnknownTrips));
+      Inner = std::min(Cap, Times * estimatedTripCount(F, FC.Ctx).value_or(UnknownTrips));
       Work.push_back({F->getInit(), Times});
       for (const Stmt *C : std::initializer_list<const Stmt *>{F->getCond(), F->getInc(), F->getBody()})
         Work.push_back({C, Inner});
