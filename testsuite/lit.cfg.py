@@ -20,6 +20,16 @@ config.test_exec_root = os.path.join(config.texcc_obj_root, "testsuite")
 # shadow memory, so tests that pin memory with `ulimit -v` cannot run there (UNSUPPORTED: asan).
 if getattr(config, "texcc_sanitize", "OFF").upper() in ("ON", "1", "TRUE", "YES"):
     config.available_features.add("asan")
+# REQUIRES: slow-tier — the slow tier (docs/testing.md): statistical comparisons with Cycles,
+# every-example and every-node sweeps, multi-process farm runs and large-scale reliability cases.
+# The default run (scripts/test.sh) reports them UNSUPPORTED; `scripts/test.sh --slow` (lit
+# --param slow-tier=1) runs them too, as CI does (.ci/run). Each marked test says why in a
+# "Slow tier:" comment and keeps a cheaper neighbour of its feature area in the default tier.
+if lit_config.params.get("slow-tier", "0") not in ("", "0"):
+    config.available_features.add("slow-tier")
+else:
+    lit_config.note("the slow tier is off: tests that REQUIRE slow-tier are skipped "
+                    "(scripts/test.sh --slow runs them)")
 tools = config.texcc_tools_dir
 config.substitutions.append(("%texcc-src", config.texcc_src_root))
 config.substitutions.append(("%inputs", os.path.join(config.test_source_root, "Inputs")))
