@@ -12,6 +12,11 @@ lit_args=()
 for arg in "$@"; do
   case "$arg" in
     --slow) lit_args+=(--param slow-tier=1) ;;
+    -h|--help)
+      echo "usage: scripts/test.sh [--slow] [LIT OPTION...]"
+      echo "  --slow   run the slow tier too (tests marked REQUIRES: slow-tier; docs/testing.md)"
+      echo "Set-up, build, then lit on the suite and the unit tests; other options go to lit:"
+      exec "$root/.venv/bin/lit" --help ;;
     *) lit_args+=("$arg") ;;
   esac
 done

@@ -9,7 +9,8 @@ a `code span` in the text that is one with an argument; `\\` continuations joine
   a #! line; `python3 SCRIPT` needs neither);
 - every option it passes is one the program accepts, checked against the program's own
   --help (never starting work): farm.py's texrender options against texrender --help,
-  scripts/test.sh's and test-asan.sh's against lit's (they pass their arguments on);
+  scripts/test.sh's against its own --help (its options, then lit's, to which it passes the
+  others), test-asan.sh's against lit's (it passes its arguments on);
 - cheap commands run for real, as written, in a scratch folder whose entries link to the
   repository's (texcc on an input that exists: a second or less);
 - a program that needs an optional part that is missing (Ray, bench's matplotlib) is reported as
@@ -43,7 +44,7 @@ PROGRAMS = {
     "scripts/main.sh": {"options": []},
     "scripts/setup.sh": {"options": []},
     "scripts/build.sh": {"options": []},
-    "scripts/test.sh": {"help": [".venv/bin/lit", "--help"]},
+    "scripts/test.sh": {"help": ["scripts/test.sh", "--help"]},
     "scripts/test-asan.sh": {"help": [".venv/bin/lit", "--help"]},
     "scripts/farm.py": {"help": ["scripts/farm.py", SUB, "--help"], "passthrough": "texrender"},
     "scripts/blender_export.py": {"help": ["scripts/blender_export.py", "--help"]},
