@@ -18,8 +18,8 @@ AO rays per hit. (This replaces bench/ao_embree.py, its short Embree-only versio
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common
 
 SCENE = "examples/atrium/scene.json"
 GRAPH = "examples/rust/graph.json"
@@ -91,7 +91,7 @@ def main():
     import tempfile
     import time
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--size", default="512x512")
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--samples", default="1,8,32")

@@ -10,20 +10,18 @@ import sys
 import tempfile
 import time
 
-import accuracy
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
 import ao
-import common
-import cycles
 import edit_session
 import edits
 import instructions
 import lookdev
 import per_hit
 import report
-import resources
 import stability
 import table1
 import value_stack
+from texcc_tools.bench import accuracy, common, cycles, resources
 
 # The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
@@ -37,8 +35,7 @@ FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),
 def main():
     ap = argparse.ArgumentParser(description="texcc benchmarks")
     ap.add_argument("--quick", action="store_true", help="small sizes (under 15 minutes)")
-    ap.add_argument("--build", default=os.environ.get("TEXCC_BUILD_DIR",
-                                                      os.path.join(common.ROOT, "build")))
+    common.add_build_argument(ap)
     ap.add_argument("--device", default="0")
     ap.add_argument("--only", nargs="*", choices=[n for n, _ in FIGURES])
     ap.add_argument("--report-only", action="store_true", help="only regenerate the report")

@@ -6,7 +6,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import common  # noqa: E402
+from texcc_tools.bench import common
 
 COLORS = {"interp": "tab:blue", "inline": "tab:orange", "wavefront": "tab:green",
           "shape": "tab:red"}

@@ -40,8 +40,8 @@ import tempfile
 import threading
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common
 
 VENV_PYTHON = os.path.join(common.ROOT, ".venv", "bin", "python")
 MAKE_SCENE = os.path.join(common.ROOT, "examples", "blender", "make_scene.py")
@@ -161,7 +161,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--scenes", default=",".join(SCENES))
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--work", default=None)
     ap.add_argument("--json", default=os.path.join(common.RESULTS, "coldstart.json"))
     ap.add_argument("--timeout", type=int, default=600)

@@ -21,7 +21,7 @@ the same folder's proctex.interp.cl (--tier=interp)."""
 import os
 import shutil
 
-import common
+from texcc_tools.bench import common
 
 EDIT_DIR = os.path.join(common.BENCH, "inputs", "edit")
 SCENE = os.path.join(common.ROOT, "examples", "atrium", "scene.json")

@@ -17,7 +17,7 @@ import json
 import os
 import shutil
 
-import common
+from texcc_tools.bench import common
 
 EDIT_DIR = os.path.join(common.BENCH, "inputs", "edit")
 SCENE = os.path.join(common.ROOT, "examples", "atrium", "scene.json")

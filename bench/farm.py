@@ -26,15 +26,13 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import exr, farm
+from texcc_tools.paths import BENCH, INPUTS, default_build_dir
 
-import farm  # noqa: E402
-import texexr  # noqa: E402
-
-SCENE = os.path.join(ROOT, "testsuite", "Inputs", "runtime", "box", "scene.json")
-GRAPH = os.path.join(ROOT, "testsuite", "Inputs", "runtime", "const-tex", "graph-ao.json")
-BIN = os.path.join(ROOT, "build", "bin")
+SCENE = os.path.join(INPUTS, "runtime", "box", "scene.json")
+GRAPH = os.path.join(INPUTS, "runtime", "const-tex", "graph-ao.json")
+BIN = os.path.join(default_build_dir(), "bin")
 
 
 def timed_tile(*args):
@@ -53,12 +51,12 @@ def main():
     p.add_argument("--size", default="128x128")
     p.add_argument("--spp", default="16")
     p.add_argument("--reps", type=int, default=2)
-    p.add_argument("-o", default=os.path.join(ROOT, "bench", "results", "farm.json"))
+    p.add_argument("-o", default=os.path.join(BENCH, "results", "farm.json"))
     a = p.parse_args()
     ray = farm.import_ray()
     import numpy as np
     from ray import cloudpickle
-    for module in (farm, texexr):  # the workers do not have scripts/ on sys.path
+    for module in (farm, exr):  # a worker of another cluster need not have the package
         cloudpickle.register_pickle_by_value(module)
 
     width, height = (int(v) for v in a.size.split("x"))
@@ -75,7 +73,7 @@ def main():
                        check=True)
         singles.append(time.perf_counter() - t0)
     single = statistics.median(singles[1:])
-    whole = texexr.read_exr(farm.read_bytes(whole_path))
+    whole = exr.read_exr(farm.read_bytes(whole_path))
     files = farm.make_bundle(SCENE, tex)
     digest = farm.bundle_digest(files)
     result = {"scene": "testsuite/Inputs/runtime/box + const-tex/graph-ao.json", "size": a.size,
@@ -101,7 +99,7 @@ def main():
                 out_bytes = statistics.mean(len(images[0]) for images, _ in got)
                 image = np.zeros_like(whole)
                 for (x, y, w, h), (images, _) in zip(tiles, got):
-                    image[y:y + h, x:x + w] = texexr.read_exr(images[0])
+                    image[y:y + h, x:x + w] = exr.read_exr(images[0])
                 if not np.array_equal(image, whole):
                     sys.exit("bench/farm.py: %d workers, %dx%d tiles: the stitched frame differs "
                              "from texrender's" % (workers, tile, tile))

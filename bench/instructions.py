@@ -19,8 +19,10 @@ import os
 import re
 import shutil
 
-import common
-import resources
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import manifest
+from texcc_tools.bench import common
+from texcc_tools.bench import resources
 
 # Hits per material, quick and full alike: a count does not vary between runs, and at --grid 256
 # the counted runs built their kernels again under valgrind (about a minute each; the native
@@ -65,8 +67,7 @@ def count(tools, folder, grid):
 
 
 def textured_hits(folder, grid):
-    with open(os.path.join(folder, "layout.json")) as f:
-        layout = json.load(f)
+    layout = manifest.load(folder)
     return grid * sum(1 for m in layout["materials"] if m.get("outputs"))
 
 
@@ -149,7 +150,7 @@ def measure_checks(tools, names, grid):
 def main():
     import argparse
     ap = argparse.ArgumentParser(description="--checks: the checks' cost in instructions per hit")
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--work", default=None)
     ap.add_argument("--checks", action="store_true", required=True)
     ap.add_argument("--only", default=",".join(CHECK_GRAPHS))

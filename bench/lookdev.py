@@ -51,7 +51,8 @@ import tempfile
 import threading
 import time
 
-import common
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common
 
 SCENE = os.path.join(common.ROOT, "examples", "atrium", "scene.json")
 RUST = os.path.join(common.ROOT, "examples", "rust")
@@ -527,7 +528,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--transport", choices=("auto", "ws", "control"), default="auto")
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--device", default="0")
     ap.add_argument("--out", help="result file (default bench/results/lookdev.json)")
     ap.add_argument("--save-to-image", action="store_true",

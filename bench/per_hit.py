@@ -33,9 +33,10 @@ import json
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
-import resources  # noqa: E402
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import manifest
+from texcc_tools.bench import common
+from texcc_tools.bench import resources
 
 CONFIGS = (("inline", "inline", []),
            ("interp", "interp", []),
@@ -64,8 +65,7 @@ NODE_CONFIGS = (("inline", "inline", []), ("interp", "interp", []))
 
 def hoisted_values(folder):
     """{function: [hoisted value names]} of a texcc output folder's layout.json."""
-    with open(os.path.join(folder, "layout.json")) as f:
-        layout = json.load(f)
+    layout = manifest.load(folder)
     return {fn["name"]: [v["name"] for v in fn["hoisted"]["values"]]
             for fn in layout["functions"] if "hoisted" in fn}
 
@@ -153,7 +153,7 @@ def measure(tools, quick):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--work", default=None)
     ap.add_argument("--rounds", type=int, default=101)
     ap.add_argument("--grid", type=int, default=4096)

@@ -15,9 +15,9 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
-import cycles  # noqa: E402
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common
+from texcc_tools.bench import cycles
 
 REAL_BLEND = os.path.join(common.BENCH, "inputs", "real_material_blend.py")
 REAL_CASES = ("real", "real-metal")
@@ -26,7 +26,7 @@ LAMP_CASES = ("interior",)
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--work", default=None)
     ap.add_argument("--size", default="128x96")
     ap.add_argument("--spp", type=int, default=256)

@@ -14,7 +14,8 @@ import argparse
 import json
 import os
 
-import common
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common
 import instructions
 
 EXAMPLES = {"rust": "examples/rust/graph.json", "scratches": "examples/scratches/graph.json",

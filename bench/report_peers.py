@@ -1,6 +1,6 @@
 """BENCHMARKS.md's sections on texrender beside Blender Cycles (bench/cycles.py) and on single
 Blender nodes (bench/per_hit.py --nodes); bench/report.py assembles the page."""
-import common
+from texcc_tools.bench import common
 from common import fmt, pct
 
 

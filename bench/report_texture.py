@@ -1,6 +1,6 @@
 """BENCHMARKS.md section 2g: the texture code's speed against its C reference
 (bench/texture_speed.py) and against Cycles per node (bench/per_node_cycles.py)."""
-import common
+from texcc_tools.bench import common
 
 
 def texture_speed_section(d):

@@ -23,11 +23,12 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import common  # noqa: E402
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import exr
+from texcc_tools.bench import common
+from texcc_tools.bench.sampling_cycles import TAG, spread
 
-VENV_PYTHON = os.path.join(common.ROOT, ".venv", "bin", "python")
+from texcc_tools.paths import VENV_PYTHON  # noqa: E402
 MAKE_SCENE = os.path.join(common.ROOT, "examples", "blender", "make_scene.py")
 SCENES = {"diffuse": ("bench/inputs/diffuse/graph.json", "examples/atrium/scene-diffuse.json"),
           "rust-model": ("examples/rust/graph.json", "examples/atrium/scene.json")}
@@ -38,7 +39,6 @@ PARTS = {"all": (15, 0, 1000000), "sun": (SUN, 0, 1000000), "sky": (SKY, 0, 1000
          "meshes": (MESH | MATERIAL, 0, 1000000), "length1": (15, 1, 1), "direct": (15, 2, 2),
          "indirect": (15, 3, 1000000), "sun-direct": (SUN, 2, 2), "sky-direct": (SKY, 2, 2),
          "sun-indirect": (SUN, 3, 1000000), "sky-indirect": (SKY, 3, 1000000)}
-TAG = "SAMPLINGJSON "
 
 
 def sampler_defines(sampler):
@@ -66,23 +66,8 @@ def split_kernels(work, part, sampler="sobol"):
 
 
 def read_exr(path):
-    import OpenEXR
     import numpy as np
-    with OpenEXR.File(path) as f:
-        ch = f.channels()
-        if "RGB" in ch:
-            return np.array(ch["RGB"].pixels, dtype=np.float64)[:, :, :3]
-        return np.stack([np.array(ch[c].pixels, dtype=np.float64) for c in "RGB"], axis=-1)
-
-
-def spread(imgs):
-    """Mean per-pixel variance across seeds (unbiased), the image mean, and the mean pair RMSE."""
-    import numpy as np
-    imgs = np.stack(imgs)
-    pairs = [float(np.sqrt(((imgs[i] - imgs[j]) ** 2).mean()))
-             for i in range(len(imgs)) for j in range(i + 1, len(imgs))]
-    return {"meanPixelVariance": float(imgs.var(axis=0, ddof=1).mean()),
-            "mean": float(imgs.mean()), "meanPairRmse": float(np.mean(pairs))}
+    return np.asarray(exr.read_file(path), np.float64)
 
 
 def children_cpu():
@@ -134,65 +119,6 @@ def texrender_split(tools, args, textures, scene, samplers):
     return out
 
 
-# --- Cycles (runs under .venv's Python: python3 bench/sampling.py --cycles-worker REQUEST) -------
-
-def cycles_worker(req):
-    channel = os.fdopen(os.dup(1), "w")
-    os.dup2(2, 1)
-    sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != HERE]
-    import bpy
-    import numpy as np
-    import OpenEXR
-    bpy.ops.wm.open_mainfile(filepath=req["blend"])
-    scene = bpy.context.scene
-    scene.render.resolution_x, scene.render.resolution_y = req["size"]
-    scene.render.resolution_percentage = 100
-    scene.cycles.samples = req["spp"]
-    vl = scene.view_layers[0]
-    for name in ("sun", "sky"):
-        vl.lightgroups.add(name=name)
-    for obj in scene.objects:
-        if obj.type == "LIGHT":
-            obj.lightgroup = "sun"
-    scene.world.lightgroup = "sky"
-    vl.use_pass_diffuse_direct = vl.use_pass_diffuse_indirect = vl.use_pass_diffuse_color = True
-    vl.use_pass_glossy_direct = vl.use_pass_glossy_indirect = vl.use_pass_glossy_color = True
-    vl.use_pass_environment = vl.use_pass_emit = True
-    if hasattr(scene.render.image_settings, "media_type"):  # Blender 5
-        scene.render.image_settings.media_type = "MULTI_LAYER_IMAGE"
-    scene.render.image_settings.file_format = "OPEN_EXR_MULTILAYER"
-    scene.render.image_settings.color_depth = "32"
-    parts = {}
-    seconds = []
-    for seed in range(1, req["seeds"] + 1):
-        scene.cycles.seed = seed
-        scene.render.filepath = os.path.join(req["work"], "cycles-split-%d.exr" % seed)
-        t0 = time.perf_counter()
-        bpy.ops.render.render(write_still=True)
-        seconds.append(time.perf_counter() - t0)
-        with OpenEXR.File(scene.render.filepath) as f:
-            ch = {}
-            for part in f.parts:
-                for name, c in part.channels.items():
-                    ch[name] = c.pixels
-        def rgb(pass_name):
-            px = np.asarray(ch["ViewLayer." + pass_name], np.float64)
-            return px[:, :, :3]
-        d = {"all": rgb("Combined"), "sun": rgb("Combined_sun"), "sky": rgb("Combined_sky"),
-             "length1": rgb("Environment") + rgb("Emission"),
-             "direct": rgb("Diffuse Direct") * rgb("Diffuse Color")
-             + rgb("Glossy Direct") * rgb("Glossy Color"),
-             "indirect": rgb("Diffuse Indirect") * rgb("Diffuse Color")
-             + rgb("Glossy Indirect") * rgb("Glossy Color")}
-        for k, v in d.items():
-            parts.setdefault(k, []).append(v)
-    out = {k: spread(v) for k, v in parts.items()}
-    for k in out:
-        out[k]["renderSeconds"] = float(np.median(seconds))
-    channel.write(TAG + json.dumps({"parts": out, "version": bpy.app.version_string}) + "\n")
-    channel.flush()
-
-
 def cycles_split(tools, args):
     blend = os.path.join(tools.work, "atrium-%s.blend" % args.variant)
     common.run([VENV_PYTHON, MAKE_SCENE, blend, "--variant", args.variant])
@@ -200,7 +126,7 @@ def cycles_split(tools, args):
     req = {"blend": blend, "size": [w, h], "spp": args.spp, "seeds": args.seeds,
            "work": tools.work}
     common.log("sampling: Cycles, %d seeds" % args.seeds)
-    p = subprocess.run([VENV_PYTHON, os.path.abspath(__file__), "--cycles-worker",
+    p = subprocess.run([VENV_PYTHON, "-P", "-m", "texcc_tools.bench.sampling_cycles",
                         json.dumps(req)], stdout=subprocess.PIPE, text=True)
     for line in p.stdout.splitlines():
         if line.startswith(TAG):
@@ -210,10 +136,10 @@ def cycles_split(tools, args):
 
 def main():
     if len(sys.argv) == 3 and sys.argv[1] == "--cycles-worker":
-        cycles_worker(json.loads(sys.argv[2]))
+        subprocess.run([VENV_PYTHON, "-P", "-m", "texcc_tools.bench.sampling_cycles", sys.argv[2]])
         return
     ap = argparse.ArgumentParser()
-    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    common.add_build_argument(ap)
     ap.add_argument("--size", default="128x128")
     ap.add_argument("--spp", type=int, default=64)
     ap.add_argument("--seeds", type=int, default=4)

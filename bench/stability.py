@@ -12,7 +12,8 @@ import os
 import shutil
 import time
 
-import common
+from texcc_tools import manifest
+from texcc_tools.bench import common
 
 MATH = os.path.join(common.ROOT, "textures", "math.cl")
 SCENE = os.path.join(common.BENCH, "inputs", "sweep", "scene.json")
@@ -69,8 +70,7 @@ def point(tools, family, size, mode, cap):
     folder = os.path.join(tools.work, tag)
     start = time.perf_counter()
     texcc_s = common.texcc(tools, path, folder, mode, timeout=cap)
-    with open(os.path.join(folder, "layout.json")) as f:
-        layout = json.load(f)
+    layout = manifest.load(folder)
     cache = os.path.join(tools.work, "cache-" + tag)
     shutil.rmtree(cache, ignore_errors=True)
     shutil.copytree(tools.sweep_cache, cache)

@@ -4,7 +4,7 @@ model in plain diffuse gray. Every repetition renders all configurations in turn
 first), so each ratio compares renders of one repetition; the table gives medians."""
 import os
 
-import common
+from texcc_tools.bench import common
 
 PAPER = {"rust": {"cycles": 46, "rtx": 33, "paper": 21},
          "scratches": {"cycles": 9, "rtx": 4, "paper": 15}}

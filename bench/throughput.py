@@ -16,7 +16,9 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import process
+from texcc_tools.paths import ROOT, add_build_argument
 
 CASES = [
     # name, scene, graph, texcc sources, texrender options
@@ -31,14 +33,15 @@ CASES = [
 
 
 def run(cmd):
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        sys.exit("throughput.py: %s failed:\n%s" % (" ".join(cmd), r.stderr))
+    try:
+        process.run(cmd)
+    except process.RunError as e:
+        sys.exit("throughput.py: %s" % e)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    add_build_argument(ap)
     ap.add_argument("--device", default="0")
     ap.add_argument("--trace", default="opencl,embree", help="backends, comma-separated")
     args = ap.parse_args()

@@ -21,7 +21,9 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import process
+from texcc_tools.paths import ROOT, add_build_argument
 CONFIGS = {"diffuse": ("examples/atrium/scene-diffuse.json", "bench/inputs/diffuse/graph.json"),
            "rust": ("examples/atrium/scene.json", "examples/rust/graph.json")}
 TRACES = ["opencl", "embree"]
@@ -30,14 +32,15 @@ STAGES = ["closest_hit_primary", "closest_hit_bounce", "shadow", "ao_rays", "ao_
 
 
 def run(cmd):
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        sys.exit("trace_backends.py: %s failed:\n%s" % (" ".join(cmd), r.stderr))
+    try:
+        process.run(cmd)
+    except process.RunError as e:
+        sys.exit("trace_backends.py: %s" % e)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    add_build_argument(ap)
     ap.add_argument("--reps", default="5,3", help="repetitions at 1 spp and at 16 spp")
     ap.add_argument("--size", default="512x512")
     ap.add_argument("--configs", default=",".join(CONFIGS))

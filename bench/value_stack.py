@@ -15,8 +15,8 @@ of LDS per compute unit and 4 SIMDs, and a work-group of 64 is one wave, so at m
 floor(floor(65536 / LDS) / 4) waves per SIMD."""
 import os
 
-import common
-import resources
+from texcc_tools.bench import common
+from texcc_tools.bench import resources
 
 
 def registers(n):

@@ -19,7 +19,8 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.paths import ROOT, add_build_argument
 
 # Outputs of the nodes that textures/blender/ implements without a point fixture (or
 # whose exported form the fixtures do not evaluate), how they are checked, and what is refused.
@@ -93,7 +94,7 @@ def vec(v):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    add_build_argument(ap)
     ap.add_argument("--no-device", action="store_true")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as work:

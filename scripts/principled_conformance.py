@@ -31,10 +31,9 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-sys.path.insert(0, os.path.join(ROOT, "testsuite", "Inputs", "blender-export"))
-PY = os.path.join(ROOT, ".venv", "bin", "python")
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import exr, process
+from texcc_tools.paths import ROOT, VENV_PYTHON as PY, add_build_argument
 
 
 def seed_list(text):
@@ -45,19 +44,15 @@ def seed_list(text):
 
 
 def run(cmd):
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        sys.exit("principled_conformance: failed: %s\n%s" % (" ".join(cmd), r.stderr[-3000:]))
-    return r.stdout
+    try:
+        return process.run(cmd, tail=3000).stdout
+    except process.RunError as e:
+        sys.exit("principled_conformance: %s" % e)
 
 
 def read_exr(path):
     import numpy as np
-    from texexr import read_exr as rd
-    with open(path, "rb") as f:
-        img = rd(f.read())
-    img = img[0] if isinstance(img, tuple) else img
-    return np.asarray(img, np.float64)[..., :3]
+    return np.asarray(exr.read_file(path), np.float64)
 
 
 class Tools:
@@ -81,7 +76,7 @@ class Tools:
 def cycles_render(scene, w, h, spp, seed, path):
     """Cycles at w x h, spp, seed; the linear RGB image (top row first)."""
     import numpy as np
-    from cycles_render import render_npy
+    from texcc_tools.testing.cycles_render import render_npy
     scene.render.resolution_x, scene.render.resolution_y = w, h
     scene.render.resolution_percentage = 100
     scene.cycles.seed = seed
@@ -357,7 +352,7 @@ def ring_table(which, a, b, w, h, rows, title):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("what", choices=("sphere", "table"))
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    add_build_argument(ap)
     ap.add_argument("--size")
     ap.add_argument("--spp", type=int, default=256)
     ap.add_argument("--seeds", type=seed_list, default=[1])

@@ -2,7 +2,8 @@
 # Installs what texcc needs on Debian 12, and nothing that is already there.
 # Idempotent: when everything is present it only checks (a second or two).
 #   Debian packages: installed with apt-get when run as root, otherwise listed.
-#   Python tools (lit, pinned): a project-local virtual environment in .venv/.
+#   Python tools (lit, pinned): a project-local virtual environment in .venv/, and the
+#   project's own package texcc_tools (pyproject.toml, python/texcc_tools/), editable.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -46,4 +47,14 @@ if [ ! -f "$stamp" ] || ! cmp -s "$pyreq" "$stamp"; then
   echo "setup: installing Python requirements into .venv" >&2
   "$venv/bin/python" -m pip install -q --disable-pip-version-check -r "$pyreq" >&2
   cp "$pyreq" "$stamp"
+fi
+# The project's package (python/texcc_tools/), editable: an edit of its modules needs no
+# reinstall; pyproject.toml's stamp (or a clone moved elsewhere) installs it again.
+pkgstamp="$venv/.pyproject.stamp"
+if [ ! -f "$pkgstamp" ] || ! cmp -s "$root/pyproject.toml" "$pkgstamp" ||
+   ! "$venv/bin/python" -c "import texcc_tools.paths as p, sys; sys.exit(p.ROOT != '$root')" 2>/dev/null; then
+  echo "setup: installing the texcc_tools package into .venv" >&2
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check \
+    --no-deps -e "$root" >&2
+  cp "$root/pyproject.toml" "$pkgstamp"
 fi

@@ -28,7 +28,9 @@ import sys
 import tempfile
 import zlib
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools import manifest
+from texcc_tools.paths import ROOT, add_build_argument
 FIXTURES = os.path.join(ROOT, "testsuite", "Inputs", "blender")
 SWATCHES = os.path.join(ROOT, "docs", "swatches")
 DOC = os.path.join(ROOT, "docs", "textures.md")
@@ -111,8 +113,7 @@ def evaluate(build, fixtures, size, work):
     out_dir = os.path.join(work, "out")
     subprocess.run([os.path.join(build, "bin", "texcc"), "--graph", graph_path, "-o", out_dir,
                     "--target=host"], check=True)
-    with open(os.path.join(out_dir, "layout.json")) as f:
-        index = {m["name"]: m["index"] for m in json.load(f)["materials"]}
+    index = {m["name"]: m["index"] for m in manifest.load(out_dir)["materials"]}
     points = [tuple(ORIGIN[k] + (i + 0.5) / size * AXIS_U[k] + (j + 0.5) / size * AXIS_V[k]
                     for k in range(3)) for j in range(size) for i in range(size)]
     args = type("Args", (), {"eval": os.path.join(build, "bin", "texcc-eval")})
@@ -151,7 +152,7 @@ def reference(rows, old_rows):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    add_build_argument(ap)
     ap.add_argument("--size", type=int, default=64)
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()

@@ -22,10 +22,10 @@ import os
 import subprocess
 import sys
 
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import texexr  # noqa: E402
+from texcc_tools import exr as texexr
 
 # (view transform, look, exposure, gamma); QUICK is the test's subset of ALL.
 QUICK = [

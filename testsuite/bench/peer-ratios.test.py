@@ -2,8 +2,7 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, sys.argv[1])
-import accuracy  # noqa: E402
+from texcc_tools.bench import accuracy
 
 points = []
 for renderer, (fixed, per, k) in {"texrender-sobol": (1.0, 0.01, 0.09),

@@ -2,9 +2,7 @@ import os
 import sys
 import tempfile
 
-sys.path.insert(0, sys.argv[1])
-import accuracy  # noqa: E402
-import startup_split  # noqa: E402
+from texcc_tools.bench import accuracy, startup_split
 
 WORK, WORKER = "10/11", "10/12"
 SAMPLES = [

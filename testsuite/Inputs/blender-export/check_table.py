@@ -19,9 +19,8 @@ import sys
 import bpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "scripts"))
-import blender_export  # noqa: E402
-from blender_conformance import set_curve_mapping  # noqa: E402
+from texcc_tools.blender import export as blender_export
+from texcc_tools.blender.conformance import set_curve_mapping
 
 OBJECT_ARGS = {"bboxMin", "bboxMax", "axisX", "axisY", "axisZ"}  # the object's, not the node's
 

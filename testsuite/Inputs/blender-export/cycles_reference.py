@@ -23,7 +23,7 @@ CASES = {"scene": ("cycles-means.json", []), "texture-only": ("cycles-texture-on
 
 def render(blend, exr, spp, transparent):
     import bpy
-    from cycles_render import render_npy
+    from texcc_tools.testing.cycles_render import render_npy
     bpy.ops.wm.open_mainfile(filepath=blend)
     render_npy(bpy.context.scene, spp, exr, exr + ".npy", transparent)
 

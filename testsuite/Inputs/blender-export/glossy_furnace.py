@@ -16,11 +16,10 @@ more in the outer ring.
 """
 import math
 import os
-import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "runtime"))
-from sphere_scene import furnace_scene, main, make_folder, read_image, write_json  # noqa: E402
+from texcc_tools.testing.sphere_scene import (furnace_scene, main, make_folder, read_image,
+                                              write_json)
 
 MATERIALS = {"grey_r0.1": ([0.5, 0.5, 0.5], 0.1), "orange_r0.15": ([0.9, 0.5, 0.2], 0.15)}
 # (cos wo from, to, tolerance): Cycles (256 spp) is within 0.1% of the colour in the two inner
@@ -82,7 +81,7 @@ def check(out):
 
 def cycles(out):
     import bpy
-    from cycles_render import render_npy
+    from texcc_tools.testing.cycles_render import render_npy
     for n, (colour, rough) in MATERIALS.items():
         bpy.ops.wm.read_factory_settings(use_empty=True)
         scene = bpy.context.scene

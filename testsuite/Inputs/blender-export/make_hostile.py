@@ -19,8 +19,7 @@ import sys
 
 import bpy
 
-sys.path.insert(0, __file__.rsplit("/", 1)[0])
-from make_blend import reproducible  # noqa: E402
+from make_blend import reproducible  # noqa: E402  (after bpy)
 
 
 def new_scene(name):

@@ -143,7 +143,7 @@ def make(out, refused=False):
 
 def reference(spp):
     """Cycles' block means (8x8 pixels; the planes' edges marked) into REFERENCE."""
-    from cycles_render import write_reference
+    from texcc_tools.testing.cycles_render import write_reference
     blend = os.path.join(tempfile.mkdtemp(), "image.blend")
     write_reference(__file__, blend, [], spp, REFERENCE, (8, 6), 0.01, edges=True)
 
@@ -152,8 +152,7 @@ if __name__ == "__main__":
     if sys.argv[1:2] == ["--reference"]:
         reference(int(sys.argv[2]) if len(sys.argv) > 2 else 1024)
     elif sys.argv[1:2] == ["--render"]:
-        sys.path.insert(0, HERE)
-        from cycles_render import render_file
+        from texcc_tools.testing.cycles_render import render_file
         render_file(sys.argv[2], int(sys.argv[3]), transparent=True)
     else:
         make(sys.argv[1], sys.argv[2:3] == ["refused"])

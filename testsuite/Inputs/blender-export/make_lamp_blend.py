@@ -27,10 +27,8 @@ writes the 16x16-pixel block means into cycles-lamp-CASE.json (region_means.py -
 """
 import math
 import os
-import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 
 CASES = ("point", "spot", "area-rect", "area-disk", "three-point", "sphere", "visible")
 
@@ -160,5 +158,5 @@ def interior(scene, cam, floor, wall, box):
 
 
 if __name__ == "__main__":
-    from cycles_render import case_main
+    from texcc_tools.testing.cycles_render import case_main
     case_main(__file__, make, CASES, "point", "lamp")

@@ -107,7 +107,6 @@ def square(bpy, name, uvs):
 
 def make(out, refused=False):
     import bpy
-    sys.path.insert(0, HERE)
     from make_blend import new_scene
     scene = new_scene(128, 64, 16, max_bounces=2, color=(0.0, 0.0, 0.0, 1.0))
     cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
@@ -162,7 +161,7 @@ def make(out, refused=False):
 
 def reference(spp):
     """Cycles' block means (8x8 pixels; the silhouettes marked) into REFERENCE."""
-    from cycles_render import write_reference
+    from texcc_tools.testing.cycles_render import write_reference
     blend = os.path.join(tempfile.mkdtemp(), "normal-map.blend")
     write_reference(__file__, blend, [], spp, REFERENCE, (16, 8), 0.01, edges=True)
 
@@ -171,8 +170,7 @@ if __name__ == "__main__":
     if sys.argv[1:2] == ["--reference"]:
         reference(int(sys.argv[2]) if len(sys.argv) > 2 else 1024)
     elif sys.argv[1:2] == ["--render"]:
-        sys.path.insert(0, HERE)
-        from cycles_render import render_file
+        from texcc_tools.testing.cycles_render import render_file
         render_file(sys.argv[2], int(sys.argv[3]), transparent=True)
     else:
         make(sys.argv[1], sys.argv[2:3] == ["refused"])

@@ -15,8 +15,7 @@ import sys
 
 import bpy
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_blend import new_scene  # noqa: E402
+from make_blend import new_scene  # noqa: E402  (after bpy)
 
 
 def copy_scene(base, name):

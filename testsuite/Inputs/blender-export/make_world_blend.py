@@ -24,10 +24,8 @@ writes the 16x16-pixel block means into cycles-world-CASE.json (region_means.py 
 """
 import math
 import os
-import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 
 CASES = ("env", "env-rotated")
 MAP_W, MAP_H = 128, 64
@@ -140,5 +138,5 @@ def make(out, case):
 
 
 if __name__ == "__main__":
-    from cycles_render import case_main
+    from texcc_tools.testing.cycles_render import case_main
     case_main(__file__, make, CASES, "env", "world")

@@ -19,8 +19,7 @@ import bpy
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "scripts"))
-import blender_export  # noqa: E402
+from texcc_tools.blender import export as blender_export
 
 PLANES = [("Plane", (0.0, 0.0, 0.0), (1.0, 1.0, 1.0, 1.0), 0, 0),
           ("Würfel.001", (1.5, -2.25, 0.75), (0.2, 0.6, 0.9, 0.4), 3, 7),

@@ -23,12 +23,10 @@ masking-shadowing and the multiple-bounce Fresnel of a coloured rough metal.
 import json
 import math
 import os
-import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "runtime"))
-from sphere_scene import main, make_folder, read_image, write_json  # noqa: E402
-from glossy_furnace import DIST, FOV, SIZE, cos_wo  # noqa: E402
+from glossy_furnace import DIST, FOV, SIZE, cos_wo
+from texcc_tools.testing.sphere_scene import main, make_folder, read_image, write_json
 
 # name: (base colour, roughness, metallic, specular IOR level)
 MATERIALS = {
@@ -109,7 +107,7 @@ def check(out):
 def cycles(out):
     import bpy
     import numpy as np
-    from cycles_render import render_npy
+    from texcc_tools.testing.cycles_render import render_npy
     ref = {"_": "Cycles 5.0.1 (bpy), %d spp, %dx%d, seed 1: per case-lighting, the mean linear RGB "
                 "of the pixels in each ring of cos wo %s (principled_cycles.py cycles)"
                 % (CYCLES_SPP, SIZE, SIZE, list(RINGS))}

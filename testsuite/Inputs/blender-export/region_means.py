@@ -14,9 +14,9 @@ import json
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "scripts"))
-import numpy as np  # noqa: E402
-import texexr  # noqa: E402
+import numpy as np
+
+from texcc_tools import exr as texexr
 
 
 def load(path, channels=3):

@@ -27,7 +27,6 @@ import tempfile
 import bpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 from make_blend import new_scene  # noqa: E402
 
 
@@ -174,7 +173,7 @@ def make_refusals(path):
 
 
 def reference(spp, case):
-    from cycles_render import render_npy
+    from texcc_tools.testing.cycles_render import render_npy
     work = tempfile.mkdtemp()
     blend = os.path.join(work, "nodes.blend")
     (make_bumped if case == "bumped" else make)(blend)

@@ -1,10 +1,8 @@
 """differ.py A.exr B.exr MIN: the mean absolute difference of the two images relative to B's
 mean must exceed MIN (the bump visibly changes the shading, not just the rounding)."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.environ["TEXCC_SRC"], "scripts"))
-from texexr import read_exr  # noqa: E402
+from texcc_tools.exr import read_exr
 
 a, b = (read_exr(open(p, "rb").read()) for p in sys.argv[1:3])
 rel = float(abs(a - b).mean() / abs(b).mean())

@@ -32,7 +32,6 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "scripts"))
 
 HEIGHT, FOV, K, DISTANCE = 3.0, 30.0, 100.0, 1.0
 
@@ -85,7 +84,7 @@ def footprint(i, j, w, h):
 
 def read(path):
     import numpy as np
-    from texexr import read_exr
+    from texcc_tools.exr import read_exr
     with open(path, "rb") as f:
         img = read_exr(f.read())
     return np.asarray(img[0] if isinstance(img, tuple) else img)

@@ -19,7 +19,6 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "scripts"))
 
 SUN_OFF = math.radians(70.0)
 RADIUS = 0.27  # degrees
@@ -39,7 +38,7 @@ def write_plane(out):
 def centre_mean(path, half):
     """The mean RGB of the (2 half)^2 pixels at the centre of the EXR at path."""
     import numpy as np
-    from texexr import read_exr
+    from texcc_tools.exr import read_exr
     with open(path, "rb") as f:
         img = read_exr(f.read())
     img = np.asarray(img[0] if isinstance(img, tuple) else img)

@@ -19,10 +19,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "scripts"))
-
-import shadowing  # noqa: E402
+import shadowing
 
 G1 = shadowing.g1(math.cos(shadowing.SUN_OFF), math.tan(math.radians(45)) ** 2 / 8)
 

@@ -25,10 +25,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "scripts"))
-
-from shadowing import centre_mean, g1, write_plane  # noqa: E402
+from shadowing import centre_mean, g1, write_plane
 
 CAMERA = (0.0, 1.0, 3.0)
 AWAY = (0.0, 1.0, -0.8)

@@ -1,13 +1,10 @@
 """make_tile.py OUT.exr WxH SEED: a WxH EXR of uniform random values (as texexr writes them;
 random, so that ZIP does not shrink it: the farm tests need outputs of a known size)."""
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
-                                "scripts"))
-import texexr  # noqa: E402
+from texcc_tools import exr as texexr
 
 out, size, seed = sys.argv[1], sys.argv[2], int(sys.argv[3])
 w, h = (int(v) for v in size.split("x"))

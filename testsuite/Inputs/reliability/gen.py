@@ -20,8 +20,7 @@ import os
 import sys
 
 # The chain is the stack-sizing tests' own (same add(a, b) signature as tex.cl's).
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "graph"))
-from gen_graph import chain  # noqa: E402
+from texcc_tools.testing.gen_graph import chain
 
 
 def material(root):

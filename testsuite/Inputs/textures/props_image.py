@@ -1,11 +1,8 @@
 """Defining properties of textures/image.cl and textures/triplanar.cl, through texcc's host
 target, on a small synthetic image fed to the evaluator (texel values known exactly)."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from texprops import Oracle, check, finish, lcg_points, main_args  # noqa: E402
+from texprops import Oracle, check, finish, lcg_points, main_args
 
 UV = {"attr": "TexCoord0"}
 P = {"attr": "ObjectPos"}

@@ -1,11 +1,8 @@
 """Defining properties of textures/mix.cl and textures/math.cl, through texcc's host target.
 Free inputs come from attributes: a float from AO, float3s from ObjectPos and Normal."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from texprops import Oracle, check, finish, lcg_points, main_args  # noqa: E402
+from texprops import Oracle, check, finish, lcg_points, main_args
 
 AO = {"attr": "AO"}
 A3 = {"attr": "ObjectPos"}

@@ -1,10 +1,7 @@
 """Defining properties of textures/noise.cl, evaluated through texcc's host target."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from texprops import Oracle, check, finish, lcg_points, main_args  # noqa: E402
+from texprops import Oracle, check, finish, lcg_points, main_args
 
 P = {"attr": "ObjectPos"}
 UV = {"attr": "TexCoord0"}

@@ -1,11 +1,8 @@
 """Defining properties of textures/checker.cl and textures/brick.cl, through texcc's host
 target: values, periods, the flip between neighbouring cells, the mortar's share of the area."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from texprops import Oracle, check, finish, lcg_points, main_args  # noqa: E402
+from texprops import Oracle, check, finish, lcg_points, main_args
 
 P = {"attr": "ObjectPos"}
 UV = {"attr": "TexCoord0"}

@@ -1,11 +1,8 @@
 """Defining properties of textures/ramp.cl, evaluated through texcc's host target.
 The ramp position t comes from the AO attribute, the one float attribute, so that one compiled
 graph can be evaluated at any t."""
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from texprops import Oracle, check, finish, main_args  # noqa: E402
+from texprops import Oracle, check, finish, main_args
 
 T = {"attr": "AO"}
 STOPS = [[0.0, 1.0, 0.0, 0.0], [0.5, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 1.0]]

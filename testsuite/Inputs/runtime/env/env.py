@@ -33,9 +33,8 @@ import zlib
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from sphere_scene import main, make_folder, read_image, write_json  # noqa: E402
-from texexr import write_exr  # noqa: E402
+from texcc_tools.exr import write_exr
+from texcc_tools.testing.sphere_scene import main, make_folder, read_image, write_json
 
 RHO = 0.5
 C = np.array([0.6, 0.8, 1.0])

@@ -30,8 +30,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from sphere_scene import main, read_image, write_json  # noqa: E402
+from texcc_tools.testing.sphere_scene import main, read_image, write_json
 
 RHO = 0.5
 CAMERA_H, FOV, SIZE, SPP = 5.0, 60.0, 32, 64

@@ -15,10 +15,8 @@ specular layer's estimated albedo, as in Cycles: within 1.5%, 1% for a smooth me
 principled dielectric with specular 0 is a Lambertian base: exactly its base color.
 """
 import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from sphere_scene import furnace_scene, main, make_folder, read_image, write_json  # noqa: E402
+from texcc_tools.testing.sphere_scene import furnace_scene, main, make_folder, read_image, write_json
 
 # name: (inputs, expectation) with expectation ("le", 1) | ("near", value, tolerance)
 MATERIALS = {}

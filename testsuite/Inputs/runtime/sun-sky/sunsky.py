@@ -20,12 +20,10 @@ sampling for the sun and the sky must get exactly right to meet.
 """
 import math
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from sphere_scene import main, make_folder, read_image, write_json  # noqa: E402
+from texcc_tools.testing.sphere_scene import main, make_folder, read_image, write_json
 
 RHO, SKY, SUN, ALPHA = 0.5, 1.0, 8.0, 20.0
 SUN_DIR = np.array([0.0, 1.0, 0.0])  # towards the sun: the top half lit, the bottom dark

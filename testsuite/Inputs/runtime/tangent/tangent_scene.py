@@ -19,8 +19,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "..", "scripts"))
-from texexr import read_exr  # noqa: E402
+from texcc_tools.exr import read_exr
 
 P = [(-1.0, -1.0, 0.0), (1.0, -1.0, 0.0), (1.0, 1.0, 0.0), (-1.0, 1.0, 0.0)]
 ANGLES = [0.0, 30.0, 60.0, 90.0]

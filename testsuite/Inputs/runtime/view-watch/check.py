@@ -1,7 +1,6 @@
 import sys, zlib
 import numpy as np
-sys.path.insert(0, sys.argv[1])
-import texexr
+from texcc_tools import exr as texexr  # (argv[1], the scripts folder, is no longer needed)
 data = open(sys.argv[2], "rb").read()
 pos, idat = 8, b""
 while pos < len(data):

@@ -5,11 +5,9 @@ walks the tree with it. Used by scripts/blender_export.py."""
 
 import contextlib
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from blender_nodes import (  # noqa: E402
+from texcc_tools.blender.nodes import (
     DEFAULT_SURFACE, MATH_OPS, NODES, PASS_THROUGH, PRINCIPLED_IGNORED,
     PRINCIPLED_INPUTS, SHADERS, VECTOR_MATH_OPS, instancers, object_info, supported_nodes_text)
 

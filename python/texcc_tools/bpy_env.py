@@ -5,9 +5,9 @@ import os
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-REQUIREMENTS = os.path.join(ROOT, "scripts", "requirements-blender.txt")
-VENV_PYTHON = os.path.join(ROOT, ".venv", "bin", "python")
+from texcc_tools.paths import ROOT, SCRIPTS, VENV_PYTHON
+
+REQUIREMENTS = os.path.join(SCRIPTS, "requirements-blender.txt")
 
 
 def _pinned_version():

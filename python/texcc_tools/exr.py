@@ -1,10 +1,14 @@
-"""texexr: the few OpenEXR files texrender writes, read and written in pure Python + numpy.
+"""The one OpenEXR reader and writer of the Python tools, pure Python + numpy.
 
 texrender writes scanline EXRs of 32-bit float channels (B, G, R) with tinyexr, uncompressed
-(images under 16x16) or ZIP (16 scanlines per zlib block). scripts/farm.py reads its tiles with
-read_exr and writes stitched frames with write_exr (ZIP, the same channels), which texrender's
-own reader (and texrender-compare) reads back. Other EXR features (tiles, half floats, other
-compressions, multi-part) are refused with an error, not guessed.
+(images under 16x16) or ZIP (16 scanlines per zlib block); Blender writes 32-bit float RGBA and
+multilayer files ("ViewLayer.Combined.R"...) the same way with color_depth "32". scripts/farm.py
+reads its tiles with read_exr and writes stitched frames with write_exr (ZIP, the same
+channels), which texrender's own reader (and texrender-compare) reads back. Other EXR features
+(tiles, half floats, other compressions, multi-part) are refused with an error, not guessed.
+
+read_exr(bytes) / read_file(path): RGB as float32 (height, width, 3), row 0 at the top.
+read_channels(path): every channel by name. write_exr(rgb) / write_file(path, rgb): ZIP, B G R.
 """
 import struct
 import zlib
@@ -73,8 +77,8 @@ def _predict(raw):
     return d.astype(np.uint8).tobytes()
 
 
-def read_exr(data):
-    """An EXR's pixels as a float32 array (height, width, 3): R, G, B, row 0 at the top."""
+def _planes(data):
+    """The channel names and their pixels as float32 (height, channels, width)."""
     attrs, pos = _attributes(data)
     comp = attrs["compression"][1][0]
     if comp not in LINES_PER_BLOCK:
@@ -96,6 +100,50 @@ def read_exr(data):
         if len(block) != expect:
             raise ExrError("a block of %d bytes where %d were expected" % (len(block), expect))
         planes[y - y0:y - y0 + n] = np.frombuffer(block, dtype="<f4").reshape(n, len(names), w)
+    return names, planes
+
+
+def read_channels(path):
+    """{channel name: float32 (height, width)} of the EXR at path. A multi-part file (Blender's
+    multilayer renders: a part per pass) is read with OpenEXR's Python bindings
+    (bench/requirements.txt), its channels named PART-LAYER.PASS.C as Blender names them."""
+    with open(path, "rb") as f:
+        data = f.read()
+    try:
+        names, planes = _planes(data)
+    except ExrError:
+        if len(data) < 8 or not struct.unpack_from("<i", data, 4)[0] & 0x1E00:
+            raise
+        return _openexr_channels(path)
+    return {name: planes[:, c, :] for c, name in enumerate(names)}
+
+
+def _openexr_channels(path):
+    """The channels of a tiled or multi-part file (Blender writes its EXRs so), through
+    OpenEXR's Python bindings (bench/requirements.txt)."""
+    try:
+        import OpenEXR
+    except ImportError:
+        raise ExrError("tiled or multi-part EXR: needs OpenEXR's Python bindings "
+                       "(pip install -r bench/requirements.txt)") from None
+    out = {}
+    with OpenEXR.File(path) as f:
+        for part in f.parts:
+            for name, c in part.channels.items():
+                px = np.asarray(c.pixels, dtype=np.float32)
+                if px.ndim == 2:
+                    out[name] = px
+                else:  # OpenEXR groups R, G, B(, A) of one pass
+                    for k, comp in enumerate("RGBA"[:px.shape[2]]):
+                        out["%s%s" % (name + "." if name not in ("RGB", "RGBA") else "", comp)] \
+                            = px[:, :, k]
+    return out
+
+
+def read_exr(data):
+    """An EXR's pixels as a float32 array (height, width, 3): R, G, B, row 0 at the top."""
+    names, planes = _planes(data)
+    h, w = planes.shape[0], planes.shape[2]
     rgb = np.zeros((h, w, 3), dtype=np.float32)
     for c, name in enumerate("RGB"):
         if name in names:
@@ -137,3 +185,24 @@ def write_exr(rgb):
         offsets.append(pos)
         pos += len(c)
     return header + struct.pack("<%dQ" % len(offsets), *offsets) + b"".join(chunks)
+
+
+def read_file(path):
+    """read_exr of the file at path (a tiled or multi-part one through read_channels); an
+    unreadable file is an ExrError naming it."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+        if len(data) >= 8 and struct.unpack_from("<i", data, 4)[0] & 0x1E00:
+            ch = read_channels(path)
+            return np.stack([ch[c] if c in ch else np.zeros_like(next(iter(ch.values())))
+                             for c in "RGB"], axis=-1).astype(np.float32)
+        return read_exr(data)
+    except (OSError, ExrError, ValueError, struct.error, zlib.error) as e:
+        raise ExrError("%s: %s" % (path, e.strerror if isinstance(e, OSError) else e)) from None
+
+
+def write_file(path, rgb):
+    """write_exr(rgb) into path, atomically (atomic.write_bytes)."""
+    from texcc_tools.atomic import write_bytes
+    write_bytes(path, write_exr(rgb))

@@ -1,4 +1,4 @@
-"""atomic_write.py: every output file of the Python tools (farm.py, blender_export.py) is
+"""Atomic writes: every output file of the Python tools (farm.py, blender_export.py) is
 written here: into a hidden temporary in the destination's own folder, every write, the flush,
 the fsync and the close checked, then renamed over the destination. A reader never sees a torn
 file, and a failure (a full disk, a file size limit, a folder that vanished) is one
@@ -7,7 +7,7 @@ AtomicWriteError naming the destination and the cause, with the temporary remove
 The file gets the mode a plain open() would give a new file, 0666 less the umask (0644 under
 the usual umask 022), as texcc and texrender write theirs; a temporary alone would be 0600.
 
-Scripts in this folder import it by name (Python puts a script's own folder first on sys.path).
+Import it as texcc_tools.atomic.
 """
 
 import contextlib

@@ -7,7 +7,9 @@ import subprocess
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from texcc_tools.paths import INPUTS
+
+HERE = os.path.join(INPUTS, "blender-export")  # region_means.py and the cycles-*.json references
 
 
 def render_npy(scene, spp, exr, npy, transparent=False):

@@ -3,12 +3,13 @@ offline (no GPU needed): clang-15 -> AMDGPU gfx90a with -Rpass-analysis=kernel-r
 and libclc's amdgcn--amdhsa.bc linked (without a math library every math call is an external
 call and the backend assumes a 16 KiB stack), and clang-15 -> NVPTX sm_80 with libclc's
 nvptx64--nvidiacl.bc linked, then ptxas -v when the CUDA toolkit's ptxas is on PATH."""
-import json
 import os
 import re
 import shutil
+import subprocess
 
-import common
+from texcc_tools import manifest
+from texcc_tools.bench import common
 
 PAPER_STACK = {"rust": (604, 464), "scratches": (412, 336)}
 GRAPHS = {"rust": "examples/rust/graph.json", "scratches": "examples/scratches/graph.json"}
@@ -35,8 +36,8 @@ def amdgpu(src, work, entries):
                                 "-Rpass-analysis=kernel-resource-usage", "-c", src,
                                 "-o", os.path.join(work, "amdgpu.o")]
     cmd += link(libclc("amdgcn--amdhsa.bc"))
-    r = common.subprocess.run(cmd, stdout=common.subprocess.PIPE, stderr=common.subprocess.PIPE,
-                              text=True)
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       text=True)
     if r.returncode != 0:
         raise common.BenchError("AMDGPU compile failed: %s\n%s" % (" ".join(cmd), r.stderr[-2000:]))
     kernels, current = {}, None
@@ -63,8 +64,8 @@ def nvptx(src, work, entries):
     if ptxas is None:
         return {"command": " ".join(cmd), "ptxas": None, "kernels": {}}
     pcmd = [ptxas, "-v", "--gpu-name", "sm_80", ptx, "-o", os.path.join(work, "kernel.cubin")]
-    r = common.subprocess.run(pcmd, stdout=common.subprocess.PIPE, stderr=common.subprocess.PIPE,
-                              text=True)
+    r = subprocess.run(pcmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       text=True)
     if r.returncode != 0:
         raise common.BenchError("ptxas failed: %s\n%s" % (" ".join(pcmd), r.stderr[-2000:]))
     return {"command": " ".join(cmd) + " && " + " ".join(pcmd), "ptxas": ptxas,
@@ -105,8 +106,7 @@ def entries_of(src):
 def int_arguments(layout_path):
     """NODE.ARG of every constant int argument (the "mode" arguments: op codes, octave counts,
     switches) of the live nodes in a layout.json: what --bake is meant for."""
-    with open(layout_path) as f:
-        layout = json.load(f)
+    layout = manifest.load(layout_path)
     types = {fn["name"]: {p["name"]: p["type"] for p in fn["params"]} for fn in layout["functions"]}
     return ["%s.%s" % (n["id"], a["name"]) for n in layout["nodes"] for a in n["args"]
             if a["source"] == "const" and types[n["fn"]].get(a["name"]) == "int"]

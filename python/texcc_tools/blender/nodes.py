@@ -10,8 +10,9 @@ import os
 import re
 import struct
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LIBRARY = os.path.join(ROOT, "textures", "blender")
+from texcc_tools.paths import ROOT, TEXTURES
+
+LIBRARY = os.path.join(TEXTURES, "blender")
 
 # --- The library's signatures ---------------------------------------------------------------
 

@@ -1,14 +1,13 @@
-"""What the sphere tests' input scripts share: runtime/sun-sky/sunsky.py,
-runtime/principled/furnace.py and blender-export/glossy_furnace.py write a unit sphere, a graph
+"""What the sphere tests' input scripts share (testsuite/Inputs/): runtime/sun-sky/sunsky.py,
+runtime/principled/furnace.py, runtime/env/env.py, runtime/lamps/lamps.py and
+blender-export/glossy_furnace.py write a unit sphere, a graph
 and scenes into a folder (`make OUTDIR`), then read texrender's images back (`check OUTDIR`)."""
 import json
 import math
 import os
 import sys
 
-# texexr (scripts/) reads the images.
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
-                                "scripts"))
+from texcc_tools import exr
 
 
 def sphere_obj(rows, cols):
@@ -53,10 +52,8 @@ def furnace_scene(material, position, fov):
 
 
 def read_image(path):
-    """An EXR texrender wrote, as read by scripts/texexr.py."""
-    from texexr import read_exr
-    with open(path, "rb") as f:
-        return read_exr(f.read())
+    """An EXR texrender wrote (texcc_tools.exr)."""
+    return exr.read_file(path)
 
 
 def main(commands):

@@ -1,0 +1,1 @@
+"""Helpers that input scripts in different folders of testsuite/Inputs/ share."""
