@@ -44,8 +44,13 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from bpy_env import ensure_bpy  # noqa: E402
+try:
+    from texcc_tools.bpy_env import ensure_bpy  # the project's package (scripts/setup.sh)
+except ImportError:  # another Python than .venv's: re-run with it
+    _venv = os.path.join(ROOT, ".venv", "bin", "python")
+    if os.path.realpath(sys.prefix) == os.path.realpath(os.path.join(ROOT, ".venv")):
+        sys.exit("make_scene.py: error: texcc_tools is not installed in .venv: run scripts/setup.sh")
+    os.execv(_venv, [_venv] + sys.argv)
 VARIANTS = ("diffuse", "rust-model", "rust-all", "scratches-model")
 
 
