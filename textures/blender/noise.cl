@@ -122,10 +122,13 @@ float blPerlin3(float x, float y, float z) {
   int4 I = convert_int4(f);
   float4 fr = p - f;
   float4 uvw = fr * fr * fr * (fr * (fr * 6.0f - 15.0f) + 10.0f);
-  uint X0 = (uint)I.x, Y0 = (uint)I.y, Z0 = (uint)I.z;
-  uint4 Yl = (uint4)(Y0, Y0 + 1U, Y0, Y0 + 1U), Zl = (uint4)(Z0, Z0, Z0 + 1U, Z0 + 1U);
-  float4 fy = (float4)(fr.y, fr.y - 1.0f, fr.y, fr.y - 1.0f);
-  float4 fz = (float4)(fr.z, fr.z, fr.z - 1.0f, fr.z - 1.0f);
+  uint X0 = (uint)I.x;
+  /* lanes by adding (0, 1, 0, 1) and (0, 0, 1, 1) to broadcasts (x - 0 is x): two vector
+   * operations each where the element-wise literals cost extracts and inserts */
+  uint4 Yl = (uint4)((uint)I.y) + (uint4)(0U, 1U, 0U, 1U);
+  uint4 Zl = (uint4)((uint)I.z) + (uint4)(0U, 0U, 1U, 1U);
+  float4 fy = (float4)(fr.y) - (float4)(0.0f, 1.0f, 0.0f, 1.0f);
+  float4 fz = (float4)(fr.z) - (float4)(0.0f, 0.0f, 1.0f, 1.0f);
   float4 g0 = blGrad3x4(blHash3x4((uint4)(X0), Yl, Zl), (float4)(fr.x), fy, fz);
   float4 g1 = blGrad3x4(blHash3x4((uint4)(X0 + 1U), Yl, Zl), (float4)(fr.x - 1.0f), fy, fz);
   float4 m = g0 + uvw.x * (g1 - g0);
@@ -176,22 +179,55 @@ float blPerlin4(float x, float y, float z, float w) {
  * does, then scaled by the factors that make each dimension's range about [-1, 1]. */
 float blWrap100k(float x) { return fabs(x) < 100000.0f ? x : fmod(x, 100000.0f); }
 
+/* blSnoise at a point whose every component is under 100000 in magnitude (no wrap needed). */
+float blSnoiseUnwrapped(float4 p, int dims) {
+  if (dims == 1)
+    return 0.25f * blPerlin1(p.w);
+  if (dims == 2)
+    return 0.6616f * blPerlin2(p.x, p.y);
+  if (dims == 3)
+    return 0.9820f * blPerlin3(p.x, p.y, p.z);
+  return 0.8344f * blPerlin4(p.x, p.y, p.z, p.w);
+}
+
 float blSnoise(float4 p, int dims) {
   /* fmod(x, 100000) is x itself below 100000: skipping the call there changes no value. */
-  float x = blWrap100k(p.x), y = blWrap100k(p.y), z = blWrap100k(p.z), w = blWrap100k(p.w);
-  if (dims == 1)
-    return 0.25f * blPerlin1(w);
-  if (dims == 2)
-    return 0.6616f * blPerlin2(x, y);
-  if (dims == 3)
-    return 0.9820f * blPerlin3(x, y, z);
-  return 0.8344f * blPerlin4(x, y, z, w);
+  return blSnoiseUnwrapped((float4)(blWrap100k(p.x), blWrap100k(p.y), blWrap100k(p.z),
+                                    blWrap100k(p.w)), dims);
 }
-float blNoiseFbm(float4 p, int dims, float detail, float roughness, float lacunarity,
-                 int normalize) {
+
+/* Whether blSnoise's wrap can change nothing in a fractal, so that its octaves may skip it (the
+ * tests, and the fmod calls on their cold path, around which the octave's values were kept in
+ * memory). a holds the magnitudes of the first octave's components, b those of the last's; the
+ * octaves between are products of the first by |frequencies| between 1 and the last's (each
+ * fractal multiplies by the same lacunarity every octave, so the magnitudes grow or shrink
+ * monotonically, and float products round monotonically): no component of any octave reaches
+ * 100000 when none of a and b does. A NaN or an infinity fails the test. */
+int blUnder100k(float4 a, float4 b) {
+  return a.x < 100000.0f && a.y < 100000.0f && a.z < 100000.0f && a.w < 100000.0f &&
+         b.x < 100000.0f && b.y < 100000.0f && b.z < 100000.0f && b.w < 100000.0f;
+}
+
+/* The frequency of the octave after octave (int)detail of an fBM (fscale *= lacunarity from 1):
+ * its fractional octave's, the largest or smallest of all. */
+float blFbmLastFrequency(float detail, float lacunarity) {
+  float fscale = 1.0f;
+  for (int i = 0; i <= (int)detail; i++)
+    fscale *= lacunarity;
+  return fabs(fscale);
+}
+
+/* fBM's octaves are blSnoise(fscale * p): |fscale * c| rounds to |fscale| * |c|. */
+int blFbmNoWrap(float4 p, float lastFrequency) {
+  return blUnder100k(fabs(p), fabs(p) * lastFrequency);
+}
+
+/* blNoiseFbm with blSnoise's wrap (wrap = 1) or without it (0, where blFbmNoWrap holds). */
+float blNoiseFbmOctaves(float4 p, int dims, float detail, float roughness, float lacunarity,
+                        int normalize, int wrap) {
   float fscale = 1.0f, amp = 1.0f, maxamp = 0.0f, sum = 0.0f;
   for (int i = 0; i <= (int)detail; i++) {
-    float t = blSnoise(fscale * p, dims);
+    float t = wrap ? blSnoise(fscale * p, dims) : blSnoiseUnwrapped(fscale * p, dims);
     sum += t * amp;
     maxamp += amp;
     amp *= roughness;
@@ -199,12 +235,19 @@ float blNoiseFbm(float4 p, int dims, float detail, float roughness, float lacuna
   }
   float rmd = detail - floor(detail);
   if (rmd != 0.0f) {
-    float t = blSnoise(fscale * p, dims);
+    float t = wrap ? blSnoise(fscale * p, dims) : blSnoiseUnwrapped(fscale * p, dims);
     float sum2 = sum + t * amp;
     return normalize ? blMix(0.5f * sum / maxamp + 0.5f, 0.5f * sum2 / (maxamp + amp) + 0.5f, rmd)
                      : blMix(sum, sum2, rmd);
   }
   return normalize ? 0.5f * sum / maxamp + 0.5f : sum;
+}
+
+float blNoiseFbm(float4 p, int dims, float detail, float roughness, float lacunarity,
+                 int normalize) {
+  if (blFbmNoWrap(p, blFbmLastFrequency(detail, lacunarity)))
+    return blNoiseFbmOctaves(p, dims, detail, roughness, lacunarity, normalize, 0);
+  return blNoiseFbmOctaves(p, dims, detail, roughness, lacunarity, normalize, 1);
 }
 
 float blNoiseMultiFractal(float4 p, int dims, float detail, float roughness, float lacunarity) {
@@ -347,19 +390,27 @@ float3 blSnoise3(float4 p0, float4 p1, float4 p2, float s, int dims) {
   return (float3)(blSnoise(s * p0, dims), blSnoise(s * p1, dims), blSnoise(s * p2, dims));
 }
 
-float3 blNoiseFbm3(float4 p0, float4 p1, float4 p2, int dims, float detail, float roughness,
-                   float lacunarity, int normalize) {
+/* blSnoise3 without the wrap (wrap = 0: where blUnder100k holds for the fractal). */
+float3 blSnoise3W(float4 p0, float4 p1, float4 p2, float s, int dims, int wrap) {
+  if (wrap)
+    return blSnoise3(p0, p1, p2, s, dims);
+  return (float3)(blSnoiseUnwrapped(s * p0, dims), blSnoiseUnwrapped(s * p1, dims),
+                  blSnoiseUnwrapped(s * p2, dims));
+}
+
+float3 blNoiseFbm3Octaves(float4 p0, float4 p1, float4 p2, int dims, float detail,
+                          float roughness, float lacunarity, int normalize, int wrap) {
   float fscale = 1.0f, amp = 1.0f, maxamp = 0.0f;
   float3 sum = (float3)(0.0f);
   for (int i = 0; i <= (int)detail; i++) {
-    sum += blSnoise3(p0, p1, p2, fscale, dims) * amp;
+    sum += blSnoise3W(p0, p1, p2, fscale, dims, wrap) * amp;
     maxamp += amp;
     amp *= roughness;
     fscale *= lacunarity;
   }
   float rmd = detail - floor(detail);
   if (rmd != 0.0f) {
-    float3 sum2 = sum + blSnoise3(p0, p1, p2, fscale, dims) * amp;
+    float3 sum2 = sum + blSnoise3W(p0, p1, p2, fscale, dims, wrap) * amp;
     if (normalize) {
       float3 a = 0.5f * sum / maxamp + 0.5f, b = 0.5f * sum2 / (maxamp + amp) + 0.5f;
       return a + rmd * (b - a);
@@ -367,6 +418,14 @@ float3 blNoiseFbm3(float4 p0, float4 p1, float4 p2, int dims, float detail, floa
     return sum + rmd * (sum2 - sum);
   }
   return normalize ? 0.5f * sum / maxamp + 0.5f : sum;
+}
+
+float3 blNoiseFbm3(float4 p0, float4 p1, float4 p2, int dims, float detail, float roughness,
+                   float lacunarity, int normalize) {
+  float f = blFbmLastFrequency(detail, lacunarity);
+  if (blFbmNoWrap(p0, f) && blFbmNoWrap(p1, f) && blFbmNoWrap(p2, f))
+    return blNoiseFbm3Octaves(p0, p1, p2, dims, detail, roughness, lacunarity, normalize, 0);
+  return blNoiseFbm3Octaves(p0, p1, p2, dims, detail, roughness, lacunarity, normalize, 1);
 }
 
 float3 blNoiseMultiFractal3(float4 p0, float4 p1, float4 p2, int dims, float detail,
@@ -406,10 +465,11 @@ float3 blNoiseHeteroTerrain3(float4 p0, float4 p1, float4 p2, int dims, float de
   return value;
 }
 
-float3 blNoiseRidgedMultiFractal3(float4 p0, float4 p1, float4 p2, int dims, float detail,
-                                  float roughness, float lacunarity, float offset, float gain) {
+float3 blNoiseRidgedMultiFractal3Octaves(float4 p0, float4 p1, float4 p2, int dims,
+                                         float detail, float roughness, float lacunarity,
+                                         float offset, float gain, int wrap) {
   float pwr = roughness;
-  float3 signal = offset - fabs(blSnoise3(p0, p1, p2, 1.0f, dims));
+  float3 signal = offset - fabs(blSnoise3W(p0, p1, p2, 1.0f, dims, wrap));
   signal *= signal;
   float3 value = signal;
   for (int i = 1; i <= (int)detail; i++) {
@@ -420,13 +480,31 @@ float3 blNoiseRidgedMultiFractal3(float4 p0, float4 p1, float4 p2, int dims, flo
     float3 weight = (float3)(clamp(signal.x * gain, 0.0f, 1.0f),
                              clamp(signal.y * gain, 0.0f, 1.0f),
                              clamp(signal.z * gain, 0.0f, 1.0f));
-    signal = offset - fabs(blSnoise3(p0, p1, p2, 1.0f, dims));
+    signal = offset - fabs(blSnoise3W(p0, p1, p2, 1.0f, dims, wrap));
     signal *= signal;
     signal *= weight;
     value += signal * pwr;
     pwr *= roughness;
   }
   return value;
+}
+
+/* Ridged's octaves are blSnoise(p) with p *= lacunarity after each: |p * lacunarity| rounds to
+ * |p| * |lacunarity|, so the last octave's magnitudes are computed exactly here. */
+float3 blNoiseRidgedMultiFractal3(float4 p0, float4 p1, float4 p2, int dims, float detail,
+                                  float roughness, float lacunarity, float offset, float gain) {
+  float4 a0 = fabs(p0), a1 = fabs(p1), a2 = fabs(p2);
+  float l = fabs(lacunarity);
+  for (int i = 1; i <= (int)detail; i++) {
+    a0 *= l;
+    a1 *= l;
+    a2 *= l;
+  }
+  if (blUnder100k(fabs(p0), a0) && blUnder100k(fabs(p1), a1) && blUnder100k(fabs(p2), a2))
+    return blNoiseRidgedMultiFractal3Octaves(p0, p1, p2, dims, detail, roughness, lacunarity,
+                                             offset, gain, 0);
+  return blNoiseRidgedMultiFractal3Octaves(p0, p1, p2, dims, detail, roughness, lacunarity,
+                                           offset, gain, 1);
 }
 
 float3 blNoiseColor(float4 co, int dims, float scale, float detail, float roughness,
@@ -540,20 +618,24 @@ float3 blNoise4DColor(float3 vector, float w, float scale, float detail, float r
  *   | direction       | int    | 0       | Bands: 0 X, 1 Y, 2 Z, 3 Diagonal; Rings: 0 X, 1 Y, 2 Z, 3 Spherical |
  *   | profile         | int    | 0       | 0 Sine, 1 Saw, 2 Triangle                      |
  */
-/* Cycles' sine profile, 0.5 + 0.5 sin(n - pi/2), as sin^2(n / 2): the half angle reduced by
- * pi in two parts (float(pi) and the rest) to [-pi/2, pi/2], where the Taylor series to the
- * 11th power is within 4e-8 of sin. Cycles' own float n - pi/2 rounds by up to half an ulp of
- * n (4e-6 at n = 100); OpenCL's sin spent 36 ns a sample on PoCL here (Wave, Detail 7: 201 ->
- * 166 ns without it; bench/texture-speed.md). */
+/* Cycles' sine profile, 0.5 + 0.5 sin(n - pi/2), with n - pi/2 rounded to float as Cycles rounds
+ * it (past n = 3000 its half ulp moves the value by more than 1e-4). sin(m) by a reduction by pi
+ * in two parts (float(pi) and the rest) to r in [-pi/2, pi/2], where the Taylor series to the
+ * 11th power is within 6e-8 of sin, and the sign of k's parity. Past 2^21 pi the float quotient
+ * m / pi no longer rounds to within one of its integer (r would leave the series' range): there
+ * OpenCL's sin, which reduces any float, and which spent 14-36 ns a sample on PoCL where it ran
+ * for every point (Wave, Detail 7: 201 -> 166 ns without it; bench/texture-speed.md). */
 float blWaveSine(float n) {
-  float h = n * 0.5f;
-  float k = floor(h * 0.318309886183790672f + 0.5f);
-  float r = fma(-k, 3.14159274101257324f, h);
+  float m = n - 1.57079632679489661923f;
+  if (!(fabs(m) < 6588397.5f))
+    return 0.5f + 0.5f * sin(m);
+  float k = floor(m * 0.318309886183790672f + 0.5f);
+  float r = fma(-k, 3.14159274101257324f, m);
   r = fma(-k, -8.74227766e-08f, r);
   float r2 = r * r;
   float s = r * (1.0f + r2 * (-1.66666667e-01f + r2 * (8.33333333e-03f + r2 * (-1.98412698e-04f +
                 r2 * (2.75573192e-06f + r2 * -2.50521084e-08f)))));
-  return s * s;
+  return 0.5f + 0.5f * (((int)k & 1) ? -s : s);
 }
 
 float blWaveFac(float3 vector, float scale, float distortion, float detail, float detailScale,
