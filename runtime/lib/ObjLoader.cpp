@@ -272,23 +272,31 @@ struct Reader {
     throw Error(Path + ":" + std::to_string(Line) + ": invalid OBJ: " + What);
   }
 
-  /// The numbers of a v, vn or vt line: the first Keep appended (0 for missing ones).
-  void numbers(const char *P, const char *End, size_t Keep, std::vector<float> &To) {
+  /// Every number of [P, End) up to a '#', each token checked finite; Take(Count, F) gets each
+  /// in turn (Count: the ones before it).
+  template <typename TakeFn> size_t readNumbers(const char *P, const char *End, TakeFn Take) {
     size_t Count = 0;
     while (true) {
       while (P < End && isBlank(*P))
         ++P;
       if (P == End || *P == '#')
-        break;
+        return Count;
       const char *Token = P;
       while (P < End && !isBlank(*P))
         ++P;
       float F;
       if (!parseNumber(Token, P, F))
         fail("'" + printable(Token, P) + "' is not a finite number");
-      if (Count++ < Keep)
-        To.push_back(F);
+      Take(Count++, F);
     }
+  }
+
+  /// The numbers of a v, vn or vt line: the first Keep appended (0 for missing ones).
+  void numbers(const char *P, const char *End, size_t Keep, std::vector<float> &To) {
+    size_t Count = readNumbers(P, End, [&](size_t I, float F) {
+      if (I < Keep)
+        To.push_back(F);
+    });
     for (; Count < Keep; ++Count)
       To.push_back(0.0f);
   }
@@ -297,21 +305,11 @@ struct Reader {
   void tangent(const char *P, const char *End) {
     LastTangentLine = Line;
     float V[4];
-    size_t Count = 0;
-    while (true) {
-      while (P < End && isBlank(*P))
-        ++P;
-      if (P == End || *P == '#')
-        break;
-      const char *Token = P;
-      while (P < End && !isBlank(*P))
-        ++P;
-      if (Count == 4)
+    size_t Count = readNumbers(P, End, [&](size_t I, float F) {
+      if (I == 4)
         fail("vtan has more than four numbers (x y z w: the tangent and the bitangent sign)");
-      if (!parseNumber(Token, P, V[Count]))
-        fail("'" + printable(Token, P) + "' is not a finite number");
-      ++Count;
-    }
+      V[I] = F;
+    });
     if (Count < 4)
       fail("vtan has " + std::to_string(Count) +
            " numbers; it needs four: x y z w (the tangent and the bitangent sign)");
