@@ -97,14 +97,33 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
     return false;
   }
   std::optional<ArgValue> V = parseArgValue(NodeId + "." + Arg, Value, Diags);
-  if (!V)
+  return V && setArgument(NodeId, Arg, std::move(*V), Diags);
+}
+
+bool GraphEditor::apply(const Edit &E, DiagnosticSink &Diags) {
+  if (E.K == Edit::Kind::Rewire)
+    return rewire(E.Node, E.Arg, E.Value.Ref, Diags);
+  return setArgument(E.Node, E.Arg, E.Value, Diags);
+}
+
+bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg, ArgValue V,
+                              DiagnosticSink &Diags) {
+  Node *N = G.findNode(NodeId);
+  if (!N) {
+    std::vector<std::string> Ids;
+    for (const Node &Other : G.Nodes)
+      Ids.push_back(Other.Id);
+    std::string Near = json::closestMatch(NodeId, Ids);
+    Diags.error({}, "unknown node '" + NodeId + "'" +
+                        (Near.empty() ? "" : "; did you mean '" + Near + "'?"));
     return false;
+  }
   Graph Edited = G;
   ArgValue *Slot = argumentOf(*Edited.findNode(NodeId), Arg);
-  V->KeyLoc = Slot->KeyLoc;
-  V->Bake |= Slot->Bake; // a new value of a baked argument stays baked
-  V->JsonPath = N->JsonPath + "/args/" + Arg;
-  *Slot = std::move(*V);
+  V.KeyLoc = Slot->KeyLoc;
+  V.Bake |= Slot->Bake; // a new value of a baked argument stays baked
+  V.JsonPath = N->JsonPath + "/args/" + Arg;
+  *Slot = std::move(V);
 
   // Validate the edited graph; keep only its errors (warnings were given at compile time).
   DiagnosticSink Check;

@@ -5,6 +5,7 @@
 // the re-encoded args.bin (and programs). The runtime's --set and interactive mode use this.
 
 #include "texcc/Graph/Compile.h"
+#include "texcc/Graph/Diff.h"
 
 #include <string>
 
@@ -23,9 +24,17 @@ public:
   /// When the layout does not change, only the bytes of that argument change in args.bin.
   bool setArgument(const std::string &NodeId, const std::string &Arg, const std::string &Value,
                    DiagnosticSink &Diags);
+  /// The same with the value parsed (a reference included).
+  bool setArgument(const std::string &NodeId, const std::string &Arg, ArgValue Value,
+                   DiagnosticSink &Diags);
   /// Makes NODE.ARG read the output of another node ({ "node": Source }).
   bool rewire(const std::string &NodeId, const std::string &Arg, const std::string &SourceNode,
               DiagnosticSink &Diags);
+
+  /// Validates E against the signatures and applies it (setArgument or rewire). On a refusal
+  /// (Diags says why) the graph and the compiled graph are unchanged: an edit is validated
+  /// once, by the apply that makes it.
+  bool apply(const Edit &E, DiagnosticSink &Diags);
 
   const CompiledGraph &compiled() const { return CG; }
   const Graph &graph() const { return G; }
