@@ -11,17 +11,9 @@ import tempfile
 import time
 
 import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
-import ao
-import edit_session
-import edits
-import instructions
-import lookdev
-import per_hit
-import report
-import stability
-import table1
-import value_stack
-from texcc_tools.bench import accuracy, common, cycles, resources
+import report  # bench/report.py: BENCHMARKS.md's generator
+from texcc_tools.bench import (accuracy, ao, common, cycles, edit_session, edits, instructions,
+                               lookdev, per_hit, resources, stability, table1, value_stack)
 
 # The stability sweep is last: its full run takes hours, and it saves its points as it goes.
 FIGURES = [("table1", table1), ("edits", edits), ("edit_session", edit_session),

@@ -8,55 +8,10 @@ rendered by both at SIZE and SPP for every seed; the seed means are compared as 
 lamp figures are (cycles.lamp_figure): whole-image means per channel, 16x16 blocks within 1%,
 each block's difference against its standard error, frame times.
 
-usage: bench/real_material.py [--build DIR] [--size WxH] [--spp N] [--seeds 1-4]
-                              [--cases real,real-metal,interior] [--out FILE]
-"""
-import argparse
-import os
-import sys
-
+The code is texcc_tools.bench.real_material (python/texcc_tools/bench/real_material.py)."""
 import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
 from texcc_tools.bench import common
-from texcc_tools.bench import cycles
-
-REAL_BLEND = os.path.join(common.BENCH, "inputs", "real_material_blend.py")
-REAL_CASES = ("real", "real-metal")
-LAMP_CASES = ("interior",)
-
-
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    common.add_build_argument(ap)
-    ap.add_argument("--work", default=None)
-    ap.add_argument("--size", default="128x96")
-    ap.add_argument("--spp", type=int, default=256)
-    ap.add_argument("--seeds", type=cycles.seed_list, default=[1, 2, 3, 4])
-    ap.add_argument("--cases", default=",".join(REAL_CASES + LAMP_CASES))
-    ap.add_argument("--out", default=os.path.join(common.RESULTS, "real_material.json"))
-    args = ap.parse_args()
-    cycles.ensure_bpy()
-    work = args.work or os.path.join(args.build, "bench-real-material")
-    os.makedirs(work, exist_ok=True)
-    tools = common.Tools(args.build, work)
-    cases = args.cases.split(",")
-    unknown = [c for c in cases if c not in REAL_CASES + LAMP_CASES]
-    if unknown:
-        raise common.BenchError("unknown case(s) %s (cases: %s)" % (
-            ", ".join(unknown), ", ".join(REAL_CASES + LAMP_CASES)))
-    load = [os.getloadavg()[0]]
-    out = {}
-    real = [c for c in cases if c in REAL_CASES]
-    if real:
-        out.update(cycles.lamp_figure(tools, args.size, args.spp, args.seeds, real,
-                                      maker=REAL_BLEND, prefix="real"))
-    lamps = [c for c in cases if c in LAMP_CASES]
-    if lamps:
-        out.update(cycles.lamp_figure(tools, args.size, args.spp, args.seeds, lamps))
-    load.append(os.getloadavg()[0])
-    common.save(None, {"machine": common.machine(), "git": common.git_head(),
-                       "size": args.size, "spp": args.spp, "seeds": args.seeds,
-                       "loadAverage1min": load, "cases": out}, args.out)
-
+from texcc_tools.bench.real_material import main
 
 if __name__ == "__main__":
     common.run_main(main, "bench/real_material.py")

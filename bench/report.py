@@ -3,7 +3,7 @@ import os
 
 import charts
 from texcc_tools.bench import common
-from common import fmt, pct
+from texcc_tools.bench.common import fmt, pct
 from report_peers import cycles_overheads, cycles_section, per_hit_nodes_section
 from report_texture import texture_speed_section
 

@@ -1,7 +1,7 @@
 """BENCHMARKS.md's sections on texrender beside Blender Cycles (bench/cycles.py) and on single
 Blender nodes (bench/per_hit.py --nodes); bench/report.py assembles the page."""
 from texcc_tools.bench import common
-from common import fmt, pct
+from texcc_tools.bench.common import fmt, pct
 
 
 def cycles_overheads():

@@ -18,9 +18,6 @@ import math
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-INPUTS = os.path.join(HERE, "..", "..", "testsuite", "Inputs", "blender-export")
-sys.path.insert(0, INPUTS)
 
 CASES = ("real", "real-metal")
 TEX = 256  # texels per side of each image
@@ -94,9 +91,9 @@ def pbr_material(bpy, folder, metallic):
 
 def make(out, case):
     import bpy
-    from make_blend import add_mesh, new_scene, quad, simple
-    from make_lamp_blend import aim, lamp
-    from make_world_blend import map_image, sphere_mesh
+    from texcc_tools.testing.make_blend import add_mesh, new_scene, quad, simple
+    from texcc_tools.testing.make_lamp_blend import aim, lamp
+    from texcc_tools.testing.make_world_blend import map_image, sphere_mesh
     if case not in CASES:
         raise SystemExit("real_material_blend.py: unknown case '%s' (cases: %s)"
                          % (case, ", ".join(CASES)))

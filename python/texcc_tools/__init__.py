@@ -7,7 +7,9 @@ manifest  the one reader (and writer) of a texcc output folder's layout.json
 atomic    every output file written through a temporary and a rename
 bpy_env   the pinned bpy (Blender as a module), installed on first use
 blender   the Blender exporter and its tables (scripts/blender_export.py runs it)
-bench     the benchmarks' shared helpers (bench/*.py run them)
+bench     the benchmarks: their shared helpers and each measurement (bench/*.py run them)
 farm      the render farm (scripts/farm.py, bench/farm.py)
-testing   helpers the test suite's input scripts share
+scripts   the code of the other commands in scripts/ (make_scenes, swatches, ...)
+testing   what the test suite's input scripts share (scenes, .blend makers, the Cycles fixtures'
+          comparison); testsuite/Inputs/ keeps the files the tests run by path
 """

@@ -29,8 +29,8 @@ def _attributes(data):
     """The header's attributes {name: (type, bytes)} and the offset after the header."""
     if len(data) < 8 or struct.unpack_from("<i", data, 0)[0] != MAGIC:
         raise ExrError("not an OpenEXR file")
-    if struct.unpack_from("<i", data, 4)[0] & 0x1E00:
-        raise ExrError("tiled, deep or multi-part EXR: not supported")
+    if struct.unpack_from("<i", data, 4)[0] & 0x1A00:
+        raise ExrError("tiled, deep or multi-part EXR: not supported")  # 0x400: long names, fine
     pos, attrs = 8, {}
     while True:
         end = data.index(b"\0", pos)
@@ -112,7 +112,7 @@ def read_channels(path):
     try:
         names, planes = _planes(data)
     except ExrError:
-        if len(data) < 8 or not struct.unpack_from("<i", data, 4)[0] & 0x1E00:
+        if len(data) < 8 or not struct.unpack_from("<i", data, 4)[0] & 0x1A00:
             raise
         return _openexr_channels(path)
     return {name: planes[:, c, :] for c, name in enumerate(names)}
@@ -193,7 +193,7 @@ def read_file(path):
     try:
         with open(path, "rb") as f:
             data = f.read()
-        if len(data) >= 8 and struct.unpack_from("<i", data, 4)[0] & 0x1E00:
+        if len(data) >= 8 and struct.unpack_from("<i", data, 4)[0] & 0x1A00:
             ch = read_channels(path)
             return np.stack([ch[c] if c in ch else np.zeros_like(next(iter(ch.values())))
                              for c in "RGB"], axis=-1).astype(np.float32)

@@ -1,4 +1,4 @@
-"""The benchmarks' shared code: common (texcc/texrender runs, stats, results files), resources
-(kernel resource usage), accuracy (image error against references), startup_split (profiles of
-texrender's start), cycles (Blender Cycles as a reference renderer). bench/*.py are the
-commands (bench/run runs them)."""
+"""The benchmarks: shared code (common: texcc/texrender runs, stats, results files; resources;
+cycles: Blender Cycles as a reference renderer) and each measurement, whose command is the file
+of the same name in bench/ (bench/run runs bench/bench.py). BENCHMARKS.md's generator
+(bench/report*.py, bench/charts.py) stays in bench/."""

@@ -97,7 +97,7 @@ def sampler_kernels(work, sampler):
     """kernels/ as it is (sampler "sobol"), or with RT_SAMPLER_PCG (the PCG stream of before
     issue 26) put in front of rt_sampling.h; a spec BASE:NAME=VALUE[+NAME=VALUE] also puts
     those bench-only defines in front of shade.cl (sampling.sampler_defines)."""
-    import sampling
+    from texcc_tools.bench import sampling
     base, defines = sampling.sampler_defines(sampler)
     prepend = {"shade.cl": defines} if defines else {}
     if base == "pcg":

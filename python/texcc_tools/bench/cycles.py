@@ -75,13 +75,7 @@ def worker():
             scene.cycles.sampling_pattern = req["pattern"]
         return scene
 
-    def read_exr(path):
-        img = bpy.data.images.load(path)
-        px = np.empty(len(img.pixels), np.float32)
-        img.pixels.foreach_get(px)
-        out = px.reshape(img.size[1], img.size[0], 4)[::-1, :, :3].copy()
-        bpy.data.images.remove(img)
-        return out
+    read_exr = exr.read_file
 
     def render(req):
         scene = setup(req)

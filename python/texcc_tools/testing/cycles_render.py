@@ -7,6 +7,7 @@ import subprocess
 import sys
 import tempfile
 
+from texcc_tools.exr import read_channels
 from texcc_tools.paths import INPUTS
 
 HERE = os.path.join(INPUTS, "blender-export")  # region_means.py and the cycles-*.json references
@@ -27,10 +28,8 @@ def render_npy(scene, spp, exr, npy, transparent=False):
     scene.render.image_settings.color_depth = "32"
     scene.render.filepath = exr
     bpy.ops.render.render(write_still=True)
-    image = bpy.data.images.load(exr)
-    pixels = np.empty(len(image.pixels), np.float32)
-    image.pixels.foreach_get(pixels)
-    np.save(npy, pixels.reshape(image.size[1], image.size[0], 4)[::-1])
+    channels = read_channels(exr)  # RGBA, top row first, as Blender wrote them
+    np.save(npy, np.stack([channels[c] for c in "RGBA"], axis=-1))
 
 
 def render_file(blend, spp, transparent=False):

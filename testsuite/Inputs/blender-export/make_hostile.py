@@ -19,7 +19,7 @@ import sys
 
 import bpy
 
-from make_blend import reproducible  # noqa: E402  (after bpy)
+from texcc_tools.testing.make_blend import reproducible  # noqa: E402  (after bpy)
 
 
 def new_scene(name):

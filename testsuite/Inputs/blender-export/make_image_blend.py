@@ -71,7 +71,7 @@ def plane(bpy, scene, name, x0, x1, y0, y1, material):
 
 def make(out, refused=False):
     import bpy
-    from make_blend import new_scene
+    from texcc_tools.testing.make_blend import new_scene
     scene = new_scene(64, 48, 16, max_bounces=2, color=(0.0, 0.0, 0.0, 1.0))
     cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     cam.data.lens = 35.0

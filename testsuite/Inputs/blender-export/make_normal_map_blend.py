@@ -107,7 +107,7 @@ def square(bpy, name, uvs):
 
 def make(out, refused=False):
     import bpy
-    from make_blend import new_scene
+    from texcc_tools.testing.make_blend import new_scene
     scene = new_scene(128, 64, 16, max_bounces=2, color=(0.0, 0.0, 0.0, 1.0))
     cam = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     # 8 units across at y = 0, 12 away: 36 mm sensor, lens 36 * 12 / 8.

@@ -15,7 +15,7 @@ import sys
 
 import bpy
 
-from make_blend import new_scene  # noqa: E402  (after bpy)
+from texcc_tools.testing.make_blend import new_scene  # noqa: E402  (after bpy)
 
 
 def copy_scene(base, name):

@@ -27,7 +27,7 @@ import tempfile
 import bpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-from make_blend import new_scene  # noqa: E402
+from texcc_tools.testing.make_blend import new_scene  # noqa: E402
 
 
 def ident(sockets, identifier):

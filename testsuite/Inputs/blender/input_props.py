@@ -17,6 +17,8 @@ import os
 import subprocess
 import sys
 
+from texcc_tools import manifest
+
 TOL = 1e-5
 TURN = {"axisX": [0, 1, 0], "axisY": [-1, 0, 0], "axisZ": [0, 0, 1]}
 AO_COLOR = [0.5, 1.0, 2.0]
@@ -60,8 +62,7 @@ def main():
     out = os.path.join(args.work, "out")
     subprocess.run([args.texcc, "--graph", path, "-o", out] +
                    (["--target=host"] if args.host else []), check=True)
-    with open(os.path.join(out, "layout.json")) as f:
-        index = {m["name"]: m["index"] for m in json.load(f)["materials"]}
+    index = {m["name"]: m["index"] for m in manifest.load(out)["materials"]}
     text = subprocess.run([args.eval, out, "--grid", str(args.grid)] +
                           (["--host"] if args.host else []), check=True,
                           stdout=subprocess.PIPE, text=True).stdout

@@ -15,12 +15,13 @@ usage: equivalence.py --texcc TEXCC --eval TEXCC_EVAL --work DIR --grid N GRAPH 
 Exit 0 when every mode of every graph agrees, 1 otherwise (each failure is printed).
 """
 import argparse
-import json
 import os
 import shutil
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
+
+from texcc_tools import manifest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -80,11 +81,9 @@ def check_fallback(out, dump, graph, args, lines):
     shutil.copyfile(os.path.join(out, "args.bin"), os.path.join(fallback, "args.bin"))
     # The interp tier ignores the hoisted values in args.bin and has no texcc_uniforms kernel
     # to compute them (the runtime runs it for the shape tier only).
-    with open(os.path.join(out, "layout.json")) as f:
-        layout = json.load(f)
+    layout = manifest.load(out)
     layout["kernel"].pop("uniforms", None)
-    with open(os.path.join(fallback, "layout.json"), "w") as f:
-        json.dump(layout, f)
+    manifest.save(fallback, layout)
     shutil.copyfile(os.path.join(out, "proctex.interp.cl"), os.path.join(fallback, "proctex.cl"))
     fallback_dump = fallback + ".txt"
     return (run([args.eval, fallback, "--grid", str(args.grid)], lines, fallback_dump)
@@ -95,8 +94,7 @@ def check_fallback(out, dump, graph, args, lines):
 def check_unhoisted(out, dump, graph, args, extra, lines):
     """interp whose kernel hoists (layout.json kernel.uniforms) against interp --no-hoist, bit
     for bit; true without a check when nothing is hoisted."""
-    with open(os.path.join(out, "layout.json")) as f:
-        layout = json.load(f)
+    layout = manifest.load(out)
     if not layout["kernel"].get("uniforms"):
         return True
     hoisted = sum(len(fn["hoisted"]["values"]) for fn in layout["functions"] if "hoisted" in fn)
@@ -113,8 +111,7 @@ def check_unhoisted(out, dump, graph, args, extra, lines):
 def check_unquickened(out, dump, graph, args, extra, lines):
     """interp with quickened opcodes (layout.json "quickened") against --max-quickened=0, bit
     for bit; true without a check when the table is empty."""
-    with open(os.path.join(out, "layout.json")) as f:
-        quickened = json.load(f).get("quickened", [])
+    quickened = manifest.load(out).get("quickened", [])
     if not quickened:
         return True
     plain = out + "-unquickened"

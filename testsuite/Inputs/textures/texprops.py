@@ -27,6 +27,8 @@ import os
 import subprocess
 import sys
 
+from texcc_tools import manifest
+
 FAILURES = []
 
 
@@ -105,8 +107,7 @@ class Oracle:
         run([args.cxx, "-x", "c++", "-std=c++17", "-O1", "-fPIC", "-shared", "-w",
              "-I", os.path.join(args.src, "kernels", "common"),
              os.path.join(out, "proctex.cpp"), "-o", lib, "-lstdc++", "-lm"])
-        with open(os.path.join(out, "layout.json")) as f:
-            self.layout = json.load(f)
+        self.layout = manifest.load(out)
         self.material = {m["name"]: m["index"] for m in self.layout["materials"]}
         self.lib = ctypes.CDLL(lib)
         self.fn = self.lib.texcc_host_evaluate

@@ -1,0 +1,1 @@
+"""The code of the commands in scripts/ (each file there is a thin entry point)."""
