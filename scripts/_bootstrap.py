@@ -16,6 +16,7 @@ except ImportError:
     if os.path.realpath(sys.prefix) == os.path.realpath(os.path.dirname(os.path.dirname(_venv))) \
             or not os.path.exists(_venv):
         sys.exit("%s: error: the texcc_tools package is not installed in %s: run "
-                 "scripts/setup.sh" % (os.path.basename(sys.argv[0]), os.path.dirname(_venv)))
+                 "scripts/setup.sh" % (os.path.basename(sys.argv[0]),
+                                       os.path.dirname(os.path.dirname(_venv))))
     else:
         os.execv(_venv, [_venv] + sys.argv)
