@@ -1,27 +1,36 @@
 #!/usr/bin/env python3
-"""Issue 39 item 5, first part: single Blender nodes' cost per sample in Cycles (SVM, through
-bpy) beside texrender's per mode, one thread each.
+"""Issue 39 item 5: single Blender nodes' cost per sample in Cycles (SVM and OSL, through bpy),
+in texrender per mode and in the C reference, one thread each, measured in interleaved rounds.
+
+Nodes (NODES): Noise 3D Color Detail 7 fBM and Ridged Multifractal, Voronoi 3D F1, Wave Bands X
+Sine Distortion 1 Detail 7, and a user's fBM (bench/cpp_reference/userfbm.cl; in Cycles as OSL,
+bench/cpp_reference/userfbm.osl in a Script node: no SVM form).
 
 Cycles: a plane that fills an orthographic view (its Object coordinates span [-1, 1] in x and
 y), the node's output into an Emission shader, no lights, black world, Cycles on the CPU with
-one thread, SIZE x SIZE pixels at SPP samples, adaptive sampling and denoising off. A node's cost
-per sample is its render's CPU time (the bpy process's, time.process_time) minus a constant
-Emission's, over SIZE^2 x SPP samples (CPU time, because wall time on a shared machine spreads
-with the load; wall time is recorded beside it); the renders of every node and of the constant
-alternate in rounds (--reps), and the median of each node's per-round differences is reported.
+one thread, SIZE x SIZE pixels at SPP samples, adaptive sampling and denoising off. Two bpy
+processes stay up for the whole run, one with the SVM shading system and one with OSL
+(scene.cycles.shading_system: Blender's own nodes then run as Cycles' OSL shaders); each
+renders, when asked, every node's material and a constant Emission once. A node's cost per
+sample in a round is its render's CPU time (the bpy process's, time.process_time) minus the
+constant's of the same process and round, over SIZE^2 x SPP samples (CPU time because wall time
+on a shared machine spreads with the load; wall time is kept beside it).
 
-texrender: texcc-eval --time over the same node as a texcc graph (inline, interp and shape in
-one process, POCL_MAX_PTHREAD_COUNT=1, kernel time per textured hit, points uniform in
-[-1, 1]^3).
+texrender: texcc-eval --time over each node as a texcc graph (inline, interp and shape,
+POCL_MAX_PTHREAD_COUNT=1, kernel time per textured hit, points uniform in [-1, 1]^3), all
+folders in one process per round (--inner rounds; their median is the round's figure).
 
-The user fBM (bench/cpp_reference/userfbm.cl) runs in Cycles as OSL
-(bench/cpp_reference/userfbm.osl, the same arithmetic, in a Script node) with the shading system
-set to OSL for it and for its own constant Emission. The two sides are not the same measurement
-(Cycles' difference of whole renders includes its SVM or OSL set-up for the node; texrender's
-is the texture kernel alone).
+C reference: bench/cpp_reference/ref (the same texture source compiled by clang-15 -O3 over an
+array of points, run-time and folded parameters; thread CPU time), --inner rounds per round.
+Its values are compared with texrender's inline mode at its points ("maxAbsDiff", must be 0).
 
-usage: bench/per_node_cycles.py [--build DIR] [--size N] [--spp N] [--reps K] [--rounds R]
-                                [--out FILE]
+Each round runs the four (Cycles SVM, Cycles OSL, texrender, reference) once, in an order that
+rotates with the round; the figures are medians over the rounds, with the 1-minute load average
+recorded per round, and the median over rounds of each round's ratio of texrender's inline mode
+to Cycles' figure in the same round.
+
+usage: bench/per_node_cycles.py [--build DIR] [--size N] [--spp N] [--reps K] [--inner R]
+                                [--no-osl] [--out FILE]
 """
 import argparse
 import json
@@ -33,6 +42,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
+import texture_speed  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 VENV_PYTHON = os.path.join(common.ROOT, ".venv", "bin", "python")
@@ -75,7 +85,18 @@ NODES = {
                   "direction": 0, "profile": 0}}),
 }
 
-WORKER = r'''
+# The C reference's variant names (bench/cpp_reference/ref.c) and its --dump-values columns per
+# node; the user fBM's texcc graph.
+REF = {"noise-3d-color-detail7": ("noise3d-color-detail7", 0),
+       "noise-3d-ridged-detail7": ("noise3d-ridged-detail7", 6),
+       "voronoi-3d-f1": ("voronoi3d-f1", 9),
+       "wave-bands-x-distortion1-detail7": ("wave-bands-x-distortion1-detail7", 12),
+       "userfbm": ("userfbm", 3)}
+USERFBM_GRAPH = os.path.join(common.BENCH, "cpp_reference", "graphs", "userfbm.json")
+USERFBM_OSL = os.path.join(common.BENCH, "cpp_reference", "userfbm.osl")
+MODES = ("inline", "interp", "shape")
+
+WORKER = r"""
 import json, os, sys, time
 import bpy
 req = json.loads(sys.argv[-1])
@@ -136,48 +157,76 @@ for name, spec in req["nodes"].items():
         t.links.new(tc.outputs["Object"], n.inputs["Vector"])
         t.links.new(n.outputs[output], e.inputs["Color"])
     materials[name] = m
-times = {name: [] for name in materials}
-cpu = {name: [] for name in materials}
-for r in range(req["reps"] + 1):  # the first round warms up (kernel loading), not counted
+
+
+def render_all():
+    wall, cpu = {}, {}
     for name, m in materials.items():
         plane.data.materials.clear()
         plane.data.materials.append(m)
         t0, c0 = time.perf_counter(), time.process_time()
         bpy.ops.render.render()
-        if r > 0:
-            times[name].append(time.perf_counter() - t0)
-            cpu[name].append(time.process_time() - c0)
-print("PER_NODE_CYCLES " + json.dumps({"wall": times, "cpu": cpu}), flush=True)
-'''
+        wall[name] = time.perf_counter() - t0
+        cpu[name] = time.process_time() - c0
+    return {"wall": wall, "cpu": cpu}
 
 
-def cycles_times(size, spp, reps, osl=False):
+render_all()  # warms up (kernel loading, OSL shader compilation), not counted
+print("PER_NODE_READY", flush=True)
+for line in sys.stdin:
+    if line.strip() != "round":
+        break
+    print("PER_NODE_ROUND " + json.dumps(render_all()), flush=True)
+"""
+
+
+class CyclesWorker:
+    """One bpy process (SVM or OSL) that renders every material once per round()."""
+
+    def __init__(self, work, size, spp, nodes, osl):
+        self.name = "osl" if osl else "svm"
+        self.script = os.path.join(work, "per_node_worker.py")
+        with open(self.script, "w") as f:
+            f.write(WORKER)
+        self.log = open(os.path.join(work, "cycles-%s.log" % self.name), "w")
+        req = json.dumps({"size": size, "spp": spp, "nodes": nodes, "osl": osl})
+        self.proc = subprocess.Popen([VENV_PYTHON, self.script, req], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, stderr=self.log, text=True)
+        self._read("PER_NODE_READY")
+
+    def _read(self, prefix):
+        for line in self.proc.stdout:
+            if line.startswith(prefix):
+                return line[len(prefix):].strip()
+        self.proc.wait()
+        raise common.BenchError("the Cycles %s worker failed (exit %s): see %s" % (
+            self.name, self.proc.returncode, self.log.name))
+
+    def round(self):
+        self.proc.stdin.write("round\n")
+        self.proc.stdin.flush()
+        return json.loads(self._read("PER_NODE_ROUND "))
+
+    def close(self):
+        if self.proc.poll() is None:
+            self.proc.stdin.close()
+            self.proc.wait()
+        self.log.close()
+
+
+def cycles_nodes(osl):
+    """The materials of one worker: a constant, the Blender nodes, and under OSL the user fBM."""
+    nodes = {"constant": None}
+    for name, (kind, output, inputs, props, _) in NODES.items():
+        nodes[name] = (kind, output, inputs, props)
     if osl:
-        nodes = {"constant": None,
-                 "userfbm": ["SCRIPT", os.path.join(common.BENCH, "cpp_reference", "userfbm.osl"),
-                             "Color"]}
-    else:
-        nodes = {"constant": None}
-        for name, (kind, output, inputs, props, _) in NODES.items():
-            nodes[name] = (kind, output, inputs, props)
-    req = json.dumps({"size": size, "spp": spp, "reps": reps, "nodes": nodes, "osl": osl})
-    with tempfile.NamedTemporaryFile("w", suffix=".py", delete=False) as f:
-        f.write(WORKER)
-    try:
-        r = subprocess.run([VENV_PYTHON, f.name, req], stdout=subprocess.PIPE,
-                           stderr=subprocess.PIPE, text=True)
-    finally:
-        os.remove(f.name)
-    for line in r.stdout.splitlines():
-        if line.startswith("PER_NODE_CYCLES "):
-            return json.loads(line[len("PER_NODE_CYCLES "):])
-    raise common.BenchError("the Cycles worker failed (exit %d): %s" % (r.returncode,
-                                                                        r.stderr[-1500:]))
+        nodes["userfbm"] = ["SCRIPT", USERFBM_OSL, "Color"]
+    return nodes
 
 
-def texrender_times(tools, rounds, grid):
-    eval_tool = os.path.join(tools.build, "bin", "texcc-eval")
-    folders, keys = [], []
+def texrender_folders(tools):
+    """{(node, mode): texcc output folder} of every node, the user fBM included."""
+    folders = {}
     for name, (_, _, _, _, node) in NODES.items():
         graph = {"texcc": 1,
                  "sources": [os.path.join(common.ROOT, "textures", "blender", node["src"])],
@@ -186,27 +235,55 @@ def texrender_times(tools, rounds, grid):
         path = os.path.join(tools.work, "%s.json" % name)
         with open(path, "w") as f:
             json.dump(graph, f)
-        for mode in ("inline", "interp", "shape"):
+        for mode in MODES:
             folder = os.path.join(tools.work, "%s-%s" % (name, mode))
             common.texcc(tools, path, folder, mode)
-            folders.append(folder)
-            keys.append((name, mode))
-    for mode in ("inline", "interp", "shape"):
+            folders[(name, mode)] = folder
+    for mode in MODES:
         folder = os.path.join(tools.work, "userfbm-%s" % mode)
-        common.texcc(tools, os.path.join(common.BENCH, "cpp_reference", "graphs", "userfbm.json"),
-                     folder, mode)
-        folders.append(folder)
-        keys.append(("userfbm", mode))
-    r = subprocess.run([eval_tool] + folders + ["--time", str(rounds), "--grid", str(grid)],
+        common.texcc(tools, USERFBM_GRAPH, folder, mode)
+        folders[("userfbm", mode)] = folder
+    return folders
+
+
+def texrender_round(eval_tool, folders, inner, grid):
+    """One texcc-eval --time process over every folder: {(node, mode): median ns per hit}."""
+    keys = list(folders)
+    r = subprocess.run([eval_tool] + [folders[k] for k in keys] +
+                       ["--time", str(inner), "--grid", str(grid)],
                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                        env=dict(os.environ, POCL_MAX_PTHREAD_COUNT="1"))
     if r.returncode != 0:
         raise common.BenchError("texcc-eval failed: %s" % r.stderr[-1500:])
-    out = json.loads(r.stdout)
-    res = {}
-    for (name, mode), f in zip(keys, out["folders"]):
-        res.setdefault(name, {})[mode] = f["medianNsPerHit"]
-    return res
+    return {k: f["medianNsPerHit"] for k, f in zip(keys, json.loads(r.stdout)["folders"])}
+
+
+def ref_round(ref, inner, grid):
+    """One run of the C reference: {variant: median ns per sample}."""
+    out, _ = texture_speed.sh([ref, "--points", str(grid), "--rounds", str(inner)])
+    return {k: v["medianNsPerSample"] for k, v in json.loads(out)["variants"].items()}
+
+
+def ref_values_check(tools, ref, folders, grid):
+    """Max abs difference per node between the reference and texrender's inline mode at the
+    reference's points (both must give the same floats: 0)."""
+    points = os.path.join(tools.work, "ref-points.txt")
+    values = os.path.join(tools.work, "ref-values.txt")
+    texture_speed.sh([ref, "--points", str(grid), "--rounds", "1", "--dump-points", points,
+                      "--dump-values", values])
+    env = dict(os.environ, POCL_MAX_PTHREAD_COUNT="1")
+    diffs = {}
+    for name, (_, col) in REF.items():
+        out, _ = texture_speed.sh([os.path.join(tools.build, "bin", "texcc-eval"),
+                                   folders[(name, "inline")], "--points", points], env=env)
+        tex = [[float(v) for v in line.split()[3:6]] for line in out.splitlines() if line.strip()]
+        diffs[name] = texture_speed.max_abs_diff(
+            texture_speed.read_rows(values, slice(col, col + 3)), tex)
+    return diffs
+
+
+def med(xs):
+    return statistics.median(xs) if xs else None
 
 
 def main():
@@ -214,60 +291,99 @@ def main():
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
     ap.add_argument("--work", default=None)
     ap.add_argument("--size", type=int, default=256)
-    ap.add_argument("--spp", type=int, default=16)
-    ap.add_argument("--reps", type=int, default=5)
-    ap.add_argument("--rounds", type=int, default=21)
+    ap.add_argument("--spp", type=int, default=64)
+    ap.add_argument("--reps", type=int, default=7, help="interleaved rounds")
+    ap.add_argument("--inner", type=int, default=7,
+                    help="texcc-eval and reference rounds inside each round")
     ap.add_argument("--grid", type=int, default=4096)
+    ap.add_argument("--no-osl", action="store_true", help="no Cycles OSL column")
     ap.add_argument("--out", default=os.path.join(common.RESULTS, "per_node_cycles.json"))
     args = ap.parse_args()
     work = args.work or os.path.join(args.build, "bench-per-node-cycles")
     os.makedirs(work, exist_ok=True)
-    tools = common.Tools(args.build, work)
-    load = [os.getloadavg()[0]]
-    cyc = cycles_times(args.size, args.spp, args.reps)
-    load.append(os.getloadavg()[0])
-    osl = cycles_times(args.size, args.spp, args.reps, osl=True)
-    load.append(os.getloadavg()[0])
-    tex = texrender_times(tools, args.rounds, args.grid)
-    load.append(os.getloadavg()[0])
+    tools = texture_speed.bench_tools(args.build, work)
+    eval_tool = os.path.join(args.build, "bin", "texcc-eval")
+    folders = texrender_folders(tools)
+    ref = texture_speed.build_ref(work, "native")
+    diffs = ref_values_check(tools, ref, folders, args.grid)
+    common.log("reference against texrender inline, max abs difference: %s" % diffs)
+    workers = {"svm": CyclesWorker(work, args.size, args.spp, cycles_nodes(False), False)}
+    if not args.no_osl:
+        workers["osl"] = CyclesWorker(work, args.size, args.spp, cycles_nodes(True), True)
     samples = args.size * args.size * args.spp
+    parts = list(workers) + ["texrender", "ref"]
+    rounds, loads = [], []
+    try:
+        for r in range(args.reps):
+            loads.append(os.getloadavg()[0])
+            got = {}
+            for j in range(len(parts)):
+                part = parts[(j + r) % len(parts)]
+                if part in workers:
+                    got[part] = workers[part].round()
+                elif part == "texrender":
+                    got[part] = texrender_round(eval_tool, folders, args.inner, args.grid)
+                else:
+                    got[part] = ref_round(ref, args.inner, args.grid)
+            rounds.append(got)
+            common.log("round %d of %d done (load %.1f)" % (r + 1, args.reps, loads[-1]))
+    finally:
+        for w in workers.values():
+            w.close()
+    loads.append(os.getloadavg()[0])
 
-    def per_sample(runs, name, constant="constant"):
-        """Median over rounds of (node render - constant render) per sample, in ns, by the
-        worker's CPU time (what the render thread spent, whatever the machine's load) and by
-        wall time; and the CPU-time rounds themselves."""
-        out = {}
-        for clock in ("cpu", "wall"):
-            diffs = [(a - b) * 1e9 / samples
-                     for a, b in zip(runs[clock][name], runs[clock][constant])]
-            out[clock] = (statistics.median(diffs), diffs)
+    def cycles_cost(kind, name, clock="cpu"):
+        """Per round: (node render - constant render) in ns per sample."""
+        if kind not in workers:
+            return []
+        out = []
+        for g in rounds:
+            c = g[kind][clock]
+            if name in c:
+                out.append((c[name] - c["constant"]) * 1e9 / samples)
         return out
 
     rows = {}
-    for name in NODES:
-        c = per_sample(cyc, name)
-        svm = c["cpu"][0]
-        rows[name] = {"cyclesSvmNsPerSample": svm, "cyclesSvmRounds": c["cpu"][1],
-                      "cyclesSvmWallNsPerSample": c["wall"][0],
-                      "texrenderNsPerSample": tex[name],
-                      "ratioToCyclesSvm": {m: v / svm for m, v in tex[name].items()}}
-        common.log("%s: Cycles SVM %.1f ns/sample CPU (%.1f wall); texrender %s" % (
-            name, svm, c["wall"][0],
-            {m: "%.1f (%.2fx)" % (v, v / svm) for m, v in tex[name].items()}))
-    c = per_sample(osl, "userfbm")
-    o = c["cpu"][0]
-    rows["userfbm"] = {"cyclesOslNsPerSample": o, "cyclesOslRounds": c["cpu"][1],
-                       "cyclesOslWallNsPerSample": c["wall"][0],
-                       "texrenderNsPerSample": tex["userfbm"],
-                       "ratioToCyclesOsl": {m: v / o for m, v in tex["userfbm"].items()}}
-    common.log("userfbm: Cycles OSL %.1f ns/sample CPU (%.1f wall); texrender %s" % (
-        o, c["wall"][0], {m: "%.1f (%.2fx)" % (v, v / o) for m, v in tex["userfbm"].items()}))
+    for name in list(NODES) + ["userfbm"]:
+        row = {}
+        for kind in ("svm", "osl"):
+            xs = cycles_cost(kind, name)
+            if xs:
+                row["cycles" + kind.capitalize()] = {
+                    "medianNsPerSample": med(xs), "rounds": xs,
+                    "wallMedianNsPerSample": med(cycles_cost(kind, name, "wall"))}
+        for mode in MODES:
+            xs = [g["texrender"][(name, mode)] for g in rounds]
+            row["texrender-" + mode] = {"medianNsPerSample": med(xs), "rounds": xs}
+        variant = REF[name][0]
+        for v in ("folded", "runtime"):
+            xs = [g["ref"]["%s/%s" % (variant, v)] for g in rounds]
+            row["ref-" + v] = {"medianNsPerSample": med(xs), "rounds": xs}
+        row["refMaxAbsDiff"] = diffs[name]
+        # ratios of medians, and the median of the rounds' own ratios (texrender inline)
+        for kind in ("Svm", "Osl"):
+            c = row.get("cycles" + kind)
+            if not c:
+                continue
+            row["ratioToCycles" + kind] = {m: row["texrender-" + m]["medianNsPerSample"] /
+                                           c["medianNsPerSample"] for m in MODES}
+            row["ratioToCycles" + kind]["ref-folded"] = (row["ref-folded"]["medianNsPerSample"] /
+                                                         c["medianNsPerSample"])
+            row["roundRatioToCycles" + kind] = med([
+                t / cc for t, cc in zip(row["texrender-inline"]["rounds"], c["rounds"]) if cc > 0])
+        row["ratioToRefFolded"] = {m: row["texrender-" + m]["medianNsPerSample"] /
+                                   row["ref-folded"]["medianNsPerSample"] for m in MODES}
+        rows[name] = row
+        common.log("%s: %s" % (name, ", ".join(
+            "%s %.1f" % (k, v["medianNsPerSample"]) for k, v in row.items()
+            if isinstance(v, dict) and "medianNsPerSample" in v)))
     common.save(None, {"machine": common.machine(), "git": common.git_head(), "size": args.size,
-                       "spp": args.spp, "reps": args.reps, "rounds": args.rounds,
-                       "grid": args.grid, "threads": 1, "clock": "cpu", "loadAverage1min": load,
-                       "cyclesConstantSeconds": cyc["cpu"]["constant"],
-                       "cyclesOslConstantSeconds": osl["cpu"]["constant"], "nodes": rows},
-                args.out)
+                       "spp": args.spp, "reps": args.reps, "inner": args.inner,
+                       "grid": args.grid, "threads": 1, "clock": "cpu",
+                       "loadAverage1min": loads, "interleaved": True,
+                       "cyclesConstantSeconds": {k: [g[k]["cpu"]["constant"] for g in rounds]
+                                                 for k in workers},
+                       "nodes": rows}, args.out)
 
 
 if __name__ == "__main__":

@@ -48,6 +48,66 @@ def texture_speed_section(d):
 
 
 def per_node_cycles_lines(d):
+    """The per-node table (bench/per_node_cycles.py, a standalone run): Cycles SVM and OSL,
+    texrender per mode and the C reference, per node, from interleaved rounds."""
+    if not d or not d.get("nodes"):
+        return []
+    if not d.get("interleaved"):
+        return per_node_cycles_lines_svm(d)
+    loads = d.get("loadAverage1min") or [0.0]
+
+    def ns(row, key):
+        c = row.get(key)
+        return "%.1f" % c["medianNsPerSample"] if c else "-"
+
+    def ratio(row, key, mode="inline"):
+        q = row.get(key)
+        return "**%.2fx**" % q[mode] if q else "-"
+
+    lines = ["### Per node: Cycles SVM, Cycles OSL, texrender per mode, the C reference", "",
+             "Nanoseconds per sample, one thread each, medians of %d interleaved rounds "
+             "(`bench/per_node_cycles.py --spp %d --reps %d`, at %s, load average %.1f-%.1f). "
+             "Each round renders in Cycles (bpy, CPU) every node and a constant Emission once "
+             "with the SVM and once with the OSL shading system (%dx%d, %d spp, two bpy "
+             "processes kept up; Blender's own nodes run as Cycles' OSL shaders under OSL), "
+             "runs texrender's modes (texcc-eval --time, %d inner rounds, kernel time per hit) "
+             "and the C reference (the same texture source compiled by clang-15 -O3 over an "
+             "array of points, folded and run-time parameters, thread CPU time, %d inner "
+             "rounds), in an order rotating with the round. Cycles' figure is the node "
+             "render's CPU time less the constant's of the same process and round, over the "
+             "samples. The user fBM has no SVM form (a Script node runs under OSL only). "
+             "Every reference value equals texrender's inline value at the same 4096 points "
+             "(max abs difference in the last column)." % (
+                 d["reps"], d["spp"], d["reps"], d["git"], min(loads), max(loads), d["size"],
+                 d["size"], d["spp"], d["inner"], d["inner"]), "",
+             "| node | Cycles SVM | Cycles OSL | texrender inline | interp | shape | C ref "
+             "folded | C ref run-time | inline / SVM | inline / OSL | inline / C ref folded | "
+             "C ref = texrender |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for name, r in d["nodes"].items():
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.2fx | %s |" % (
+            name, ns(r, "cyclesSvm"), ns(r, "cyclesOsl"), ns(r, "texrender-inline"),
+            ns(r, "texrender-interp"), ns(r, "texrender-shape"), ns(r, "ref-folded"),
+            ns(r, "ref-runtime"), ratio(r, "ratioToCyclesSvm"), ratio(r, "ratioToCyclesOsl"),
+            r["ratioToRefFolded"]["inline"],
+            "max diff %g" % r["refMaxAbsDiff"]))
+    spread = []
+    for name, r in d["nodes"].items():
+        for kind in ("Svm", "Osl"):
+            c = r.get("cycles" + kind)
+            if c:
+                spread.append("%s %s %.0f-%.0f" % (name, kind.upper(), min(c["rounds"]),
+                                                   max(c["rounds"])))
+    return lines + ["", "Cycles' per-round costs (CPU time differences, ns per sample): %s; "
+                    "the medians of the per-round ratios texrender inline / Cycles: %s. Where "
+                    "the time went before and after, node by node: "
+                    "[bench/texture-speed.md](bench/texture-speed.md)." % (
+                        "; ".join(spread), "; ".join(
+                            "%s %s %.2fx" % (name, kind.upper(), r["roundRatioToCycles" + kind])
+                            for name, r in d["nodes"].items() for kind in ("Svm", "Osl")
+                            if "roundRatioToCycles" + kind in r)), ""]
+
+
+def per_node_cycles_lines_svm(d):
     """Single Blender nodes against Cycles SVM (bench/per_node_cycles.py, a standalone run)."""
     if not d or not d.get("nodes"):
         return []

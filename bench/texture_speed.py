@@ -45,6 +45,7 @@ import re
 import statistics
 import subprocess
 import sys
+import types
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
@@ -66,6 +67,20 @@ CL_FLAGS = ["-x", "cl", "-cl-std=CL1.2", "-Xclang", "-finclude-default-header",
             "--target=x86_64-linux-gnu", "-O3", "-ffp-contract=off"]
 
 
+def bench_tools(build, work):
+    """What common.Tools(build, work) gives (texcc, texrender, build, work, cache), made here:
+    texcc_tools' Tools at 4949609 fails to construct (its loop variable `tool` shadows the
+    function of that name)."""
+    t = types.SimpleNamespace(texcc=os.path.join(build, "bin", "texcc"),
+                              texrender=os.path.join(build, "bin", "texrender"), build=build,
+                              work=work, cache=os.path.join(work, "cache"), device="0")
+    for path in (t.texcc, t.texrender):
+        if not os.access(path, os.X_OK):
+            raise common.BenchError("%s: not built (ninja -C %s texcc texrender)" % (path, build))
+    os.makedirs(t.cache, exist_ok=True)
+    return t
+
+
 def sh(cmd, env=None, cwd=None):
     r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
                        cwd=cwd)
@@ -76,12 +91,21 @@ def sh(cmd, env=None, cwd=None):
 
 
 def build_ref(work, march):
-    """ref (ref.c + ref_textures.cl) for -march=MARCH; returns the binary's path."""
+    """ref (ref.c + ref_textures.cl + ref_voronoi.cl) for -march=MARCH; returns the binary's
+    path. ref_voronoi.cl is a translation unit of its own (voronoi.cl and noise.cl both define
+    hash.h's functions): only its two entry points stay global (objcopy), so that the two
+    objects' copies of the library do not clash at the link."""
     obj = os.path.join(work, "ref_textures.%s.o" % march)
     sh([CLANG] + CL_FLAGS + ["-march=" + march, "-c", os.path.join(REF_DIR, "ref_textures.cl"),
                              "-o", obj])
+    vor = os.path.join(work, "ref_voronoi.%s.o" % march)
+    sh([CLANG] + CL_FLAGS + ["-march=" + march, "-c", os.path.join(REF_DIR, "ref_voronoi.cl"),
+                             "-o", vor + ".tmp"])
+    sh(["objcopy", "--keep-global-symbol=refVoronoiRuntime",
+        "--keep-global-symbol=refVoronoiFolded", vor + ".tmp", vor])
     exe = os.path.join(work, "ref.%s" % march)
-    sh([CLANG, "-O3", "-march=" + march, os.path.join(REF_DIR, "ref.c"), obj, "-lm", "-o", exe])
+    sh([CLANG, "-O3", "-march=" + march, os.path.join(REF_DIR, "ref.c"), obj, vor, "-lm", "-o",
+        exe])
     return exe
 
 
@@ -130,7 +154,7 @@ def callgrind_ir(cmd, toggle, env=None):
 def measure(args):
     work = args.work
     os.makedirs(work, exist_ok=True)
-    tools = common.Tools(args.build, work)
+    tools = bench_tools(args.build, work)
     eval_tool = os.path.join(args.build, "bin", "texcc-eval")
     modes = args.modes.split(",")
     folders = {}
@@ -237,7 +261,7 @@ def measure_nodes(args):
     import per_node_cycles
     work = args.work
     os.makedirs(work, exist_ok=True)
-    tools = common.Tools(args.build, work)
+    tools = bench_tools(args.build, work)
     eval_tool = os.path.join(args.build, "bin", "texcc-eval")
     modes = args.modes.split(",")
     roots = {"current": os.path.join(common.ROOT, "textures", "blender")}

@@ -45,6 +45,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import common  # noqa: E402
+import texture_speed  # noqa: E402
 import cycles  # noqa: E402
 
 
@@ -356,7 +357,7 @@ def main():
     if args.cycles:
         cycles.ensure_bpy()
     work = tempfile.mkdtemp(prefix="texcc-threads-")
-    tools = common.Tools(args.build, work)
+    tools = texture_speed.bench_tools(args.build, work)
     t0 = time.perf_counter()
     run = {"command": "python3 bench/threads.py " + " ".join(sys.argv[1:]),
            "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "git": common.git_head(),

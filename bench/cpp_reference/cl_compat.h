@@ -24,6 +24,7 @@ OVL float fmod(float x, float y) { return __builtin_fmodf(x, y); }
 OVL float pow(float x, float y) { return __builtin_powf(x, y); }
 OVL float sin(float x) { return __builtin_sinf(x); }
 OVL float cos(float x) { return __builtin_cosf(x); }
+OVL float fma(float a, float b, float c) { return __builtin_fmaf(a, b, c); }
 /* OpenCL's fmax/fmin: the other operand when one is NaN, as C's. */
 OVL float fmax(float x, float y) { return __builtin_fmaxf(x, y); }
 OVL float fmin(float x, float y) { return __builtin_fminf(x, y); }
