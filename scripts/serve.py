@@ -306,24 +306,23 @@ class Server:
         self.last_edit = (sid, page, page_id)
         # What changed, as texrender parsed it: node ids may hold dots, so nothing is split here.
         change = {k: event[k] for k in ("node", "arg", "value", "source") if k in event}
-        self.record(change)
+        self.record(change.get("node"), event.get("input"))
         for other in self.pages:
             other.send(dict(change, type="applied", id=page_id if other is page else None,
                             ms=event.get("ms"), builds=event.get("builds"), coalesced=coalesced))
 
-    def record(self, change):
-        """Keeps the schema's current values up to date for pages that connect later."""
+    def record(self, node_id, entry):
+        """Keeps the schema up to date for pages that connect later: the edited input's entry,
+        as texrender's 'applied' event gives it, replaces the old one (no edit is re-applied
+        here)."""
+        if not isinstance(entry, dict):
+            return
         for node in self.schema.get("nodes", []) if self.schema else []:
-            if node.get("id") != change.get("node"):
-                continue
-            for put in node.get("inputs", []):
-                if put.get("name") == change.get("arg"):
-                    for k in ("value", "node", "attr", "image"):
-                        put.pop(k, None)
-                    if "source" in change:
-                        put["node"] = change["source"]
-                    else:
-                        put["value"] = change.get("value")
+            if node.get("id") == node_id:
+                puts = node.get("inputs", [])
+                for i, put in enumerate(puts):
+                    if put.get("name") == entry.get("name"):
+                        puts[i] = entry
 
     def broadcast(self, message):
         for page in self.pages:

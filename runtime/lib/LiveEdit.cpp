@@ -108,83 +108,7 @@ void carryCommandLineBakes(texcc::graph::Graph &G, const texcc::kernel::Manifest
   }
 }
 
-json argumentJson(const texcc::graph::ArgValue &A) {
-  using Kind = texcc::graph::ArgValue::Kind;
-  auto Number = [&](double D) { return A.IsInteger ? json(int64_t(D)) : json(D); };
-  auto Numbers = [&](const std::vector<double> &Ds) {
-    json Arr = json::array();
-    for (double D : Ds)
-      Arr.push_back(Number(D));
-    return Arr;
-  };
-  json V;
-  switch (A.K) {
-  case Kind::NodeRef:
-    return json{{"node", A.Ref}};
-  case Kind::AttrRef:
-    return json{{"attr", A.Ref}};
-  case Kind::ImageRef:
-    return json{{"image", A.Ref}};
-  case Kind::Number:
-    V = Number(A.Numbers.empty() ? 0.0 : A.Numbers[0]);
-    break;
-  case Kind::Vector:
-  case Kind::Array:
-    if (A.IsArrayOfRows) {
-      V = json::array();
-      for (const std::vector<double> &Row : A.Rows)
-        V.push_back(Numbers(Row));
-    } else {
-      V = Numbers(A.Numbers);
-    }
-    break;
-  }
-  if (A.Bake)
-    return json{{"value", V}, {"bake", true}};
-  return V;
-}
-
-json bsdfJson(const texcc::graph::Bsdf &B) {
-  json J;
-  J["bsdf"] = B.Type;
-  for (const auto &[Name, V] : B.Inputs)
-    J[Name] = argumentJson(V);
-  for (const auto &[Name, Child] : B.Children)
-    J[Name] = bsdfJson(Child);
-  return J;
-}
-
 } // namespace
-
-json graphJson(const texcc::graph::Graph &G) {
-  json J;
-  J["texcc"] = 1;
-  J["sources"] = G.Sources;
-  if (!G.Images.empty()) {
-    json Images = json::object();
-    for (const auto &[Name, Path] : G.Images) {
-      auto Cs = G.ImageColorSpaces.find(Name);
-      if (Cs == G.ImageColorSpaces.end())
-        Images[Name] = Path;
-      else
-        Images[Name] = json{{"path", Path}, {"colorspace", Cs->second}};
-    }
-    J["images"] = Images;
-  }
-  json Nodes = json::array();
-  for (const texcc::graph::Node &N : G.Nodes) {
-    json Args = json::object();
-    for (const auto &[Name, V] : N.Args)
-      Args[Name] = argumentJson(V);
-    Nodes.push_back(json{{"id", N.Id}, {"fn", N.Fn}, {"args", Args}});
-  }
-  J["nodes"] = Nodes;
-  json Materials = json::object();
-  for (const texcc::graph::Material &M : G.Materials)
-    Materials[M.Name] = bsdfJson(M.Root);
-  J["materials"] = Materials;
-  return J;
-}
 
 std::string findTexcc() {
   if (const char *E = std::getenv("TEXCC"); E && *E)
@@ -234,6 +158,34 @@ Edit parseEdit(const std::string &LineIn) {
   return E;
 }
 
+namespace {
+
+/// The typed edit of a set or rewire line; std::nullopt (Diags says why) when its value does not
+/// parse.
+std::optional<texcc::graph::Edit> typedEdit(const Edit &E, texcc::graph::DiagnosticSink &Diags) {
+  if (E.K == Edit::Kind::Rewire)
+    return texcc::graph::rewireEdit(E.Node, E.Arg, E.Value);
+  std::optional<texcc::graph::ArgValue> V =
+      texcc::graph::parseArgValue(E.Node + "." + E.Arg, E.Value, Diags);
+  if (!V)
+    return std::nullopt;
+  texcc::graph::Edit T;
+  T.Node = E.Node;
+  T.Arg = E.Arg;
+  T.Value = std::move(*V);
+  return T;
+}
+
+} // namespace
+
+texcc::graph::Edit graphEdit(const Edit &E) {
+  texcc::graph::DiagnosticSink Diags;
+  std::optional<texcc::graph::Edit> T = typedEdit(E, Diags);
+  if (!T)
+    throw Error("edit '" + E.Text + "': " + firstError(Diags));
+  return std::move(*T);
+}
+
 LiveEditor::LiveEditor(const Layout &L, std::shared_ptr<const Regenerator> R)
     : Lay(L), Regen(R ? std::move(R) : std::make_shared<const Regenerator>()) {
   if (Lay.GraphPath.empty())
@@ -243,17 +195,21 @@ LiveEditor::LiveEditor(const Layout &L, std::shared_ptr<const Regenerator> R)
       texcc::graph::parseGraph(Lay.GraphPath, readGraphFile(Lay.GraphPath), Diags);
   if (!G)
     throw Error(Lay.GraphPath + ": " + diagnosticsText(Diags));
-  Model = std::move(*G);
-  carryCommandLineBakes(Model, Lay.Manifest);
-  initEditor(Model);
+  carryCommandLineBakes(*G, Lay.Manifest);
+  initEditor(std::move(*G));
 }
 
-void LiveEditor::initEditor(const texcc::graph::Graph &G) {
-  Editor.reset();
+void LiveEditor::initEditor(texcc::graph::Graph G) {
   KernelShapeHash = Lay.ShapeHash;
-  if (!Lay.Caps.ReEncodes)
-    return; // every edit regenerates
-  Editor = makeEditor(G);
+  // Every mode has one: where the values are literals of the kernel (inline), it validates the
+  // edit that a regeneration then compiles.
+  Editor = makeEditor(std::move(G));
+}
+
+const texcc::graph::Graph &LiveEditor::graph() const { return Editor->graph(); }
+
+void LiveEditor::markCommandLineBakes(texcc::graph::Graph &G) const {
+  carryCommandLineBakes(G, Lay.Manifest);
 }
 
 std::unique_ptr<texcc::graph::GraphEditor>
@@ -281,15 +237,14 @@ LiveEditor::makeEditor(texcc::graph::Graph G) const {
 }
 
 std::optional<EditProblem> LiveEditor::check(const std::vector<Edit> &Edits) const {
-  std::unique_ptr<texcc::graph::GraphEditor> Scratch = makeEditor(Model);
+  std::unique_ptr<texcc::graph::GraphEditor> Scratch = makeEditor(graph());
   for (size_t I = 0; I < Edits.size(); ++I) {
     const Edit &E = Edits[I];
     if (E.K == Edit::Kind::Wait)
       continue;
     texcc::graph::DiagnosticSink Diags;
-    bool Ok = E.K == Edit::Kind::Set ? Scratch->setArgument(E.Node, E.Arg, E.Value, Diags)
-                                     : Scratch->rewire(E.Node, E.Arg, E.Value, Diags);
-    if (Ok)
+    std::optional<texcc::graph::Edit> T = typedEdit(E, Diags);
+    if (T && Scratch->apply(*T, Diags))
       continue;
     // Point at the part at fault: the node, else the parameter, else the value.
     const texcc::graph::Node *N = Scratch->graph().findNode(E.Node);
@@ -311,50 +266,23 @@ std::optional<EditProblem> LiveEditor::check(const std::vector<Edit> &Edits) con
 
 LiveEditor::~LiveEditor() = default;
 
-bool LiveEditor::applyToModel(const Edit &E) {
+bool LiveEditor::changesWiring(const texcc::graph::Edit &E) const {
   using Kind = texcc::graph::ArgValue::Kind;
-  texcc::graph::Node *N = Model.findNode(E.Node);
-  if (!N)
-    throw Error("edit '" + E.Text + "': unknown node '" + E.Node + "'");
-  auto Slot = std::find_if(N->Args.begin(), N->Args.end(),
-                           [&](const auto &A) { return A.first == E.Arg; });
-  const bool Had = Slot != N->Args.end();
-  const bool WasWired =
-      Had && (Slot->second.Bake || Slot->second.K == Kind::NodeRef ||
-              Slot->second.K == Kind::AttrRef || Slot->second.K == Kind::ImageRef);
-  texcc::graph::ArgValue New;
-  if (E.K == Edit::Kind::Rewire) {
-    New.K = Kind::NodeRef;
-    New.Ref = E.Value;
-  } else {
-    texcc::graph::DiagnosticSink Diags;
-    std::optional<texcc::graph::ArgValue> V =
-        texcc::graph::parseArgValue(E.Node + "." + E.Arg, E.Value, Diags);
-    if (!V) {
-      if (!json::accept(E.Value))
-        throw Error("edit '" + E.Text + "': value '" + E.Value + "' is not a number or array");
-      throw Error("edit '" + E.Text + "': " + firstError(Diags));
-    }
-    New = std::move(*V);
-    // A baked constant ({"value": v, "bake": true}) is a literal of the shape code: it stays
-    // baked, and changing it changes the shape.
-    New.Bake |= Had && Slot->second.Bake;
-  }
-  if (Had) {
-    New.KeyLoc = Slot->second.KeyLoc;
-    Slot->second = std::move(New);
-  } else {
-    N->Args.emplace_back(E.Arg, std::move(New));
-  }
+  const texcc::graph::Node *N = graph().findNode(E.Node);
+  const texcc::graph::ArgValue *Was = nullptr;
+  if (N)
+    for (const auto &[Name, V] : N->Args)
+      if (Name == E.Arg)
+        Was = &V;
+  const bool WasWired = Was && (Was->Bake || !texcc::graph::isConstant(*Was));
   // A set to {"attr": ...} or {"node": ...} is a wiring too.
-  const texcc::graph::ArgValue &Now = Had ? Slot->second : N->Args.back().second;
-  return E.K == Edit::Kind::Rewire || WasWired || Now.K == Kind::NodeRef ||
-         Now.K == Kind::AttrRef;
+  return E.K == texcc::graph::Edit::Kind::Rewire || WasWired || E.Value.K == Kind::NodeRef ||
+         E.Value.K == Kind::AttrRef;
 }
 
 texcc::graph::Graph LiveEditor::absoluteGraph() const {
   fs::path GraphDir = fs::path(Lay.GraphPath).parent_path();
-  texcc::graph::Graph G = Model;
+  texcc::graph::Graph G = graph();
   for (std::string &S : G.Sources)
     S = (GraphDir / S).lexically_normal().string();
   for (auto &[Name, Path] : G.Images) {
@@ -453,11 +381,10 @@ void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   // resolving relative paths. The editor compiles the graph as it is now (edits made while a
   // background build ran included).
   std::string Original = Lay.GraphPath;
-  texcc::graph::Graph Absolute = absoluteGraph();
+  texcc::graph::Graph G = graph();
   Lay = New;
-  Lay.GraphPath = Absolute.Path = Files.graph();
-  initEditor(Absolute);
   Lay.GraphPath = Original;
+  initEditor(std::move(G));
   PreviousFolder = std::move(KernelFolder);
   KernelFolder = Files.folder();
 }
@@ -482,25 +409,28 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
       });
 }
 
-EditAction LiveEditor::plan(const Edit &E, bool Structural, Renderer &R) {
+void LiveEditor::Pending::add(bool Wiring, const texcc::graph::GraphEditor &Ed) {
+  // What the kernel lacks accumulates over a batch: a later edit re-encoded in place does not
+  // make an earlier one's new function or deeper stack runnable.
+  Structural |= Wiring;
+  NeedsRebuild |= Ed.needsRebuild();
+  NeedsCode |= Ed.needsRebuild() && !Ed.needsOnlyStackSlots();
+  NeedsAttributeCase |= Ed.needsAttributeCase();
+  NeedsFunction |= Ed.needsFunction();
+}
+
+EditAction LiveEditor::plan(const Pending &P, Renderer &R) {
   if (!Lay.Caps.ReEncodes)
     return planEdit({}, Lay.Caps, {});
-  texcc::graph::DiagnosticSink Diags;
-  bool Ok = texcc::whileAllocating("encoding the graph for a live edit", [&] {
-    return E.K == Edit::Kind::Set ? Editor->setArgument(E.Node, E.Arg, E.Value, Diags)
-                                  : Editor->rewire(E.Node, E.Arg, E.Value, Diags);
-  });
-  if (!Ok)
-    throw Error("edit '" + E.Text + "': " + firstError(Diags));
   const auto &CG = Editor->compiled();
   EditFacts F;
-  F.Structural = Structural;
+  F.Structural = P.Structural;
   if (!KernelShapeHash.empty()) // layout.json from a texcc without kernel.shapeHash: Structural
     F.ShapeChanged = texcc::graph::shapeHash(CG) != KernelShapeHash;
-  F.NeedsRebuild = Editor->needsRebuild();
-  F.NeedsOnlyStackSlots = Editor->needsOnlyStackSlots();
-  F.NeedsAttributeCase = Editor->needsAttributeCase();
-  F.NeedsFunction = Editor->needsFunction();
+  F.NeedsRebuild = P.NeedsRebuild;
+  F.NeedsOnlyStackSlots = P.NeedsRebuild && !P.NeedsCode;
+  F.NeedsAttributeCase = P.NeedsAttributeCase;
+  F.NeedsFunction = P.NeedsFunction;
   F.Spill = CG.Spill;
   F.StackSlots = CG.StackSlots;
   F.MaxOutputs = CG.MaxOutputs;
@@ -510,27 +440,9 @@ EditAction LiveEditor::plan(const Edit &E, bool Structural, Renderer &R) {
   return planEdit(F, Lay.Caps, {R.tierPolicy(), R.fallbackStackSlots(), R.interpStackSlots()});
 }
 
-EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
+EditResult LiveEditor::carryOut(const Pending &P, Renderer &R, double T0) {
   EditResult Res;
-  if (E.K == Edit::Kind::Wait) {
-    Res.IdleSeconds = R.waitForBackgroundBuild();
-    return Res;
-  }
-  double T0 = now();
-  // inline mode has no editor to validate the edit against: check it on a scratch copy.
-  if (!Lay.Caps.ReEncodes)
-    if (std::optional<EditProblem> Bad = check({E}))
-      throw Error("edit '" + E.Text + "': " + Bad->Message);
-  // A refused edit must not stay in the graph that later regenerations hand to texcc.
-  texcc::graph::Graph Before = Model;
-  EditAction P;
-  try {
-    P = plan(E, applyToModel(E), R);
-  } catch (const Error &) {
-    Model = std::move(Before);
-    throw;
-  }
-  switch (P) {
+  switch (plan(P, R)) {
   case EditAction::Upload:
     R.applyArguments(Editor->compiled().ArgsBin, Editor->compiled().Attributes);
     break;
@@ -546,6 +458,53 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
   R.cl().finish();
   Res.Seconds = now() - T0;
   return Res;
+}
+
+EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
+  if (E.K == Edit::Kind::Wait) {
+    EditResult Res;
+    Res.IdleSeconds = R.waitForBackgroundBuild();
+    return Res;
+  }
+  return apply(graphEdit(E), R, E.Text);
+}
+
+EditResult LiveEditor::apply(const texcc::graph::Edit &E, Renderer &R, const std::string &Text) {
+  double T0 = now();
+  Pending P;
+  const bool Wiring = changesWiring(E);
+  texcc::graph::DiagnosticSink Diags;
+  // The editor validates and applies it, or leaves everything as it was.
+  if (!texcc::whileAllocating("encoding the graph for a live edit",
+                              [&] { return Editor->apply(E, Diags); }))
+    throw Error("edit '" + (Text.empty() ? texcc::graph::editText(E) : Text) +
+                "': " + firstError(Diags));
+  P.add(Wiring, *Editor);
+  return carryOut(P, R, T0);
+}
+
+EditResult LiveEditor::apply(const std::vector<texcc::graph::Edit> &Edits, Renderer &R) {
+  if (Edits.size() == 1)
+    return apply(Edits[0], R);
+  double T0 = now();
+  Pending P;
+  // The edits go to a copy of the editor, which replaces it once all are applied.
+  std::unique_ptr<texcc::graph::GraphEditor> Next;
+  texcc::whileAllocating("encoding the graph for a live edit", [&] {
+    Next = std::make_unique<texcc::graph::GraphEditor>(*Editor);
+    std::swap(Next, Editor);
+    for (const texcc::graph::Edit &E : Edits) {
+      const bool Wiring = changesWiring(E);
+      texcc::graph::DiagnosticSink Diags;
+      if (!Editor->apply(E, Diags)) {
+        std::swap(Next, Editor);
+        throw Error("edit '" + texcc::graph::editText(E) + "': " + firstError(Diags));
+      }
+      P.add(Wiring, *Editor);
+    }
+    return true;
+  });
+  return carryOut(P, R, T0);
 }
 
 } // namespace texrender

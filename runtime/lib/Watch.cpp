@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <sstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -26,7 +27,7 @@ void Session::event(const ordered_json &E) {
 }
 
 void Session::reloadEvent(const std::string &What) {
-  event({{"event", "reload"}, {"what", What}, {"schema", editSchema(Lay, Graph)}});
+  event({{"event", "reload"}, {"what", What}, {"schema", editSchema(Lay, Editor->graph())}});
 }
 
 void Session::errorEvent(const std::string &Message, std::optional<long long> Id) {
@@ -41,7 +42,7 @@ void Session::errorEvent(const std::string &Message, std::optional<long long> Id
 }
 
 void Session::watchFiles() {
-  std::vector<std::string> Paths = graphFiles(GraphPath, Graph);
+  std::vector<std::string> Paths = graphFiles(GraphPath, Editor->graph().Sources);
   Paths.push_back(fs::absolute(O.ScenePath).string());
   Files.watch(Paths);
 }
@@ -86,11 +87,11 @@ WatchResult Session::run() {
   say("watching " + GraphPath + ", its sources and " + O.ScenePath + "; Ctrl-C ends");
   if (O.Control) {
     ordered_json Sources = json::array();
-    for (const std::string &S : graphFiles(GraphPath, Graph))
+    for (const std::string &S : graphFiles(GraphPath, Editor->graph().Sources))
       if (S != GraphPath)
         Sources.push_back(S);
     event({{"event", "ready"}, {"graph", GraphPath}, {"sources", Sources},
-           {"width", O.Width}, {"height", O.Height}, {"schema", editSchema(Lay, Graph)}});
+           {"width", O.Width}, {"height", O.Height}, {"schema", editSchema(Lay, Editor->graph())}});
     Input = std::make_unique<ControlInput>(Waker);
   }
   while (!stopping() && !Ended) {
@@ -225,18 +226,17 @@ void Session::handleCommand(const Command &C) {
   }
   if (Ed.K == Edit::Kind::Wait)
     return refuse("edit 'wait': the control channel takes set and rewire edits");
-  if (std::optional<EditProblem> P = Editor->check({Ed}))
-    return refuse("edit '" + Ed.Text + "': " + P->Message);
   unsigned Builds = R->cl().foregroundBuilds();
   double T0 = nowSeconds();
-  noteInteractiveEdit(); // background compiles wait for a pause (TextureTiers.h)
+  texcc::graph::Edit Typed;
   try {
-    Editor->apply(Ed, *R);
+    Typed = graphEdit(Ed);
+    noteInteractiveEdit(); // background compiles wait for a pause (TextureTiers.h)
+    Editor->apply(Typed, *R, Ed.Text); // validated once: a refusal changes nothing
   } catch (const Error &X) {
     return refuse(X.what());
   }
   double Took = nowSeconds() - T0;
-  applyToGraphJson(Graph, Ed);
   unsigned Built = R->cl().foregroundBuilds() - Builds;
   LastEdit = Id;
   Dirty = true;
@@ -251,7 +251,8 @@ void Session::handleCommand(const Command &C) {
   if (Ed.K == Edit::Kind::Rewire)
     Applied["source"] = Ed.Value;
   else
-    Applied["value"] = json::parse(Ed.Value);
+    Applied["value"] = texcc::graph::argumentJson(Typed.Value);
+  Applied["input"] = inputSchema(Lay, Editor->graph(), Ed.Node, Ed.Arg);
   event(Applied);
   if (Built > 0) // a rewiring regenerated the kernel
     noteQuickTier(C.ReadAt);
@@ -270,17 +271,14 @@ void Session::applyChanges() {
     applyGraph(Now);
 }
 
-void Session::applyKeptEdits(const json &Edited) {
-  std::optional<std::vector<std::string>> Edits = argumentEdits(LayGraph, Edited);
+void Session::applyKeptEdits(const texcc::graph::Graph &Edited) {
+  std::string Why;
+  std::optional<std::vector<texcc::graph::Edit>> Edits = texcc::graph::diff(Editor->graph(), Edited, Why);
   if (!Edits)
     return;
-  for (const std::string &Text : *Edits) {
+  for (const texcc::graph::Edit &E : *Edits) {
     try {
-      Edit E = parseEdit(Text);
-      if (std::optional<EditProblem> P = Editor->check({E}))
-        throw Error("edit '" + E.Text + "': " + P->Message);
       Editor->apply(E, *R);
-      applyToGraphJson(Graph, E);
     } catch (const Error &X) {
       say("error: " + std::string(X.what()) + "; this edit is dropped");
       errorEvent(std::string(X.what()) + "; this edit is dropped");
@@ -299,9 +297,9 @@ void Session::reloadScene() {
     Primed = false;
     // The new renderer has Lay's arguments: the live edits made since are applied again.
     auto NewEditor = std::make_unique<LiveEditor>(Lay, Regen);
-    if (std::optional<std::vector<std::string>> Edits = argumentEdits(LayGraph, Graph))
-      for (const std::string &E : *Edits)
-        NewEditor->apply(parseEdit(E), *New);
+    std::string Why;
+    if (auto Edits = texcc::graph::diff(NewEditor->graph(), Editor->graph(), Why))
+      NewEditor->apply(*Edits, *New);
     R = std::move(New);
     Editor = std::move(NewEditor);
     Dirty = true;
@@ -315,73 +313,64 @@ void Session::reloadScene() {
 }
 
 void Session::applyGraph(const std::set<std::string> &Sources) {
-  json New;
+  std::string Text;
+  std::optional<texcc::graph::Graph> New;
+  texcc::graph::DiagnosticSink Diags;
   try {
-    New = json::parse(readGraphFile(GraphPath));
-  } catch (const json::parse_error &E) {
-    // nlohmann quotes the last token read: a whole 200 MB string, unbounded.
-    const std::string What = texcc::boundedMessage(E.what());
-    std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), What.c_str());
-    say("the last good graph keeps rendering");
-    errorEvent(GraphPath + ": error: " + What);
-    return;
+    Text = readGraphFile(GraphPath);
+    New = texcc::graph::parseGraph(GraphPath, Text, Diags);
   } catch (const Error &E) {
     say("error: " + std::string(E.what()) + "; the last good graph keeps rendering");
     errorEvent(E.what());
     return;
   }
-  bool GraphSame = New == FileGraph;
-  FileGraph = New;
-  std::optional<std::vector<std::string>> Edits;
+  if (!New) {
+    std::ostringstream Printed;
+    Diags.print(Printed);
+    std::fputs(Printed.str().c_str(), stderr);
+    say("the last good graph keeps rendering");
+    errorEvent(Printed.str());
+    return;
+  }
+  const size_t Digest = fileDigest(Text);
+  const bool GraphSame = Digest == FileDigest;
+  FileDigest = Digest;
+  // A saved graph.json is parsed, compared with the graph rendered and applied as edits where
+  // only node arguments changed; anything else (and a saved source file) goes to texcc.
+  Editor->markCommandLineBakes(*New);
+  std::string Why;
+  std::optional<std::vector<texcc::graph::Edit>> Edits;
   if (Sources.empty())
-    Edits = argumentEdits(Graph, New);
+    Edits = texcc::graph::diff(Editor->graph(), *New, Why);
   std::string What;
   for (const std::string &S : Sources)
     What += (What.empty() ? "" : ", ") + S;
   if (Edits)
-    applyEdits(*Edits, New);
+    applyEdits(*Edits);
   else
-    startJob(New, What.empty() ? GraphPath : What, GraphSame && !Sources.empty());
+    startJob(What.empty() ? GraphPath + " (" + Why + ")" : What, GraphSame && !Sources.empty());
 }
 
-void Session::applyEdits(const std::vector<std::string> &Lines, const json &New) {
-  if (Lines.empty()) {
+void Session::applyEdits(const std::vector<texcc::graph::Edit> &Edits) {
+  if (Edits.empty()) {
     say(GraphPath + ": saved without a change to apply");
-    Graph = New;
     reloadEvent("graph");
-    return;
-  }
-  std::vector<Edit> Edits;
-  try {
-    for (const std::string &L : Lines)
-      Edits.push_back(parseEdit(L));
-  } catch (const Error &E) {
-    std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), E.what());
-    errorEvent(GraphPath + ": error: " + E.what());
-    return;
-  }
-  if (std::optional<EditProblem> P = Editor->check(Edits)) {
-    std::string M = GraphPath + ": error: edit '" + Edits[P->Index].Text + "': " + P->Message +
-                    "; nothing applied";
-    std::fprintf(stderr, "%s\n", M.c_str());
-    errorEvent(M);
     return;
   }
   unsigned Builds = R->cl().foregroundBuilds();
   double T0 = nowSeconds();
   noteInteractiveEdit();
-  std::string Text;
   try {
-    for (const Edit &E : Edits) {
-      Editor->apply(E, *R);
-      Text += (Text.empty() ? "" : "; ") + E.Text;
-    }
+    Editor->apply(Edits, *R); // all or nothing
   } catch (const Error &E) {
-    std::fprintf(stderr, "%s: error: %s\n", GraphPath.c_str(), E.what());
-    errorEvent(GraphPath + ": error: " + E.what());
+    std::string M = GraphPath + ": error: " + E.what() + "; nothing applied";
+    std::fprintf(stderr, "%s\n", M.c_str());
+    errorEvent(M);
     return;
   }
-  Graph = New;
+  std::string Text;
+  for (const texcc::graph::Edit &E : Edits)
+    Text += (Text.empty() ? "" : "; ") + texcc::graph::editText(E);
   Dirty = true;
   ChangeAt = Noticed;
   const unsigned Built = R->cl().foregroundBuilds() - Builds;
@@ -392,14 +381,14 @@ void Session::applyEdits(const std::vector<std::string> &Lines, const json &New)
     noteQuickTier(Noticed);
 }
 
-void Session::startJob(const json &New, const std::string &What, bool KeepEdits) {
+void Session::startJob(const std::string &What, bool KeepEdits) {
   if (Job) {
     JobAgain = true; // the newest files are compiled once this run ends
     Job->KeepEdits = Job->KeepEdits && KeepEdits;
     return;
   }
   Job = std::make_unique<SourceJob>();
-  Job->Graph = New;
+  Job->FileDigest = FileDigest;
   Job->Started = Noticed; // its latency is reported once its kernel is adopted
   Job->KeepEdits = KeepEdits;
   Job->Run = Regen->ofFile(GraphPath, Lay.CompileOptions);
@@ -417,7 +406,7 @@ void Session::adoptJob() {
     bool Keep = J->KeepEdits;
     applyGraph({GraphPath}); // files saved while it ran: compile them as they are now
     if (Job)
-      Job->KeepEdits = Keep && FileGraph == J->Graph;
+      Job->KeepEdits = Keep && FileDigest == J->FileDigest;
     return;
   }
   if (!Made) {
@@ -441,12 +430,12 @@ void Session::adoptJob() {
     errorEvent(E.what());
     return;
   }
-  json Edited = Graph;
+  auto Old = std::make_unique<LiveEditor>(*Made, Regen);
   Lay = *Made;
-  Editor = std::make_unique<LiveEditor>(Lay, Regen);
-  Graph = LayGraph = J->Graph;
+  std::swap(Editor, Old); // the old editor's graph has the edits to keep
   if (J->KeepEdits)
-    applyKeptEdits(Edited);
+    applyKeptEdits(Old->graph());
+  Old.reset();
   watchFiles();
   Dirty = true;
   ChangeAt = J->Started;

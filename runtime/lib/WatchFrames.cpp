@@ -250,8 +250,8 @@ void Session::renderFrame() {
   Dirty = false;
   ++Frames;
   RenderingGood = false;
-  if (!Good || Good->Lay.Dir != Lay.Dir || Good->LayGraph != LayGraph || Good->Graph != Graph)
-    Good = GoodState{Lay, LayGraph, Graph};
+  if (!Good || Good->Lay.Dir != Lay.Dir || !texcc::graph::sameGraph(Good->Graph, Editor->graph()))
+    Good = GoodState{Lay, Editor->graph()};
   say("frame " + std::to_string(Frames) + ": " + std::to_string(F.SamplesDone) + " spp in " +
       ms(F.Seconds) + ", tier " + (F.Tier.empty() ? std::string("-") : F.Tier) +
       "; kernel builds so far " + std::to_string(R->cl().foregroundBuilds()));
@@ -288,24 +288,20 @@ void Session::recoverFromFault(const TextureFault &X) {
   if (Again)
     return wait("the last good state faults too");
   try {
-    std::optional<std::vector<std::string>> Back;
-    if (Good->Lay.Dir == Lay.Dir && Good->LayGraph == LayGraph)
-      Back = argumentEdits(Graph, Good->Graph); // the same kernel: the edits since, undone
+    std::optional<std::vector<texcc::graph::Edit>> Back;
+    std::string Why;
+    if (Good->Lay.Dir == Lay.Dir) // the same kernel: the edits since, undone
+      Back = texcc::graph::diff(Editor->graph(), Good->Graph, Why);
     std::string Kernel;
     if (!Back) { // another kernel (texcc's, a rewiring's): the good one, and its edits
       R->setLayout(Good->Lay);
       Lay = Good->Lay;
-      LayGraph = Good->LayGraph;
       Editor = std::make_unique<LiveEditor>(Lay, Regen);
-      Graph = LayGraph;
-      Back = argumentEdits(LayGraph, Good->Graph);
+      Back = texcc::graph::diff(Editor->graph(), Good->Graph, Why);
       Kernel = "kernel and ";
     }
-    if (Back) {
-      for (const std::string &T : *Back)
-        Editor->apply(parseEdit(T), *R);
-      Graph = Good->Graph;
-    }
+    if (Back && !Back->empty())
+      Editor->apply(*Back, *R);
     watchFiles();
     RenderingGood = Dirty = true;
     say("the last good " + Kernel + "graph render again" +

@@ -1,7 +1,7 @@
 // The edit schema of texrender --watch --control (WatchSession.h, docs/live.md "Control
-// channel"): what a front end may edit, sent in the 'ready' and 'reload' events so that the
-// browser preview builds its controls from texrender's own graph and manifest and owns no
-// schema of its own.
+// channel"): what a front end may edit, from the live editor's typed graph and the kernel's
+// manifest, sent in the 'ready' and 'reload' events so that the browser preview builds its
+// controls from texrender's own graph and owns no schema of its own.
 #include "WatchSession.h"
 
 #include <algorithm>
@@ -31,76 +31,96 @@ void addDoc(ordered_json &Input, const texcc::kernel::ParamDoc &D) {
 
 /// What feeds an argument in the graph rendered now: {"node": id}, {"attr": name},
 /// {"image": name} or {"value": v} (a baked argument's value too).
-void addSource(ordered_json &Input, const json &Arg) {
-  if (Arg.is_object()) {
-    for (const char *Key : {"node", "attr", "image"})
-      if (Arg.contains(Key)) {
-        Input[Key] = Arg[Key];
-        return;
-      }
-    if (Arg.contains("value")) {
-      Input["value"] = Arg["value"];
-      return;
-    }
+void addSource(ordered_json &Input, const texcc::graph::ArgValue &Arg) {
+  using Kind = texcc::graph::ArgValue::Kind;
+  switch (Arg.K) {
+  case Kind::NodeRef:
+    Input["node"] = Arg.Ref;
+    return;
+  case Kind::AttrRef:
+    Input["attr"] = Arg.Ref;
+    return;
+  case Kind::ImageRef:
+    Input["image"] = Arg.Ref;
+    return;
+  default:
+    texcc::graph::ArgValue Value = Arg;
+    Value.Bake = false;
+    Input["value"] = texcc::graph::argumentJson(Value);
   }
-  Input["value"] = Arg;
 }
 
-/// The ids of the nodes each material uses (its {"node": id} inputs, at any depth of its tree).
-ordered_json materialNodes(const json &Graph) {
+/// The node ids a BSDF tree's inputs read, at any depth.
+void bsdfNodes(const texcc::graph::Bsdf &B, std::vector<std::string> &Ids) {
+  for (const auto &[Name, V] : B.Inputs)
+    if (V.K == texcc::graph::ArgValue::Kind::NodeRef)
+      Ids.push_back(V.Ref);
+  for (const auto &[Name, Child] : B.Children)
+    bsdfNodes(Child, Ids);
+}
+
+/// The ids of the nodes each material uses (sorted).
+ordered_json materialNodes(const texcc::graph::Graph &G) {
   ordered_json Out = ordered_json::object();
-  if (!Graph.contains("materials") || !Graph["materials"].is_object())
-    return Out;
-  for (const auto &[Name, Tree] : Graph["materials"].items()) {
+  for (const texcc::graph::Material &M : G.Materials) {
     std::vector<std::string> Ids;
-    std::vector<const json *> Todo{&Tree};
-    while (!Todo.empty()) {
-      const json *J = Todo.back();
-      Todo.pop_back();
-      if (J->is_object() && J->contains("node") && (*J)["node"].is_string())
-        Ids.push_back((*J)["node"].get<std::string>());
-      if (J->is_structured())
-        for (const json &Child : *J)
-          Todo.push_back(&Child);
-    }
+    bsdfNodes(M.Root, Ids);
     std::sort(Ids.begin(), Ids.end());
     Ids.erase(std::unique(Ids.begin(), Ids.end()), Ids.end());
-    Out[Name] = Ids;
+    Out[M.Name] = Ids;
   }
   return Out;
 }
 
+/// One input's entry: its name, type, what feeds it in N, its parameter table row.
+ordered_json inputEntry(const texcc::kernel::ParamLayout &P, const texcc::graph::Node &N) {
+  ordered_json Input{{"name", P.Name}, {"type", P.Type}};
+  for (const auto &[Name, V] : N.Args)
+    if (Name == P.Name)
+      addSource(Input, V);
+  addDoc(Input, P.Doc);
+  return Input;
+}
+
+const texcc::kernel::FunctionLayout *functionOf(const Layout &Lay, const std::string &Name) {
+  for (const texcc::kernel::FunctionLayout &F : Lay.Manifest.Functions)
+    if (F.Name == Name)
+      return &F;
+  return nullptr;
+}
+
 } // namespace
 
-ordered_json editSchema(const Layout &Lay, const json &Graph) {
+ordered_json inputSchema(const Layout &Lay, const texcc::graph::Graph &G, const std::string &Node,
+                         const std::string &Arg) {
+  const texcc::graph::Node *N = G.findNode(Node);
+  const texcc::kernel::FunctionLayout *F = N ? functionOf(Lay, N->Fn) : nullptr;
+  if (F)
+    for (const texcc::kernel::ParamLayout &P : F->Params)
+      if (P.Name == Arg)
+        return inputEntry(P, *N);
+  return nullptr;
+}
+
+ordered_json editSchema(const Layout &Lay, const texcc::graph::Graph &G) {
   std::map<std::string, const texcc::kernel::FunctionLayout *> Functions;
   for (const texcc::kernel::FunctionLayout &F : Lay.Manifest.Functions)
     Functions.emplace(F.Name, &F);
   ordered_json Nodes = ordered_json::array();
-  if (Graph.contains("nodes") && Graph["nodes"].is_array())
-    for (const json &N : Graph["nodes"]) {
-      if (!N.is_object() || !N.contains("id") || !N.contains("fn"))
-        continue;
-      const std::string Fn = N["fn"].is_string() ? N["fn"].get<std::string>() : "";
-      ordered_json Node{{"id", N["id"]}, {"fn", Fn}};
-      auto F = Functions.find(Fn);
-      ordered_json Inputs = ordered_json::array();
-      if (F != Functions.end()) {
-        Node["file"] = F->second->File;
-        Node["return"] = F->second->Return;
-        const json Args = N.contains("args") && N["args"].is_object() ? N["args"] : json::object();
-        for (const texcc::kernel::ParamLayout &P : F->second->Params) {
-          ordered_json Input{{"name", P.Name}, {"type", P.Type}};
-          if (Args.contains(P.Name))
-            addSource(Input, Args[P.Name]);
-          addDoc(Input, P.Doc);
-          Inputs.push_back(std::move(Input));
-        }
-      }
-      Node["inputs"] = std::move(Inputs);
-      Nodes.push_back(std::move(Node));
+  for (const texcc::graph::Node &N : G.Nodes) {
+    ordered_json Node{{"id", N.Id}, {"fn", N.Fn}};
+    auto F = Functions.find(N.Fn);
+    ordered_json Inputs = ordered_json::array();
+    if (F != Functions.end()) {
+      Node["file"] = F->second->File;
+      Node["return"] = F->second->Return;
+      for (const texcc::kernel::ParamLayout &P : F->second->Params)
+        Inputs.push_back(inputEntry(P, N));
     }
-  return {{"nodes", std::move(Nodes)}, {"materials", materialNodes(Graph)}};
+    Node["inputs"] = std::move(Inputs);
+    Nodes.push_back(std::move(Node));
+  }
+  return {{"nodes", std::move(Nodes)}, {"materials", materialNodes(G)}};
 }
 
 } // namespace watch

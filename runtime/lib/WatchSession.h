@@ -146,22 +146,26 @@ private:
   std::shared_ptr<Queue> Q;
 };
 
-/// Applies E to the graph G (graph.json's model) as the live editor applies it to its own copy,
-/// so that a scene reload or a recompiled source file can apply the control channel's edits
-/// again (argumentEdits). E has been applied by the live editor, so its value parses.
-void applyToGraphJson(json &G, const Edit &E);
+/// The edit schema of the graph rendered now (G, the live editor's) with its kernel's manifest
+/// (Lay): per node its id, fn, file, return type and inputs (name, type, what feeds it:
+/// "value", "node", "attr" or "image"; the parameter table's "default", "range", "min", "max"
+/// and "doc"), and the nodes each material uses. The 'ready' and 'reload' events carry it
+/// (docs/live.md).
+ordered_json editSchema(const Layout &Lay, const texcc::graph::Graph &G);
+/// The schema entry of input ARG of node NODE in G (null when its function has no such
+/// parameter): the 'applied' event carries it, so that a front end replaces its copy of the
+/// input with texrender's rather than applying the edit itself.
+ordered_json inputSchema(const Layout &Lay, const texcc::graph::Graph &G, const std::string &Node,
+                         const std::string &Arg);
 
-/// The edit schema of the graph rendered now (Graph) with its kernel's manifest (Lay): per node
-/// its id, fn, file, return type and inputs (name, type, what feeds it: "value", "node", "attr"
-/// or "image"; the parameter table's "default", "range", "min", "max" and "doc"), and the nodes
-/// each material uses. The 'ready' and 'reload' events carry it (docs/live.md).
-ordered_json editSchema(const Layout &Lay, const json &Graph);
+/// A digest of graph.json's text: whether the file changed since it was last read.
+inline size_t fileDigest(const std::string &Text) { return std::hash<std::string>{}(Text); }
 
 /// texcc on the saved files, on a thread of its own (Regeneration::start), while the current
 /// kernel renders.
 struct SourceJob {
   std::shared_ptr<Regeneration> Run;
-  json Graph;
+  size_t FileDigest = 0; // graph.json's when it started
   double Started = 0;
   // Only source files changed (graph.json as before): the control channel's edits are applied
   // again to the new kernel.
@@ -174,7 +178,7 @@ public:
     O.Renderer.AfterPass = [this](const PassProgress &P) { return afterPass(P); };
     O.Renderer.CutPass = [this] { return cutPass(); };
     GraphPath = fs::absolute(Lay.GraphPath).string();
-    Graph = LayGraph = FileGraph = json::parse(readGraphFile(GraphPath));
+    FileDigest = fileDigest(readGraphFile(GraphPath));
   }
   ~Session() {
     Job.reset(); // joins texcc's thread
@@ -237,13 +241,14 @@ private:
   void applyChanges();
   /// Changed: the graph's source files that changed (empty: only the graph did).
   void applyGraph(const std::set<std::string> &Changed);
-  void applyEdits(const std::vector<std::string> &Lines, const json &New);
-  void startJob(const json &New, const std::string &What, bool KeepEdits);
+  /// A saved graph.json's diff, applied to the live editor and the renderer: all or nothing.
+  void applyEdits(const std::vector<texcc::graph::Edit> &Edits);
+  void startJob(const std::string &What, bool KeepEdits);
   void adoptJob();
-  /// Applies the edits that take LayGraph to Edited (the control channel's, kept over a new
-  /// kernel or scene) to the live editor and the renderer; one that no longer applies is
-  /// reported and dropped.
-  void applyKeptEdits(const json &Edited);
+  /// Applies the edits that take the live editor's graph to Edited (the graph rendered with the
+  /// old kernel: the control channel's edits, kept over a new kernel) to the live editor and
+  /// the renderer; one that no longer applies is reported and dropped.
+  void applyKeptEdits(const texcc::graph::Graph &Edited);
   void reloadScene();
   void handleCommands();
   void handleCommand(const Command &C);
@@ -267,9 +272,10 @@ private:
   // The folders of the kernels texcc made for this session: kept until it ends (the last good
   // state, a fallback built later, may read their files).
   std::vector<std::shared_ptr<const TempFolder>> Folders;
-  json Graph;     // the graph rendered now: LayGraph plus the live edits applied since
-  json LayGraph;  // the graph Lay was compiled from
-  json FileGraph; // graph.json as last read
+  // The graph rendered now is the live editor's (Editor->graph()); of graph.json the session
+  // keeps only the digest of the text last read (a source saved beside an unchanged graph.json
+  // keeps the control channel's edits).
+  size_t FileDigest = 0;
   FileWatcher Files;
   std::set<std::string> Changed;
   std::unique_ptr<SourceJob> Job;
@@ -318,7 +324,7 @@ private:
   // each regeneration has its own).
   struct GoodState {
     Layout Lay;
-    json LayGraph, Graph;
+    texcc::graph::Graph Graph;
   };
   std::optional<GoodState> Good;
   bool RenderingGood = false; // the good state was restored after a fault and has not completed

@@ -4,8 +4,8 @@ A page message is checked for its shape only: a JSON object of at most MAX_MESSA
 known type with exactly its keys, an integer id, strings that fit texrender's edit grammar. It
 then becomes one control line for texrender (`ID set NODE.ARG=<JSON value>` or
 `ID rewire NODE.ARG=SOURCE`); whether the node, the argument and the value are right is
-texrender's to say (its --set rules, LiveEditor::check): this module knows no graph and no
-types.
+texrender's to say (its live editor validates each edit once, as it applies it): this module
+knows no graph and no types.
 """
 import json
 

@@ -15,6 +15,7 @@
 #include "texrender/Layout.h"
 #include "texrender/Renderer.h"
 
+#include "texcc/Graph/Diff.h"
 #include "texcc/Graph/Graph.h"
 
 #include <atomic>
@@ -33,13 +34,11 @@ class GraphEditor;
 
 namespace texrender {
 
-/// The graph.json text of G (the graph library's model): keys in the model's order (texcc
-/// numbers the materials in the order graph.json lists them), numbers as parsed (an integer
-/// stays an integer, a double round-trips exactly), baked literals as {"value": v, "bake":
-/// true}. Parsing the result gives G again (locations aside).
-nlohmann::ordered_json graphJson(const texcc::graph::Graph &G);
+/// The graph.json text of a graph (the graph library's writer, Diff.h).
+using texcc::graph::graphJson;
 
-/// One edit, as written after --set or in an edit script.
+/// One edit line, as written after --set, in an edit script or on the control channel: the
+/// text front door of the graph library's typed edit (graphEdit).
 struct Edit {
   // Wait: no edit; wait for the background build in flight (a viewer idling), then render.
   enum class Kind { Set, Rewire, Wait };
@@ -61,6 +60,10 @@ struct EditProblem {
 
 /// Parses "NODE.ARG=VALUE", "set NODE.ARG=VALUE", "rewire NODE.ARG=SOURCE" or "wait".
 Edit parseEdit(const std::string &Line);
+
+/// The graph library's edit that a set or rewire line says, its value parsed. Throws Error
+/// ("edit 'TEXT': why") when the value is not one.
+texcc::graph::Edit graphEdit(const Edit &E);
 
 /// What applying an edit took.
 struct EditResult {
@@ -157,38 +160,60 @@ public:
   LiveEditor(const Layout &L, std::shared_ptr<const Regenerator> Regen = nullptr);
   ~LiveEditor();
 
-  /// Applies E to the graph and to R. Throws Error (one line: the edit and the reason).
+  /// Applies the line E (graphEdit) to the graph and to R; "wait" waits for the background
+  /// build. Throws Error (one line: the edit and the reason).
   EditResult apply(const Edit &E, Renderer &R);
+  /// Applies E to the graph and to R, validated once, by the graph editor that makes it: a
+  /// refused edit (an unknown node or parameter, a value of the wrong type or size, a rewiring
+  /// onto an unknown node or into a cycle) changes nothing. Text: the edit as the user wrote
+  /// it, for the error ("" = editText(E)). Throws Error ("edit 'TEXT': why").
+  EditResult apply(const texcc::graph::Edit &E, Renderer &R, const std::string &Text = "");
+  /// Applies Edits (a saved graph.json's diff) together: each validated once, in order, and
+  /// all refused if one is (nothing changes); then one upload, regeneration or shape switch.
+  EditResult apply(const std::vector<texcc::graph::Edit> &Edits, Renderer &R);
+
+  /// The graph with every edit so far: the one owner of the session's graph. Its sources
+  /// and images are relative to the graph file's folder, as graph.json writes them.
+  const texcc::graph::Graph &graph() const;
+  /// Marks in G the arguments baked on texcc's command line (--bake NODE.ARG; the kernel
+  /// manifest says which), as graph() has them, so that a graph.json read again compares
+  /// equal to graph() where it did not change.
+  void markCommandLineBakes(texcc::graph::Graph &G) const;
 
   /// Applies Edits, in order, to a scratch copy of the graph with the graph library's
-  /// validation (unknown node or parameter, a value of the wrong type or size, a rewiring onto
-  /// an unknown node or into a cycle): nothing is uploaded, built or rendered. Returns the first
-  /// edit that fails, if any.
+  /// validation: nothing is uploaded, built or rendered. Returns the first edit that fails, if
+  /// any. (texrender's --set and edit script are checked whole before the first frame.)
   std::optional<EditProblem> check(const std::vector<Edit> &Edits) const;
 
 private:
-  /// Applies E to the graph editor and plans it (planEdit, with the layout's capabilities).
-  EditAction plan(const Edit &E, bool Structural, Renderer &R);
+  /// The kernel-side facts of the edits applied to the graph editor since the last plan.
+  struct Pending {
+    bool Structural = false, NeedsRebuild = false, NeedsCode = false,
+         NeedsAttributeCase = false, NeedsFunction = false;
+    void add(bool Wiring, const texcc::graph::GraphEditor &Ed);
+  };
+  /// Whether E changes the wiring of graph() (a rewiring, a new value of a baked argument or
+  /// of a node, attribute or image input, or a set to {"attr": ...} or {"node": ...}).
+  bool changesWiring(const texcc::graph::Edit &E) const;
+  /// Plans what the edited graph needs (planEdit, with the layout's capabilities) and does it.
+  EditResult carryOut(const Pending &P, Renderer &R, double T0);
+  EditAction plan(const Pending &P, Renderer &R);
   void regenerate(Renderer &R);
   void regenerateInBackground(Renderer &R);
   /// A regeneration of the edited graph (paths absolute), written into its folder.
   std::shared_ptr<Regeneration> writeEditedGraph();
   void adopt(const Layout &New, const Regeneration &Files);
-  /// Model with the paths of its sources and images absolute (for a graph written elsewhere).
+  /// graph() with the paths of its sources and images absolute (for a graph written elsewhere).
   texcc::graph::Graph absoluteGraph() const;
-  void initEditor(const texcc::graph::Graph &G);
+  void initEditor(texcc::graph::Graph G);
   /// A graph editor over G with the kernel's signatures and tables.
   std::unique_ptr<texcc::graph::GraphEditor> makeEditor(texcc::graph::Graph G) const;
-  /// Applies E to Model; true when it changes the wiring (a rewiring, a new value of a baked
-  /// argument or of a node, attribute or image input, or a set to {"attr": ...} or
-  /// {"node": ...}).
-  bool applyToModel(const Edit &E);
 
   Layout Lay;
   std::shared_ptr<const Regenerator> Regen;
-  // The graph with every edit so far (the graph library's model; a regeneration writes it
-  // with graphJson), the baked arguments of texcc's command line marked in it.
-  texcc::graph::Graph Model;
+  // The graph with every edit so far (the graph library's model, the baked arguments of
+  // texcc's command line marked in it; a regeneration writes it with graphJson) and its
+  // compiled form: validates, applies and re-encodes every edit.
   std::unique_ptr<texcc::graph::GraphEditor> Editor;
   // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
   // edit that changes them needs a new shape kernel, one that keeps them is an upload.

@@ -45,14 +45,9 @@ private:
   std::vector<Seen> Files;
 };
 
-/// The files a graph depends on: the graph and its "sources" (resolved against its folder).
-std::vector<std::string> graphFiles(const std::string &GraphPath, const nlohmann::json &Graph);
-
-/// The live edits (parseEdit lines: "set NODE.ARG=VALUE") that take graph Old to New when they
-/// differ only in node arguments; nullopt when anything else differs (nodes, functions,
-/// sources, materials, images): that needs texcc.
-std::optional<std::vector<std::string>> argumentEdits(const nlohmann::json &Old,
-                                                      const nlohmann::json &New);
+/// The files a graph depends on: the graph and its sources (resolved against its folder).
+std::vector<std::string> graphFiles(const std::string &GraphPath,
+                                    const std::vector<std::string> &Sources);
 
 /// The longest line --interactive and --watch --control read; a longer one ends the session.
 constexpr size_t MaxEditLine = 64 * 1024;

@@ -85,8 +85,9 @@ def main():
     out = args[args.index("-o") + 1]
     log = os.environ.get("SERVE_FAKE_LOG")
     delay = float(os.environ.get("SERVE_FAKE_DELAY_MS", "0")) / 1000
+    schema = schema_of(graph, folder)
     emit({"event": "ready", "graph": "graph.json", "sources": graph["sources"], "width": 2,
-          "height": 2, "schema": schema_of(graph, folder)})
+          "height": 2, "schema": schema})
     if os.environ.get("SERVE_FAKE_HUGE_LINES"):  # as texrender once quoted a 10 MB graph
         sys.stderr.write("texrender: error: " + "x" * (10 << 20) + "\n")
         sys.stderr.flush()
@@ -115,8 +116,16 @@ def main():
             except ValueError as e:  # texrender answers a line it cannot read with an error
                 emit({"event": "error", "id": int(sid), "message": f"bad edit '{edit}': {e}"})
                 continue
+            # The input's new schema entry, as texrender's 'applied' event carries it.
+            entry = None
+            for n in schema["nodes"] if isinstance(schema["nodes"], list) else []:
+                for put in n["inputs"] if n["id"] == node and isinstance(n["inputs"], list) else []:
+                    if put["name"] == arg:
+                        entry = {k: v for k, v in put.items()
+                                 if k not in ("value", "node", "attr", "image")}
+                        entry.update({"node": value} if verb == "rewire" else change)
             emit(dict({"event": "applied", "id": int(sid), "ms": 0.1, "builds": 0,
-                       "node": node, "arg": arg}, **change))
+                       "node": node, "arg": arg, "input": entry}, **change))
             applied, spp = int(sid), 0
         spp += 1
         with open(out + ".tmp", "wb") as f:

@@ -114,6 +114,7 @@ TEST(DiffTest, FindsTheRepositorysGraphs) {
     Examples += N.Path.find("/examples/") != std::string::npos;
   EXPECT_GE(Examples, 7u);          // cornell, custom-node, image-multiply, marble, rust, ...
   EXPECT_GE(allGraphs().size(), 40u);
+  std::printf("%zu graphs, %u of them examples\n", allGraphs().size(), Examples);
 }
 
 TEST(DiffTest, AGraphAgainstItselfHasNoEdits) {
