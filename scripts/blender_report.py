@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""blender_report.py: writes docs/blender-nodes.md, texcc's Blender nodes against Cycles.
+"""blender_report.py: writes bench/blender-nodes-table.md, texcc's Blender nodes against Cycles.
 
 The code is texcc_tools.scripts.blender_report (python/texcc_tools/scripts/blender_report.py)."""
 import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)

@@ -1,9 +1,11 @@
-"""blender_report.py: writes docs/blender-nodes.md, texcc's Blender nodes against Cycles.
+"""blender_report.py: writes bench/blender-nodes-table.md, the measured error of texcc's Blender
+nodes against Cycles.
 
 Runs testsuite/Inputs/blender/compare.py over every fixture of testsuite/Inputs/blender/ on the
 host target and (when an OpenCL device answers) on the OpenCL device, and writes one table row
-per (variant, output) with both targets' figures, then the nodes of the issue that have no
-fixture yet, with the reason.
+per (variant, output) with both targets' figures, with the commit, the date and the load average
+of the run. What the tests check, the nodes checked apart from the fixtures and what is refused
+are docs/blender-nodes.md (by hand).
 
     scripts/blender_report.py [--build build] [--no-device]
 
@@ -17,61 +19,9 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 from texcc_tools.paths import ROOT, add_build_argument
-
-# Outputs of the issue's nodes that textures/blender/ implements without a point fixture (or
-# whose exported form the fixtures do not evaluate), how they are checked, and what is refused.
-NOT_YET = [
-    ("Texture Coordinate UV and Normal (`blTexCoordUV`, `blTexCoordNormal`)",
-     "implemented (TexCoord0; the shading normal through the object's axes, passed as "
-     "arguments), no fixture: compare.py evaluates at points with texcc-eval, which sets "
-     "ObjectPos and WorldPos from a point but draws TexCoord0 and Normal at random; "
-     "input-attributes-{host,device}.test check them against the same hit's attributes"),
-    ("Geometry Normal, True Normal, Tangent, Incoming (`blGeometry*`)",
-     "implemented as the attributes Normal, GeomNormal, Tangent and ViewDir; no fixture, for the "
-     "same reason. Tangent is the mesh's MikkTSpace tangent where its OBJ gives one (the "
-     "exporter writes it for meshes a Normal Map shades), else dP/du of its UVs; Cycles' "
-     "Geometry Tangent is radial about Z when the mesh has no UV map, so they agree only with "
-     "one. Backfacing (an attribute since the Normal Map needs it), Parametric, Pointiness and "
-     "Random Per Island are not translated"),
-    ("Normal Map, Tangent Space (`blNormalMap`)",
-     "its fixtures above (normalmap-strength-*) compare `blNormalMapFrame`, which it calls with "
-     "the hit's Normal, Tangent, TangentSign and Backfacing, with the bake plane's frame as "
-     "arguments; the frame itself (the exporter's MikkTSpace tangents, interpolated as Cycles "
-     "interpolates them) is checked by blender-export/export-normal-map.test against Cycles' "
-     "picture (spheres at Strength 0 to 2, planes with turned, scaled and mirrored UVs, a back "
-     "face, a lit sphere through a Bump; every 8x8 block within 1%; figures in "
-     "bench/blender-nodes.md) and by runtime/tangent-*.test against the values expected per "
-     "pixel. Object, World and Blender spaces and other UV maps are refused"),
-    ("Fresnel and Layer Weight with ViewDir (`blFresnel`, `blLayerWeightFresnel`, "
-     "`blLayerWeightFacing`)",
-     "their fixtures above (fresnel-*, layerweight-*) compare the `*Incoming` functions these "
-     "call, with the bake's incoming direction as an argument (a bake shades every point from "
-     "one direction); blender-export/export-texture-nodes.test renders them, with Color Ramp "
-     "HSV, Float, RGB and Vector Curves, on a sphere against Cycles (every 8x8 block off the "
-     "silhouette within 0.2%; export-texture-nodes-bumped.test with a Bump node's Normal into "
-     "both, the same). An unlinked Normal is the Normal attribute, a Bump's Normal the graph's "
-     "bump node. Not reproduced: Cycles inverts the IOR on a back face (a face seen from behind its winding); "
-     "texrender's Normal faces the viewer and no attribute says the face was turned, so a back "
-     "face gets the front face's value (closed meshes seen from outside have none)"),
-    ("Object Info (`blObjectInfo{Location,Color,Alpha,ObjectIndex,MaterialIndex,Random}`) and "
-     "Attribute (`blAttributeUV`, `blAttributeUVFac`, `blAttributeUVAlpha`)",
-     "the object's values are constants the exporter passes (Random: Cycles' hash of the "
-     "object's name), so there is no point fixture; blender-export/object-info.test bakes every "
-     "output with Cycles on four objects (names, locations, colours, pass indices; one name not "
-     "ASCII) and compares the exporter's values: all equal. Attribute reads the render UV map "
-     "only (texrender's meshes carry no other attribute): a colour attribute, another UV map or "
-     "an object, instancer or view-layer attribute is refused, and so are Object Info Location "
-     "and Random of an instanced object (Cycles gives each instance its own; the exporter "
-     "translates a material once per object; error-texture-nodes.test)"),
-    ("Ambient Occlusion (`blAmbientOcclusionAO`, `blAmbientOcclusionColor`)",
-     "implemented through texrender's AO attribute; Samples and Distance are the scene's "
-     "render.aoSamples and render.aoDistance (the Blender exporter sets them from the node). "
-     "Not comparable point by point: both renderers estimate AO with their own random rays "
-     "(input-attributes-*.test check AO in [0, 1] and Color = color * AO)"),
-]
-
 
 def run_compare(build, host, rows_path, work):
     fixtures = sorted(f for f in glob.glob(os.path.join(ROOT, "testsuite/Inputs/blender/*.json")))
@@ -90,11 +40,28 @@ def vec(v):
     return "(" + ", ".join("%.6g" % x for x in v) + ")"
 
 
+def provenance(load_before, with_device):
+    """One line: when, at which commit (and whether the tree differed from it), under what load."""
+    def git(*a):
+        r = subprocess.run(["git", "-C", ROOT, *a], capture_output=True, text=True)
+        return r.stdout.strip() if r.returncode == 0 else ""
+    commit = git("rev-parse", "--short", "HEAD") or "unknown"
+    dirty = git("status", "--porcelain", "--untracked-files=no", "--", "textures", "texcc",
+                "testsuite/Inputs/blender")
+    load_after = os.getloadavg()[0]
+    return ("Run of %s UTC at commit %s%s, load average %.1f to %.1f; %s." % (
+        time.strftime("%Y-%m-%d %H:%M", time.gmtime()), commit,
+        " (with uncommitted changes under textures/, texcc/ or the fixtures)" if dirty else "",
+        min(load_before, load_after), max(load_before, load_after),
+        "host target and OpenCL device" if with_device else "host target only (--no-device)"))
+
+
 def main():
     ap = argparse.ArgumentParser()
     add_build_argument(ap)
     ap.add_argument("--no-device", action="store_true")
     args = ap.parse_args()
+    load_before = os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as work:
         host = run_compare(args.build, True, os.path.join(work, "host.json"),
                            os.path.join(work, "host"))
@@ -105,11 +72,14 @@ def main():
     by_key = {(r["variant"], r["output"]): r for r in device}
     blender = host[0]["blender"] if host else "?"
     lines = [
-        "# Blender nodes: texcc against Cycles",
+        "# Blender nodes against Cycles: the measured table",
         "",
         "Generated by `scripts/blender_report.py` from the fixtures that",
         "`scripts/blender_conformance.py` baked with Cycles (bpy %s); do not edit by hand." % blender,
-        "The tests `testsuite/texcc/blender/*-{host,device}.test` check the same figures.",
+        provenance(load_before, bool(device)),
+        "The tests `testsuite/texcc/blender/*-{host,device}.test` check the same figures. What they",
+        "check and hold the library to, the nodes checked apart from these fixtures and what is",
+        "refused: [docs/blender-nodes.md](../docs/blender-nodes.md).",
         "",
         "Each row is one output of one node variant (its settings are in",
         "`testsuite/Inputs/blender/<variant>.json`), evaluated by texcc at the %d points where Cycles"
@@ -151,9 +121,7 @@ def main():
     else:
         lines.append("None: every output above is within 1e-4 of Cycles on %s." %
                      ("both targets" if device else "the host target (OpenCL not run)"))
-    lines += ["", "## Nodes checked apart from the point fixtures", ""]
-    lines += ["- %s: %s." % (name, why) for name, why in NOT_YET]
-    out = os.path.join(ROOT, "docs", "blender-nodes.md")
+    out = os.path.join(ROOT, "bench", "blender-nodes-table.md")
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("blender_report: %d outputs, %d miss the target; wrote %s" % (len(host), len(missed),
