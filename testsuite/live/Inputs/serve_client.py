@@ -492,6 +492,24 @@ async def case_dotted(s, http):
         await w.close()
 
 
+async def case_later_page(s, http):
+    """Edits from one page, then a page opened later: its hello's schema has each edited input
+    as texrender's applied event gave it (the server applies no edit to its copy itself)."""
+    ws, _ = await open_page(s, http)
+    for i, (arg, value) in enumerate((("gain", {"node": "b"}), ("color", [0.25, 0.5, 1.0])), 1):
+        await ws.send_str(json.dumps({"type": "set", "id": i, "node": "t", "arg": arg,
+                                      "value": value}))
+        applied = await next_of(ws, "applied")
+        print(f"applied id={applied['id']}: {applied['node']}.{applied['arg']}")
+    later, hello = await open_page(s, http)
+    node = next(n for n in hello["schema"]["nodes"] if n["id"] == "t")
+    for put in node["inputs"]:
+        print(f"a page opened later: t.{put['name']}: " +
+              ", ".join(f"{k}={put[k]}" for k in ("value", "node", "attr") if k in put))
+    for w in (ws, later):
+        await w.close()
+
+
 async def case_huge_lines(s, http):
     """texrender's log and events with 10 MiB lines (the fake writes them first): the server
     reads on (no line limit ends its readers), the page gets the error cut to a bounded size."""
