@@ -133,23 +133,27 @@ float4 blVoronoiMetric4(float4 x, float4 y, float4 z, float4 w, int dims, int me
   return sqrt(dims == 4 ? s + w * w : s);
 }
 
-/* One candidate of F1 / F2 in the scalar loop's order: d1 and d2 the two smallest distances so
- * far, o1 and o2 their cells' offsets; v1 and v2 whether p1 and p2 of the scalar loop would
- * hold a point yet (it starts them at 0 and copies p1 into p2). */
-void blVoronoiKeep(float d, float4 off, float *d1, float *d2, float4 *o1, float4 *o2, int *v1,
-                   int *v2) {
-  if (d < *d1) {
-    *d2 = *d1;
-    *o2 = *o1;
-    *v2 = *v1;
-    *d1 = d;
-    *o1 = off;
-    *v1 = 1;
-  } else if (d < *d2) {
-    *d2 = d;
-    *o2 = off;
-    *v2 = 1;
-  }
+/* The two smallest distances so far (d1 <= d2), their cells' offsets, and whether the scalar
+ * loop's p1 and p2 would hold a point yet (it starts them at 0 and copies p1 into p2). */
+typedef struct BlVoronoiBest {
+  float d1, d2;
+  float4 o1, o2;
+  int v1, v2;
+} BlVoronoiBest;
+
+/* One candidate of F1 / F2 in the scalar loop's order (d < d1: it becomes the first and the
+ * first the second; else d < d2: it becomes the second), as selects on values: with pointers
+ * to the running values PoCL's build kept them in memory and branched on every candidate. */
+BlVoronoiBest blVoronoiKeep(BlVoronoiBest b, float d, float4 off) {
+  int lt1 = d < b.d1, lt2 = d < b.d2;
+  BlVoronoiBest r;
+  r.d2 = lt1 ? b.d1 : (lt2 ? d : b.d2);
+  r.o2 = lt1 ? b.o1 : (lt2 ? off : b.o2);
+  r.v2 = lt1 ? b.v1 : (lt2 ? 1 : b.v2);
+  r.d1 = lt1 ? d : b.d1;
+  r.o1 = lt1 ? off : b.o1;
+  r.v1 = lt1 ? 1 : b.v1;
+  return r;
 }
 
 /* F1 (feature 0) or F2 (1) of one octave in 2D-4D with metric 0-2, as blVoronoiOctave's loop
@@ -162,9 +166,10 @@ float blVoronoiOctaveRows(float4 cell, float4 rel, int dims, int feature, int me
   int kreach = dims <= 2 ? 0 : 1, ureach = dims == 4 ? 1 : 0;
   float4 lane = (float4)(-1.0f, 0.0f, 1.0f, 2.0f);
   uint4 cx = BL_UINT4_BITS(convert_int4(cell.x + lane));
-  float d1 = 3.402823466e+38f, d2 = 3.402823466e+38f;
-  float4 o1 = (float4)(0.0f), o2 = (float4)(0.0f);
-  int v1 = 0, v2 = 0;
+  BlVoronoiBest b;
+  b.d1 = b.d2 = 3.402823466e+38f;
+  b.o1 = b.o2 = (float4)(0.0f);
+  b.v1 = b.v2 = 0;
   float4 hx, hy, hz = (float4)(0.0f), hw = (float4)(0.0f);
   for (int u = -ureach; u <= ureach; u++)
     for (int k = -kreach; k <= kreach; k++)
@@ -176,16 +181,16 @@ float blVoronoiOctaveRows(float4 cell, float4 rel, int dims, int feature, int me
                                     (fj + hy * randomness) - rel.y,
                                     (fk + hz * randomness) - rel.z,
                                     (fu + hw * randomness) - rel.w, dims, metric);
-        blVoronoiKeep(d.x, (float4)(-1.0f, fj, fk, fu), &d1, &d2, &o1, &o2, &v1, &v2);
-        blVoronoiKeep(d.y, (float4)(0.0f, fj, fk, fu), &d1, &d2, &o1, &o2, &v1, &v2);
-        blVoronoiKeep(d.z, (float4)(1.0f, fj, fk, fu), &d1, &d2, &o1, &o2, &v1, &v2);
+        b = blVoronoiKeep(b, d.x, (float4)(-1.0f, fj, fk, fu));
+        b = blVoronoiKeep(b, d.y, (float4)(0.0f, fj, fk, fu));
+        b = blVoronoiKeep(b, d.z, (float4)(1.0f, fj, fk, fu));
       }
-  float4 o = feature == 1 ? o2 : o1;
-  int v = feature == 1 ? v2 : v1;
+  float4 o = feature == 1 ? b.o2 : b.o1;
+  int v = feature == 1 ? b.v2 : b.v1;
   float4 p = v ? o + blVoronoiCellOffset(cell + o, dims) * randomness : (float4)(0.0f);
   *color = blVoronoiCellColor(cell + o, dims);
   *pos = p + cell;
-  return feature == 1 ? d2 : d1;
+  return feature == 1 ? b.d2 : b.d1;
 }
 
 /* One octave of F1 (feature 0), F2 (1) or Smooth F1 (2, smoothness already halved and > 0):
