@@ -36,6 +36,19 @@ kernel::Capabilities interpreterCapabilities(const graph::CompiledGraph &CG) {
   return C;
 }
 
+/// An interpreter's user code (interp, and shape's fallback): what every node reaches, with no
+/// live node none (no edit can wire one in, as materials are not edited).
+void renderInterpreterUserCode(CodegenOptions &Opts, const graph::CompiledGraph &CG,
+                               const Backend::UserCodeRenderer &Render) {
+  if (CG.Nodes.empty())
+    return;
+  std::set<std::string> All;
+  for (const auto &KV : CG.Signatures)
+    All.insert(KV.first);
+  Opts.InterpUserCode =
+      Render(All, Opts.InterpHoists ? interpHoistingFunctions(CG) : std::set<std::string>{});
+}
+
 class InterpBackend final : public Backend {
 public:
   const char *name() const override { return "interp"; }
@@ -52,6 +65,11 @@ public:
     C.InterpHoists = !O.NoHoist;
   }
   bool interprets() const override { return true; }
+  void renderUserCode(CodegenOptions &Opts, const graph::CompiledGraph &CG,
+                      const UserCodeRenderer &Render) const override {
+    Backend::renderUserCode(Opts, CG, Render);
+    renderInterpreterUserCode(Opts, CG, Render);
+  }
   /// The base's kernel, and the hoisted-value kernel when a function hoists a declaration.
   kernel::KernelEntries entries(const graph::CompiledGraph &CG,
                                 const CodegenOptions &Opts) const override {
@@ -131,6 +149,17 @@ public:
   const char *name() const override { return "shape"; }
   bool hoists(const BackendOptions &O) const override { return !O.NoHoist; }
   bool writesInterpreter() const override { return true; }
+  /// The kernel's, the fallback's, and per live function its quick program's (that function's
+  /// reach only: a saved source file changes only the programs of the functions it changed).
+  void renderUserCode(CodegenOptions &Opts, const graph::CompiledGraph &CG,
+                      const UserCodeRenderer &Render) const override {
+    Backend::renderUserCode(Opts, CG, Render);
+    if (CG.Nodes.empty())
+      return;
+    for (const std::string &Fn : CG.liveFunctions())
+      Opts.QuickUserCode[Fn] = Render({Fn}, {});
+    renderInterpreterUserCode(Opts, CG, Render);
+  }
   /// The shape kernel, its shapes and hash, its interp fallback and the quick tier's programs
   /// (addOutputs writes their files).
   kernel::KernelEntries entries(const graph::CompiledGraph &CG,
@@ -234,6 +263,11 @@ kernel::KernelEntries Backend::entries(const graph::CompiledGraph &,
   K.Source = kernelFileName(Opts.Tgt);
   K.Entry = KernelEntry;
   return K;
+}
+
+void Backend::renderUserCode(CodegenOptions &Opts, const graph::CompiledGraph &CG,
+                             const UserCodeRenderer &Render) const {
+  Opts.UserCode = Render(CG.liveFunctions(), hoistedInUserCode(CG));
 }
 
 unsigned Backend::scratchFloat4PerHit(const graph::CompiledGraph &CG) const {

@@ -99,24 +99,6 @@ static std::optional<gr::Graph> readGraph(const Options &Opts) {
   return G;
 }
 
-/// The user code of the kernel (only what live nodes reach) and of the interpreter (what every
-/// node reaches: a rewiring onto a dead node is then an upload, not a rebuild; with no live
-/// node no edit can wire one in, as materials are not edited).
-static void renderUserCode(const cg::Backend &B, const fe::FrontendResult &FR,
-                           const gr::CompiledGraph &CG, cg::CodegenOptions &CO) {
-  CO.UserCode = renderReachableUserCode(FR, CG, CG.liveFunctions(), B.hoistedInUserCode(CG));
-  if (!B.writesInterpreter() || CG.Nodes.empty())
-    return;
-  if (CO.EvalMode == cg::Mode::Shape)
-    for (const std::string &Fn : CG.liveFunctions())
-      CO.QuickUserCode[Fn] = renderReachableUserCode(FR, CG, {Fn}, {});
-  std::set<std::string> All;
-  for (const auto &KV : CG.Signatures)
-    All.insert(KV.first);
-  CO.InterpUserCode = renderReachableUserCode(
-      FR, CG, All, CO.InterpHoists ? cg::interpHoistingFunctions(CG) : std::set<std::string>{});
-}
-
 /// layout.json "compileOptions": the arguments that make the same kernel from an edited graph
 /// (--bake values are in the graph the runtime writes; sources given here are made absolute).
 static std::vector<std::string> replayArguments(const Options &Opts) {
@@ -188,7 +170,10 @@ int compile(const Options &Opts) {
   CO.CompileOptions = replayArguments(Opts);
   CO.ParamDocs = fe::parameterDocs(CG->Signatures);
   B.configureCodegen(CO, Opts.Backend);
-  renderUserCode(B, *FR, *CG, CO);
+  B.renderUserCode(CO, *CG, [&](const std::set<std::string> &Textures,
+                                const std::set<std::string> &Hoist) {
+    return renderReachableUserCode(*FR, *CG, Textures, Hoist);
+  });
   std::string Error;
   std::vector<cg::OutputFile> Files =
       whileAllocating("generating the kernel and layout.json",

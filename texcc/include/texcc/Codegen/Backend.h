@@ -10,6 +10,7 @@
 #include "texcc/Codegen/Codegen.h"
 #include "texcc/Kernel/Manifest.h"
 
+#include <functional>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -52,6 +53,17 @@ public:
   virtual std::set<std::string> hoistedInUserCode(const graph::CompiledGraph &) const {
     return {};
   }
+  /// The user's sources with only the user functions that the texture functions Textures
+  /// reach, the declarations of the renamed functions Hoist hoisted (the driver's front end
+  /// renders them; the backend says which it needs).
+  using UserCodeRenderer = std::function<std::string(const std::set<std::string> &Textures,
+                                                     const std::set<std::string> &Hoist)>;
+  /// Fills Opts' user code for every program this backend writes: UserCode (the kernel: what
+  /// live nodes reach), and for a backend that writes an interpreter InterpUserCode (what every
+  /// node reaches: a rewiring onto a dead node is then an upload, not a rebuild); shape mode
+  /// adds QuickUserCode (one per live function, for its quick-tier program).
+  virtual void renderUserCode(CodegenOptions &Opts, const graph::CompiledGraph &CG,
+                              const UserCodeRenderer &Render) const;
   /// The header comment's line on what the evaluation code does.
   virtual const char *summary() const = 0;
   /// The evaluation code and kernels, after the user code.
