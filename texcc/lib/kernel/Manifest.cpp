@@ -75,6 +75,45 @@ bool LaunchLayout::operator==(const LaunchLayout &O) const {
 bool QuickProgram::operator==(const QuickProgram &O) const {
   return std::tie(Source, Kernels) == std::tie(O.Source, O.Kernels);
 }
+const char *programRoleName(ProgramRole R) {
+  switch (R) {
+  case ProgramRole::Primary:
+    return "primary";
+  case ProgramRole::Fallback:
+    return "fallback";
+  case ProgramRole::Quick:
+    return "quick";
+  }
+  return "primary";
+}
+
+bool RoleProgram::operator==(const RoleProgram &O) const {
+  return std::tie(Role, Source, Kernels) == std::tie(O.Role, O.Source, O.Kernels);
+}
+
+std::vector<RoleProgram> KernelEntries::programs() const {
+  RoleProgram Primary{ProgramRole::Primary, Source, {}};
+  for (const LaunchLayout &L : Launches)
+    Primary.Kernels.push_back(L.Kernel);
+  Primary.Kernels.push_back(Entry);
+  if (!Uniforms.empty())
+    Primary.Kernels.push_back(Uniforms);
+  std::vector<RoleProgram> All{Primary};
+  if (!InterpFallback.empty())
+    All.push_back({ProgramRole::Fallback, InterpFallback, {Entry}});
+  for (const QuickProgram &P : QuickPrograms)
+    All.push_back({ProgramRole::Quick, P.Source, P.Kernels});
+  return All;
+}
+
+std::vector<RoleProgram> KernelEntries::programs(ProgramRole R) const {
+  std::vector<RoleProgram> Of;
+  for (RoleProgram &P : programs())
+    if (P.Role == R)
+      Of.push_back(std::move(P));
+  return Of;
+}
+
 bool KernelEntries::operator==(const KernelEntries &O) const {
   return std::tie(Source, Entry, InterpFallback, Shapes, ShapeHash, Uniforms, Launches,
                   QuickPrograms, QuickLaunches, QuickEntry, QuickScratchFloat4PerHit) ==

@@ -165,6 +165,34 @@ TEST(Manifest, RoundTripEveryField) {
   EXPECT_TRUE(Back.HasCapabilities && Back.HasCompileOptions);
 }
 
+TEST(Manifest, ProgramsByRole) {
+  // layout.json keeps its keys (kernel.source, interpFallback, quick.programs); the typed
+  // manifest reads them as programs by role.
+  Manifest M = everyField();
+  M.Kernel.QuickPrograms = {{"proctex.quick.f.cl", {"texcc_wf_0", "texcc_wf_3"}},
+                            {"proctex.quick.outputs.cl", {"texcc_wf_outputs"}}};
+  M.Kernel.QuickLaunches = {{"texcc_wf_0", 0}, {"texcc_wf_3", 3}};
+  M.Kernel.QuickEntry = "texcc_wf_outputs";
+  const Manifest Back = read(writeManifest(M));
+  using R = ProgramRole;
+  const std::vector<RoleProgram> Want{
+      {R::Primary, "k.cl", {"texcc_wf_0", "texcc_wf_3", "entry_fn", "texcc_uniforms"}},
+      {R::Fallback, "proctex.interp.cl", {"entry_fn"}},
+      {R::Quick, "proctex.quick.f.cl", {"texcc_wf_0", "texcc_wf_3"}},
+      {R::Quick, "proctex.quick.outputs.cl", {"texcc_wf_outputs"}}};
+  EXPECT_TRUE(Back.Kernel.programs() == Want);
+  EXPECT_EQ(Back.Kernel.programs(R::Quick).size(), 2u);
+  ASSERT_EQ(Back.Kernel.programs(R::Fallback).size(), 1u);
+  EXPECT_EQ(Back.Kernel.programs(R::Fallback)[0].Source, "proctex.interp.cl");
+  EXPECT_STREQ(programRoleName(R::Primary), "primary");
+  EXPECT_STREQ(programRoleName(R::Fallback), "fallback");
+  EXPECT_STREQ(programRoleName(R::Quick), "quick");
+  // interp mode: one program, no fallback, no quick tier.
+  KernelEntries Interp;
+  const std::vector<RoleProgram> One{{R::Primary, "proctex.cl", {"texcc_proctex"}}};
+  EXPECT_TRUE(Interp.programs() == One);
+}
+
 TEST(Manifest, LegacyQuickenedEntriesRoundTrip) {
   // A layout of a texcc before 2026-12, read and written again (texcc-eval, the graph editor):
   // its superinstructions and its quickened entries with "second" are kept.

@@ -191,6 +191,24 @@ struct QuickProgram {
   bool operator==(const QuickProgram &O) const;
 };
 
+/// The roles of a kernel's programs. primary: the layout's own kernel (kernel.source: its
+/// launches, entry and uniforms kernel); fallback: an interp kernel of the same args.bin that
+/// renders while a new primary builds (kernel.interpFallback, shape mode); quick: shape mode's
+/// quick tier, one program per live function plus the outputs kernel's (kernel.quick.programs).
+/// layout.json keeps its keys; KernelEntries::programs() is the view by role.
+enum class ProgramRole { Primary, Fallback, Quick };
+/// "primary", "fallback", "quick".
+const char *programRoleName(ProgramRole R);
+
+/// One program of a kernel: its role, its file (relative to the texture folder) and the kernels
+/// it holds, in launch order.
+struct RoleProgram {
+  ProgramRole Role = ProgramRole::Primary;
+  std::string Source;
+  std::vector<std::string> Kernels;
+  bool operator==(const RoleProgram &O) const;
+};
+
 /// kernel: the entry points.
 struct KernelEntries {
   std::string Source = "proctex.cl";
@@ -204,6 +222,11 @@ struct KernelEntries {
   std::vector<LaunchLayout> QuickLaunches; // their node kernels in order; QuickEntry runs last
   std::string QuickEntry;                  // the quick tier's outputs kernel
   unsigned QuickScratchFloat4PerHit = 0;   // node values per hit the quick tier keeps
+  /// Every program by role: the primary (Launches' kernels, Entry, then Uniforms when set),
+  /// the fallback when InterpFallback names one (Entry), the quick programs in their order.
+  std::vector<RoleProgram> programs() const;
+  /// Those of role R only.
+  std::vector<RoleProgram> programs(ProgramRole R) const;
   bool operator==(const KernelEntries &O) const;
 };
 
