@@ -6,7 +6,7 @@
 Runs `texrender SCENE ... --watch --control -o TMPDIR/frame.png` (docs/live.md, protocol B),
 serves the page (scripts/serve/) over HTTP and a WebSocket at /ws, forwards every frame
 texrender writes to every page, and turns the page's edit messages into texrender's control
-lines after checking their framing (serve/messages.py). texrender owns the graph, the edit
+lines after checking their framing (python/texcc_tools/serve/messages.py). texrender owns the graph, the edit
 schema it sends in its 'ready' and 'reload' events, and the rules of every edit; this process
 reads no user file, has no rendering code and no schema of its own.
 """
@@ -24,8 +24,8 @@ import tempfile
 
 from aiohttp import WSMsgType, web
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve"))
-import messages  # noqa: E402
+# scripts/serve.sh runs this with .venv's Python, which has the package (scripts/setup.sh).
+from texcc_tools.serve import messages
 
 STATIC = os.path.join(os.path.dirname(os.path.abspath(__file__)), "serve")
 PAGE_FILES = {"/": ("index.html", "text/html"), "/app.js": ("app.js", "text/javascript"),

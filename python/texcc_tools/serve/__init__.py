@@ -1,0 +1,1 @@
+"""The browser preview's front end (scripts/serve.py): message framing checks."""
