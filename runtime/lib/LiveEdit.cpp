@@ -435,9 +435,10 @@ EditAction LiveEditor::plan(const Pending &P, Renderer &R) {
   F.StackSlots = CG.StackSlots;
   F.MaxOutputs = CG.MaxOutputs;
   // A fallback finished on the background thread since the last frame is what a rewiring to a
-  // new shape renders with: adopted now, not at the next frame.
-  R.adoptFinishedFallback();
-  return planEdit(F, Lay.Caps, {R.tierPolicy(), R.fallbackStackSlots(), R.interpStackSlots()});
+  // new shape renders with: adopted now (between passes), not at the next frame.
+  TierManager &T = R.tiers();
+  T.collect(/*Rest=*/true);
+  return planEdit(F, Lay.Caps, {R.tierPolicy(), T.fallbackStackSlots(), T.interpStackSlots()});
 }
 
 EditResult LiveEditor::carryOut(const Pending &P, Renderer &R, double T0) {
@@ -463,7 +464,7 @@ EditResult LiveEditor::carryOut(const Pending &P, Renderer &R, double T0) {
 EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
   if (E.K == Edit::Kind::Wait) {
     EditResult Res;
-    Res.IdleSeconds = R.waitForBackgroundBuild();
+    Res.IdleSeconds = R.tiers().waitForBackgroundBuild();
     return Res;
   }
   return apply(graphEdit(E), R, E.Text);

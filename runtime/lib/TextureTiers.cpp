@@ -216,13 +216,15 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
 }
 
 BackgroundBuild::BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex,
-                                 int Nice)
+                                 int Nice, std::function<void()> OnDone)
     : EventIndex(EventIndex) {
   std::packaged_task<TierBuildResult()> Task(std::move(Job));
-  Result = Task.get_future();
-  Thread = std::thread([Task = std::move(Task), Nice]() mutable {
+  Result = Task.get_future().share();
+  Thread = std::thread([Task = std::move(Task), Nice, OnDone = std::move(OnDone)]() mutable {
     lowerThisThreadsPriority(Nice);
     Task();
+    if (OnDone)
+      OnDone();
   });
 }
 

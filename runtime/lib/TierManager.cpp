@@ -57,8 +57,48 @@ TierManager::~TierManager() {
     R->wait();
 }
 
-std::string TierManager::tierName(bool Fallback) const {
-  return Fallback ? FallbackTierName : Lay.Mode;
+std::string TierManager::tierName(ProgramRole Role) const {
+  switch (Role) {
+  case ProgramRole::Fallback:
+    return FallbackTierName;
+  case ProgramRole::Quick:
+    return QuickTierName;
+  case ProgramRole::Primary:
+    break;
+  }
+  return Lay.Mode;
+}
+
+const char *tierEventName(TierEvent::Kind K) {
+  switch (K) {
+  case TierEvent::Kind::Built:
+    return "built";
+  case TierEvent::Kind::Adopted:
+    return "adopted";
+  case TierEvent::Kind::Failed:
+    return "failed";
+  }
+  return "built";
+}
+
+void TierManager::emit(TierEvent E) {
+  for (const TierSubscriber &S : Subscribers)
+    S(E);
+}
+
+void TierManager::emitForJob(TierEvent::Kind K, const TierJob &J, const BuildEvent &B) {
+  TierEvent E;
+  E.K = K;
+  E.Background = B.Background;
+  E.Switches = switches(J);
+  E.Seconds = B.ReadySeconds >= 0 ? B.ReadySeconds - B.StartSeconds : 0;
+  E.Reason = B.Reason;
+  E.Error = B.Error;
+  for (ProgramRole R : {ProgramRole::Primary, ProgramRole::Fallback})
+    if (R == ProgramRole::Primary ? J.Shape : J.Interp) {
+      E.Role = R;
+      emit(E);
+    }
 }
 
 namespace {
@@ -69,17 +109,17 @@ const char *const QuickFirstGuard = "#ifndef TEXCC_FN";
 } // namespace
 
 cl::Program TierManager::buildForeground(const std::string &Path, const std::string &Source,
-                                         bool Fallback, const std::string &Reason,
+                                         ProgramRole Role, const std::string &Reason,
                                          const std::string &ExtraOptions, bool QuickFirst) {
   SlowStep Step("building the texture kernel (" + std::filesystem::path(Path).filename().string() +
                 (QuickFirst ? ", quick first build" : "") + ")");
   BuildEvent E;
-  E.Kernel = tierName(Fallback) + (QuickFirst ? "-first" : "");
+  E.Kernel = tierName(Role) + (QuickFirst ? "-first" : "");
   E.Reason = Reason;
   E.StartSeconds = steadySeconds() - Epoch;
   // PoCL's compile at the first launch is part of the build the frame waits for.
   std::vector<std::string> Names = textureKernelNames();
-  if (tierUsesUniforms(Fallback))
+  if (tierUsesUniforms(Role))
     Names.push_back(Lay.Uniforms);
   // A quick first build is not warmed up: its first frame compiles only the work-group function
   // it launches (the reduced first pass: the small-grid one), about half of warming both (rust's
@@ -91,13 +131,16 @@ cl::Program TierManager::buildForeground(const std::string &Path, const std::str
   E.ReadySeconds = steadySeconds() - Epoch;
   E.FirstFrame = int(FramesRendered);
   Events.push_back(E);
+  emit({TierEvent::Kind::Built, Role, /*Background=*/false, /*Switches=*/false, 1,
+        E.ReadySeconds - E.StartSeconds, Reason, ""});
   return P;
 }
 
-bool TierManager::tierUsesUniforms(bool Fallback) const {
+bool TierManager::tierUsesUniforms(ProgramRole Role) const {
   // The layout's own kernel (shape mode's shape tier, or an interp-mode kernel that hoists);
-  // shape mode's interp fallback never reads hoisted values.
-  return !Lay.Uniforms.empty() && !Fallback;
+  // shape mode's interp fallback never reads hoisted values, nor do the quick tier's node
+  // kernels.
+  return !Lay.Uniforms.empty() && Role == ProgramRole::Primary;
 }
 
 std::vector<std::string> TierManager::textureKernelNames() const {
@@ -115,13 +158,12 @@ double TierManager::foregroundBuildSeconds() const {
   return S;
 }
 
-void TierManager::activate(const cl::Program &P, bool Fallback) {
+void TierManager::activate(const cl::Program &P, ProgramRole Role) {
   TextureKernels.clear();
-  ActiveQuick = false;
   ActiveQuickFirst = false;
-  ActiveFallback = Fallback;
-  ActiveTier = tierName(Fallback);
-  std::string File = Fallback ? Lay.InterpFallback : Lay.KernelSource;
+  ActiveRole = Role;
+  ActiveTier = tierName(Role);
+  std::string File = Role == ProgramRole::Fallback ? Lay.InterpFallback : Lay.KernelSource;
   for (const std::string &N : textureKernelNames()) {
     try {
       TextureKernels.push_back(cl::Kernel(P, N.c_str()));
@@ -132,7 +174,7 @@ void TierManager::activate(const cl::Program &P, bool Fallback) {
   }
   UniformsKernel = cl::Kernel();
   UniformsDirty = true;
-  if (tierUsesUniforms(Fallback)) {
+  if (tierUsesUniforms(Role)) {
     try {
       UniformsKernel = cl::Kernel(P, Lay.Uniforms.c_str());
     } catch (const cl::Error &E) {
@@ -150,9 +192,9 @@ void TierManager::build(bool HasWork) {
   HeldOptimised.reset();
   ActiveQuickFirst = false;
   TextureKernels.clear();
-  ShapeProgram = InterpProgram = cl::Program();
+  Programs.clear();
   ActiveTier.clear();
-  ActiveFallback = false;
+  ActiveRole = ProgramRole::Primary;
   if (!HasTextureWork)
     return;
   const char *Reason = FramesRendered ? "edit" : "initial";
@@ -160,7 +202,7 @@ void TierManager::build(bool HasWork) {
     InterpModeSlots = Lay.StackSlots;
     const std::string Source = readKernelSource(Lay.KernelSource);
     std::vector<std::string> Names = textureKernelNames();
-    if (tierUsesUniforms(false))
+    if (tierUsesUniforms(ProgramRole::Primary))
       Names.push_back(Lay.Uniforms);
     requireKernelsDeclared(Lay.KernelSource, Source, Names);
     const std::string Headroom = Lay.Caps.StackHeadroom && InterpStackHeadroom
@@ -168,9 +210,10 @@ void TierManager::build(bool HasWork) {
                                      : "";
     if (QuickFirstBuild && Source.find(QuickFirstGuard) != std::string::npos &&
         !Cl.isCached(Source, ProgramOptions + Headroom)) {
-      activate(buildForeground(Lay.KernelSource, Source, false, Reason,
-                               Headroom + QuickFirstOption, /*QuickFirst=*/true),
-               false);
+      activate(Programs[ProgramRole::Primary] =
+                   buildForeground(Lay.KernelSource, Source, ProgramRole::Primary, Reason,
+                                   Headroom + QuickFirstOption, /*QuickFirst=*/true),
+               ProgramRole::Primary);
       ActiveQuickFirst = true;
       QuickFirstFrame = FramesRendered;
       Layout Same = Lay;
@@ -178,7 +221,9 @@ void TierManager::build(bool HasWork) {
       HeldOptimised = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
       return;
     }
-    activate(buildForeground(Lay.KernelSource, Source, false, Reason, Headroom), false);
+    activate(Programs[ProgramRole::Primary] =
+                 buildForeground(Lay.KernelSource, Source, ProgramRole::Primary, Reason, Headroom),
+             ProgramRole::Primary);
     return;
   }
   buildShapeTiers(Reason);
@@ -189,7 +234,7 @@ void TierManager::buildShapeTiers(const char *Reason) {
   const std::string FallbackText = readKernelSource(Lay.InterpFallback);
   std::vector<std::string> ShapeNames = textureKernelNames();
   requireKernelsDeclared(Lay.InterpFallback, FallbackText, ShapeNames);
-  if (tierUsesUniforms(false))
+  if (tierUsesUniforms(ProgramRole::Primary))
     ShapeNames.push_back(Lay.Uniforms);
   requireKernelsDeclared(Lay.KernelSource, ShapeText, ShapeNames);
   const std::string FallbackHeadroom = stackHeadroomOption(Lay, FallbackText, FallbackSlots);
@@ -209,11 +254,12 @@ void TierManager::buildShapeTiers(const char *Reason) {
     return;
   }
   if (Plan.ShapeNow)
-    ShapeProgram = buildForeground(Lay.KernelSource, ShapeText, false, Reason);
+    Programs[ProgramRole::Primary] =
+        buildForeground(Lay.KernelSource, ShapeText, ProgramRole::Primary, Reason);
   if (Plan.InterpNow)
-    InterpProgram = buildForeground(Lay.InterpFallback, FallbackText, true, Reason,
-                                    FallbackHeadroom);
-  activate(ShapeProgram() ? ShapeProgram : InterpProgram, !ShapeProgram());
+    Programs[ProgramRole::Fallback] = buildForeground(
+        Lay.InterpFallback, FallbackText, ProgramRole::Fallback, Reason, FallbackHeadroom);
+  activate(program(renderingRole()), renderingRole());
   if (Plan.ShapeLater || Plan.InterpLater) {
     Layout Same = Lay;
     TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater,
@@ -265,6 +311,8 @@ bool TierManager::buildQuickTier(const char *Reason) {
       E.ReadySeconds = steadySeconds() - Epoch;
       E.FirstFrame = int(FramesRendered);
       Events.push_back(E);
+      emit({TierEvent::Kind::Built, ProgramRole::Quick, /*Background=*/false,
+            /*Switches=*/false, 1, E.ReadySeconds - E.StartSeconds, Reason, ""});
     }
     Now[quickKey(Texts[I])] = Prog;
     for (const std::string &Name : P.Kernels)
@@ -282,9 +330,8 @@ bool TierManager::buildQuickTier(const char *Reason) {
       throw Error(Lay.Dir + "/layout.json: /kernel/quick: no program holds kernel '" + N + "'");
     TextureKernels.push_back(cl::Kernel(It->second, N.c_str()));
   }
-  ActiveQuick = true;
-  ActiveFallback = false;
-  ActiveTier = QuickTierName;
+  ActiveRole = ProgramRole::Quick;
+  ActiveTier = tierName(ProgramRole::Quick);
   UniformsKernel = cl::Kernel(); // node kernels call the functions unhoisted
   UniformsDirty = true;
   return true;
@@ -312,47 +359,45 @@ bool TierManager::warmQuickPrograms() {
   ClContext *Ctx = &Cl;
   const std::string Options = ProgramOptions;
   const double Start = Epoch;
-  QuickWarming = std::async(std::launch::async, [Ctx, Work, Options, Start] {
+  QuickWarmingEnded = std::make_shared<std::atomic<bool>>(false);
+  QuickWarming = std::async(std::launch::async, [Ctx, Work, Options, Start, W = Wake,
+                                                 Ended = QuickWarmingEnded] {
     lowerThisThreadsPriority(backgroundBuildNice()); // as BackgroundBuild's thread
     std::vector<QuickWarmed> Out;
     for (const Todo &T : Work) {
-      QuickWarmed W;
-      W.Source = T.Source;
-      W.StartSeconds = steadySeconds() - Start;
+      QuickWarmed Q;
+      Q.Source = T.Source;
+      Q.StartSeconds = steadySeconds() - Start;
       try {
         waitForEditPause(); // PoCL's compiler holds up launches while it runs
-        W.Program = Ctx->buildProgram(T.Path, T.Source, Options, "", /*Background=*/true,
-                                      [&](const cl::Program &Q) {
-                                        warmUpKernels(*Ctx, Q, T.Kernels, T.Path, true);
+        Q.Program = Ctx->buildProgram(T.Path, T.Source, Options, "", /*Background=*/true,
+                                      [&](const cl::Program &P) {
+                                        warmUpKernels(*Ctx, P, T.Kernels, T.Path, true);
                                       });
       } catch (const std::exception &E) {
-        W.Program = cl::Program();
-        W.Error = E.what();
+        Q.Program = cl::Program();
+        Q.Error = E.what();
       }
-      W.ReadySeconds = steadySeconds() - Start;
-      Out.push_back(std::move(W));
+      Q.ReadySeconds = steadySeconds() - Start;
+      Out.push_back(std::move(Q));
     }
+    // The future is ready only once this returns: mergeQuickWarmUp waits for it when Ended.
+    Ended->store(true);
+    if (W)
+      W();
     return Out;
   });
   return true;
 }
 
-std::optional<std::pair<double, unsigned>> TierManager::quickWarmUpFinished() {
-  mergeQuickWarmUp(false);
-  std::optional<std::pair<double, unsigned>> R = QuickWarmReport;
-  QuickWarmReport.reset();
-  return R;
-}
-
 void TierManager::mergeQuickWarmUp(bool Wait) {
   if (!QuickWarming.valid())
     return;
-  if (!Wait && QuickWarming.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+  if (!Wait && !QuickWarmingEnded->load() &&
+      QuickWarming.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
     return;
   std::vector<QuickWarmed> Done = QuickWarming.get();
-  if (!Done.empty())
-    QuickWarmReport = std::make_pair(Done.back().ReadySeconds - Done.front().StartSeconds,
-                                     unsigned(Done.size()));
+  unsigned Built = 0;
   for (QuickWarmed &W : Done) {
     BuildEvent E;
     E.Kernel = QuickTierName;
@@ -362,9 +407,17 @@ void TierManager::mergeQuickWarmUp(bool Wait) {
     E.ReadySeconds = W.ReadySeconds;
     E.Error = W.Error;
     Events.push_back(E);
-    if (W.Error.empty())
+    if (W.Error.empty()) {
       QuickKept[quickKey(W.Source)] = W.Program;
+      ++Built;
+    } else {
+      emit({TierEvent::Kind::Failed, ProgramRole::Quick, true, false, 1,
+            W.ReadySeconds - W.StartSeconds, E.Reason, W.Error});
+    }
   }
+  if (Built)
+    emit({TierEvent::Kind::Built, ProgramRole::Quick, true, false, Built,
+          Done.back().ReadySeconds - Done.front().StartSeconds, "warm-up", ""});
 }
 
 void TierManager::startHeldOptimised() {
@@ -406,8 +459,8 @@ void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
   if (!canSwitchShapes())
     throw Error("switchShapes: needs a shape-mode layout with its interp fallback built (tier auto)");
   HasTextureWork = HasWork;
-  if (HasTextureWork && !ActiveFallback)
-    activate(InterpProgram, true);
+  if (HasTextureWork && ActiveRole != ProgramRole::Fallback)
+    activate(program(ProgramRole::Fallback), ProgramRole::Fallback);
   startBackgroundBuild(std::move(MakeLayout),
                        TierJob{false, true, true, {}, {}, backgroundBuildNice()},
                        std::move(Reencode), "shape change");
@@ -428,7 +481,7 @@ void TierManager::launchQueued() {
   if (!Queued || Pending || !Retired.empty())
     return;
   BuildEvent E;
-  E.Kernel = tierName(!Queued->Job.Shape);
+  E.Kernel = tierName(Queued->Job.Shape ? ProgramRole::Primary : ProgramRole::Fallback);
   E.Reason = Queued->Reason;
   E.Background = true;
   E.StartSeconds = steadySeconds() - Epoch;
@@ -440,9 +493,11 @@ void TierManager::launchQueued() {
       [Ctx, MakeLayout = std::move(Queued->MakeLayout), Job = Queued->Job, Options, Start] {
         return buildShapeTier(*Ctx, MakeLayout, Job, Options, Start);
       },
-      Events.size() - 1, Queued->Job.Nice);
+      Events.size() - 1, Queued->Job.Nice, Wake);
   PendingReencode = std::move(Queued->Reencode);
   PendingSwitches = switches(Queued->Job);
+  PendingAnnounced = false;
+  PendingJob = Queued->Job;
   Queued.reset();
 }
 
@@ -482,39 +537,51 @@ const std::string &TierManager::beginFrame() {
   return ActiveTier;
 }
 
-std::optional<double> TierManager::adoptFinishedFallback() {
-  if (!Pending || PendingSwitches || !Pending->ready())
-    return std::nullopt;
-  const size_t Index = Pending->eventIndex();
-  adoptReadyBuild();
-  const BuildEvent &E = Events[Index];
-  if (!E.Error.empty())
-    return std::nullopt;
-  return E.ReadySeconds - E.StartSeconds;
+void TierManager::collect(bool Rest) {
+  mergeQuickWarmUp(/*Wait=*/false);
+  announceReadyBuild();
+  // An interp fallback built alone: adopted at rest, not at the next frame (an idle session
+  // renders none, and a rewiring to a new shape needs it).
+  if (Rest && Pending && !PendingSwitches && PendingAnnounced)
+    adoptReadyBuild();
+}
+
+void TierManager::announceReadyBuild() {
+  launchQueued();
+  if (!Pending || PendingAnnounced || !Pending->ready())
+    return;
+  PendingAnnounced = true;
+  const TierBuildResult &R = Pending->result();
+  BuildEvent &E = Events[Pending->eventIndex()];
+  E.ReadySeconds = R.ReadySeconds;
+  if (R.Error.empty()) {
+    emitForJob(TierEvent::Kind::Built, PendingJob, E);
+    return;
+  }
+  // The kernel that renders renders correctly; the faster one is lost, and the reason reported.
+  E.Error = R.Error;
+  warnShapeBuildFailed(R.Error);
+  PendingReencode = nullptr;
+  Pending.reset();
+  emitForJob(TierEvent::Kind::Failed, PendingJob, E);
 }
 
 void TierManager::adoptReadyBuild() {
-  launchQueued();
-  if (!Pending || !Pending->ready())
+  announceReadyBuild();
+  if (!Pending || !PendingAnnounced)
     return;
   TierBuildResult R = Pending->take();
-  BuildEvent &E = Events[Pending->eventIndex()];
+  const size_t Index = Pending->eventIndex();
   Pending.reset();
-  E.ReadySeconds = R.ReadySeconds;
-  if (!R.Error.empty()) {
-    // The interp tier renders correctly; the faster kernel is lost, and the reason reported.
-    E.Error = R.Error;
-    warnShapeBuildFailed(R.Error);
-    PendingReencode = nullptr;
-    return;
-  }
   if (R.Shape() || !R.SameLayout)
-    E.FirstFrame = int(FramesRendered); // it renders this frame (an interp-only job does not)
+    Events[Index].FirstFrame = int(FramesRendered); // it renders this frame (an interp-only
+                                                    // job does not)
   try {
     adopt(R);
   } catch (const cl::Error &Ex) {
     throw Error(std::string("OpenCL call ") + Ex.what() + " failed: " + clErrorName(Ex.err()));
   }
+  emitForJob(TierEvent::Kind::Adopted, PendingJob, Events[Index]);
 }
 
 void TierManager::adopt(TierBuildResult &R) {
@@ -525,13 +592,13 @@ void TierManager::adopt(TierBuildResult &R) {
     HasTextureWork = AdoptLayout(std::move(R.L));
   }
   if (R.Interp()) {
-    InterpProgram = R.Interp;
+    Programs[ProgramRole::Fallback] = R.Interp;
     FallbackSlots = R.FallbackSlots;
   }
   if (R.Shape())
-    ShapeProgram = R.Shape;
+    Programs[ProgramRole::Primary] = R.Shape;
   if (HasTextureWork)
-    activate(ShapeProgram() ? ShapeProgram : InterpProgram, !ShapeProgram());
+    activate(program(renderingRole()), renderingRole());
 }
 
 double TierManager::waitForBackgroundBuild() {

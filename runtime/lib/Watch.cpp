@@ -59,29 +59,42 @@ void Session::idle(double Until) {
     End = std::min(End, Until);
   // A control line or texcc's end wakes it at once (Waker), a saved file at the next poll.
   Waker->waitFor(std::max(1, int((End - nowSeconds()) * 1000)));
-  if (auto Warm = R->quickWarmUpFinished())
-    say("the quick tier's programs are built (" + std::to_string(Warm->second) + " in " +
-        ms(Warm->first) + ")");
-  // Adopted now, not at the next frame: a rewiring to a new shape needs it.
-  if (auto Took = R->adoptFinishedFallback())
-    say("the interp fallback is built (" + ms(*Took) + "); a rewiring to a new shape renders "
-        "with it at once");
+  // Between frames: an interp fallback built alone is adopted now, not at the next frame (a
+  // rewiring to a new shape needs it); onTierEvent hears of it.
+  R->tiers().collect(/*Rest=*/true);
   if (nowSeconds() - LastPoll >= 0.1)
     poll();
 }
 
 bool Session::tierBuilt() {
-  bool Pending = R->backgroundBuildPending();
-  if (TierPending && !Pending)
-    TierSwitch = true;
-  TierPending = Pending;
+  R->tiers().collect(/*Rest=*/false); // maybe within a pass: adopts nothing
   return TierSwitch;
+}
+
+void Session::followTiers(Renderer &Into) {
+  TierManager &T = Into.tiers();
+  T.subscribe([this](const TierEvent &E) { onTierEvent(E); });
+  T.setWake([W = Waker] { W->notify(); });
+  T.setDeferFallbackBuilds(true); // started after a complete frame (renderFrame)
+  T.setQuickTier(true);           // its programs warmed up after a complete frame
+}
+
+void Session::onTierEvent(const TierEvent &E) {
+  if (!E.Background)
+    return;
+  if (E.Switches && E.K != TierEvent::Kind::Adopted)
+    TierSwitch = true;
+  if (E.K == TierEvent::Kind::Built && E.Role == ProgramRole::Quick)
+    say("the quick tier's programs are built (" + std::to_string(E.Programs) + " in " +
+        ms(E.Seconds) + ")");
+  if (E.K == TierEvent::Kind::Adopted && E.Role == ProgramRole::Fallback && !E.Switches)
+    say("the interp fallback is built (" + ms(E.Seconds) + "); a rewiring to a new shape "
+        "renders with it at once");
 }
 
 WatchResult Session::run() {
   R = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
-  R->setDeferFallbackBuilds(true); // started after a complete frame (renderFrame)
-  R->setQuickTier(true);            // its programs warmed up after a complete frame
+  followTiers(*R);
   Editor = std::make_unique<LiveEditor>(Lay, Regen);
   watchFiles();
   say("watching " + GraphPath + ", its sources and " + O.ScenePath + "; Ctrl-C ends");
@@ -127,7 +140,7 @@ WatchResult Session::run() {
 
 void Session::noteQuickTier(double Since) {
   QuickSince = 0;
-  if (R->activeTier() != QuickTierName || !R->backgroundBuildPending())
+  if (R->tiers().activeTier() != QuickTierName || !R->tiers().switchPending())
     return;
   QuickSince = Since;
   say("the shape kernel builds in the background after the quick tier's first full-resolution "
@@ -289,8 +302,7 @@ void Session::applyKeptEdits(const texcc::graph::Graph &Edited) {
 void Session::reloadScene() {
   try {
     auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
-    New->setDeferFallbackBuilds(true);
-    New->setQuickTier(true);
+    followTiers(*New);
     // A new OpenCL context: primed again after its first complete frame.
     if (Prime.joinable())
       Prime.join();

@@ -114,7 +114,7 @@ void Session::writeProgress(const std::vector<float> &Image, int Spp, int Factor
   LastWrite = nowSeconds();
   WrittenAccumulation = Accumulation;
   WrittenSpp = Spp;
-  std::string Tier = R->activeTier().empty() ? std::string("-") : R->activeTier();
+  std::string Tier = R->tiers().activeTier().empty() ? std::string("-") : R->tiers().activeTier();
   if (ChangeAt > 0) {
     say("first refined frame " + ms(LastWrite - ChangeAt) + " after the change (tier " + Tier + ")");
     ChangeAt = 0;
@@ -211,7 +211,7 @@ bool Session::afterPass(const PassProgress &P) {
 void Session::fullPassDone() {
   // The shape kernel held behind the quick tier (TierManager::setQuickTier): started with the
   // new kernel, its compile slowed this pass.
-  if (R->fullPassDone())
+  if (R->tiers().fullPassDone())
     say("the shape kernel builds in the background now (the quick tier's first full-resolution "
         "pass is done)");
 }
@@ -259,11 +259,11 @@ void Session::renderFrame() {
   // The interp fallback of a regenerated shape kernel, held back while its first frames
   // rendered (TierManager::setDeferFallbackBuilds; after the quick tier, until the shape kernel
   // built behind it has taken over).
-  if (R->startDeferredBuild())
+  if (R->tiers().startDeferredBuild())
     say("the interp fallback builds in the background now (held back until a complete frame)");
   // Shape mode's quick tier: the programs of the layout's functions, built once in the
   // background so that a saved source file rebuilds only the changed function's.
-  else if (R->warmQuickPrograms())
+  else if (R->tiers().warmQuickPrograms())
     say("the quick tier's programs build in the background now");
   while (!stopping() && !work())
     idle();

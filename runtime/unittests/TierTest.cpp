@@ -1,7 +1,9 @@
 // Tiered texture execution, host side: the --tier policy names, the "wait" edit-script line,
 // a shape-mode layout without its interp fallback, BackgroundBuild's hand-over of a result
-// made on another thread, and the tier manager's build plan (which tier renders the first
-// frame, which one builds in the background) for every policy and program-cache state. The tiers themselves run in testsuite/runtime/tier-*.test.
+// made on another thread, the tier manager's build plan (which tier renders the first
+// frame, which one builds in the background) for every policy and program-cache state, and its
+// events (built, adopted, failed) on two tiny kernels. The tiers themselves run in
+// testsuite/runtime/tier-*.test.
 #include "texrender/Error.h"
 #include "texrender/Layout.h"
 #include "texrender/LiveEdit.h"
@@ -11,10 +13,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -182,4 +186,152 @@ TEST(Tier, BuildPlanOfEveryPolicyAndCacheState) {
     EXPECT_FALSE(Plan.ShapeNow && Plan.ShapeLater);
     EXPECT_FALSE(Plan.InterpNow && Plan.InterpLater);
   }
+}
+
+// The tier manager's events (TierEvent), on a shape-mode layout of two tiny kernels: a
+// background build is Built when it ends (nothing adopted yet, the getters unchanged), then
+// Adopted at a boundary (collect at rest for a fallback built alone, the next frame for a new
+// primary); a failed build is Failed with its error. No waiting on the clock: the manager's
+// wake-up (setWake) says when a build has ended.
+namespace {
+
+/// A kernel with the texture kernels' 9 arguments (numHits third) that writes nothing.
+const char *TinyKernel = "kernel void texcc_proctex(global float *a, global float *b, int n,\n"
+                         "    global float *c, global float *d, global float *e,\n"
+                         "    global float *f, global float *g, global float *h) {\n"
+                         "  if ((int)get_global_id(0) < n) a[0] = 1.0f;\n}\n";
+
+/// A shape-mode folder: proctex.cl and its interp fallback (FallbackBroken: one that does not
+/// compile, though it declares the kernel).
+Layout tinyShapeLayout(const fs::path &Dir, bool FallbackBroken) {
+  fs::create_directories(Dir);
+  std::ofstream(Dir / "layout.json")
+      << R"({"texcc": 1, "mode": "shape", "kernel": {"source": "proctex.cl",
+             "interpFallback": "proctex.interp.cl", "shapes": []}, "materials": [],
+             "stackSlots": 2, "capabilities": {"shapeKeyed": true, "interpFallback": true}})";
+  std::ofstream(Dir / "args.bin") << "";
+  std::ofstream(Dir / "proctex.cl") << "// shape\n" << TinyKernel;
+  std::ofstream(Dir / "proctex.interp.cl")
+      << "// interp\n" << TinyKernel << (FallbackBroken ? "this is not OpenCL C;\n" : "");
+  return loadLayout(Dir.string());
+}
+
+/// The events a manager sends, and a wait for its build threads' wake-ups.
+struct EventLog {
+  std::vector<TierEvent> Seen;
+  std::mutex M;
+  std::condition_variable Cv;
+  unsigned Wakes = 0;
+  void wake() {
+    std::lock_guard<std::mutex> L(M);
+    ++Wakes;
+    Cv.notify_all();
+  }
+  void waitForWakes(unsigned N) {
+    std::unique_lock<std::mutex> L(M);
+    Cv.wait(L, [&] { return Wakes >= N; });
+  }
+  /// "built fallback bg" ... per background event, in order.
+  std::vector<std::string> background() const {
+    std::vector<std::string> Out;
+    for (const TierEvent &E : Seen)
+      if (E.Background)
+        Out.push_back(std::string(tierEventName(E.K)) + " " +
+                      texcc::kernel::programRoleName(E.Role) + (E.Switches ? " switches" : ""));
+    return Out;
+  }
+};
+
+struct TierFixture {
+  fs::path Dir;
+  Layout Lay;
+  std::unique_ptr<ClContext> Cl;
+  std::unique_ptr<TierManager> T;
+  EventLog Log;
+  TierFixture(const std::string &Name, bool FallbackBroken) {
+    Dir = fs::temp_directory_path() /
+          ("texrender-tier-events-" + Name + "-" + std::to_string(::getpid()));
+    fs::remove_all(Dir);
+    Lay = tinyShapeLayout(Dir / "out", FallbackBroken);
+    Cl = std::make_unique<ClContext>(0, (Dir / "cache").string()); // nothing cached
+    T = std::make_unique<TierManager>(*Cl, Lay, TierPolicy::Auto, false, "", steadySeconds(),
+                                      [this](Layout &&L) {
+                                        Lay = std::move(L);
+                                        return true;
+                                      });
+    T->subscribe([this](const TierEvent &E) { Log.Seen.push_back(E); });
+    T->setWake([this] { Log.wake(); });
+  }
+  ~TierFixture() {
+    T.reset();
+    fs::remove_all(Dir);
+  }
+};
+
+} // namespace
+
+TEST(TierEvents, FallbackBuiltThenAdoptedAtRest) {
+  if (listDevices().empty())
+    GTEST_SKIP() << "no OpenCL device";
+  TierFixture F("adopt", /*FallbackBroken=*/false);
+  F.T->build(true); // nothing cached: the shape kernel now, its fallback in the background
+  ASSERT_EQ(F.T->activeTier(), "shape");
+  ASSERT_EQ(F.Log.Seen.size(), 1u);
+  EXPECT_EQ(F.Log.Seen[0].K, TierEvent::Kind::Built);
+  EXPECT_EQ(F.Log.Seen[0].Role, ProgramRole::Primary);
+  EXPECT_FALSE(F.Log.Seen[0].Background);
+  F.Log.waitForWakes(1);
+  EXPECT_FALSE(F.T->canSwitchShapes()); // ended, but nobody has looked: no side effect
+  EXPECT_FALSE(F.T->switchPending());   // a fallback built alone switches nothing
+  F.T->collect(/*Rest=*/false);         // within a pass: told, not adopted
+  EXPECT_EQ(F.Log.background(), std::vector<std::string>{"built fallback"});
+  EXPECT_EQ(F.T->fallbackStackSlots(), 0u);
+  EXPECT_FALSE(F.T->canSwitchShapes());
+  F.T->collect(/*Rest=*/false); // once
+  EXPECT_EQ(F.Log.background().size(), 1u);
+  F.T->collect(/*Rest=*/true); // between frames: adopted
+  EXPECT_EQ(F.Log.background(), (std::vector<std::string>{"built fallback", "adopted fallback"}));
+  EXPECT_TRUE(F.T->canSwitchShapes());
+  EXPECT_GE(F.T->fallbackStackSlots(), 2u);
+  const TierEvent &A = F.Log.Seen.back();
+  EXPECT_EQ(A.Reason, "initial");
+  EXPECT_GT(A.Seconds, 0.0);
+  EXPECT_EQ(F.T->activeTier(), "shape"); // the shape kernel renders on
+
+  // A new shape: the fallback renders at once, the new layout's programs build behind it and
+  // are adopted by the next frame, not before.
+  F.T->switchShapes(true, [L = F.Lay] { return L; }, [](Layout &) {});
+  EXPECT_EQ(F.T->activeTier(), "interp");
+  EXPECT_TRUE(F.T->switchPending());
+  F.Log.waitForWakes(2);
+  F.T->collect(/*Rest=*/true);
+  EXPECT_EQ(F.Log.background(),
+            (std::vector<std::string>{"built fallback", "adopted fallback",
+                                      "built primary switches", "built fallback switches"}));
+  EXPECT_FALSE(F.T->switchPending());
+  EXPECT_EQ(F.T->activeTier(), "interp"); // adoption is the frame's
+  EXPECT_EQ(F.T->beginFrame(), "shape");
+  EXPECT_EQ(F.Log.background(),
+            (std::vector<std::string>{"built fallback", "adopted fallback",
+                                      "built primary switches", "built fallback switches",
+                                      "adopted primary switches", "adopted fallback switches"}));
+  EXPECT_EQ(F.Log.Seen.back().Reason, "shape change");
+}
+
+TEST(TierEvents, FailedBuildSaysWhy) {
+  if (listDevices().empty())
+    GTEST_SKIP() << "no OpenCL device";
+  TierFixture F("fail", /*FallbackBroken=*/true);
+  F.T->build(true);
+  F.Log.waitForWakes(1);
+  F.T->collect(/*Rest=*/true);
+  ASSERT_EQ(F.Log.background(), std::vector<std::string>{"failed fallback"});
+  const TierEvent &E = F.Log.Seen.back();
+  EXPECT_EQ(E.Reason, "initial");
+  EXPECT_FALSE(E.Error.empty());
+  EXPECT_FALSE(F.T->canSwitchShapes());
+  EXPECT_EQ(F.T->activeTier(), "shape");
+  EXPECT_EQ(F.T->beginFrame(), "shape"); // nothing more to adopt
+  EXPECT_EQ(F.Log.background().size(), 1u);
+  EXPECT_EQ(F.T->buildEvents().back().Error, E.Error);
 }

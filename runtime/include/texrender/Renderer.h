@@ -132,32 +132,12 @@ public:
   /// attributes with the edits made since, and the renderer switches to it.
   void switchShapes(const std::vector<uint8_t> &ArgsBin, const std::vector<std::string> &Attributes,
                     std::function<Layout()> MakeLayout, std::function<void(Layout &)> Reencode);
-  /// Waits for the background build in flight, if any, and switches to its kernels. Returns
-  /// the seconds waited.
-  double waitForBackgroundBuild() { return Tiers->waitForBackgroundBuild(); }
-  bool backgroundBuildPending() const { return Tiers->backgroundBuildPending(); }
-  /// TierManager::setDeferFallbackBuilds and startDeferredBuild (texrender --watch).
-  void setDeferFallbackBuilds(bool On) { Tiers->setDeferFallbackBuilds(On); }
-  bool startDeferredBuild() { return Tiers->startDeferredBuild(); }
-  /// TierManager::setQuickTier and warmQuickPrograms (texrender --watch).
-  void setQuickTier(bool On) { Tiers->setQuickTier(On); }
-  bool fullPassDone() { return Tiers->fullPassDone(); }
-  bool warmQuickPrograms() { return Tiers->warmQuickPrograms(); }
-  std::optional<std::pair<double, unsigned>> quickWarmUpFinished() {
-    return Tiers->quickWarmUpFinished();
-  }
-
-  /// The texture kernels, their tiers and builds (TierManager.h).
+  /// The texture kernels, their tiers and builds (TierManager.h): the session's one way to
+  /// them (TierManager::subscribe for its events, collect at its idle boundaries, the watch
+  /// session's switches setDeferFallbackBuilds and setQuickTier).
+  TierManager &tiers() { return *Tiers; }
   const TierManager &tiers() const { return *Tiers; }
   TierPolicy tierPolicy() const { return Opts.Tier; }
-  const std::string &activeTier() const { return Tiers->activeTier(); }
-  /// The value-stack slots the adopted interp fallback holds (stackHeadroomOption); 0: none.
-  unsigned fallbackStackSlots() const { return Tiers->fallbackStackSlots(); }
-  /// TierManager::adoptFinishedFallback (texrender --watch, while idle).
-  std::optional<double> adoptFinishedFallback() { return Tiers->adoptFinishedFallback(); }
-  /// interp mode: the value-stack slots the built kernel holds (with InterpStackHeadroom more
-  /// than the layout's stackSlots).
-  unsigned interpStackSlots() const { return Tiers->interpStackSlots(); }
   /// Every texture-kernel build so far, foreground and background.
   const std::vector<BuildEvent> &buildEvents() const { return Tiers->buildEvents(); }
   /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.

@@ -135,25 +135,26 @@ void requireKernelsDeclared(const std::string &File, const std::string &Source,
                             const std::vector<std::string> &Kernels);
 
 /// A job on its own std::thread, Nice above the creating thread's nice value
-/// (lowerThisThreadsPriority).
+/// (lowerThisThreadsPriority); OnDone, if any, runs on that thread once the result is ready.
 /// The thread owns every OpenCL object it creates; only the programs cross over (kernels are
 /// created from them on the main thread, so no cl_kernel is ever shared for clSetKernelArg).
 class BackgroundBuild {
 public:
   BackgroundBuild(std::function<TierBuildResult()> Job, size_t EventIndex,
-                  int Nice = backgroundBuildNice());
+                  int Nice = backgroundBuildNice(), std::function<void()> OnDone = nullptr);
   ~BackgroundBuild();
   BackgroundBuild(const BackgroundBuild &) = delete;
   BackgroundBuild &operator=(const BackgroundBuild &) = delete;
 
   bool ready() const;
   void wait() const { Result.wait(); }
-  /// The result (once; after ready() or wait()).
+  /// The result, after ready() or wait(): to look at, and a copy to keep.
+  const TierBuildResult &result() const { return Result.get(); }
   TierBuildResult take() { return Result.get(); }
   size_t eventIndex() const { return EventIndex; }
 
 private:
-  std::future<TierBuildResult> Result;
+  std::shared_future<TierBuildResult> Result;
   std::thread Thread;
   size_t EventIndex;
 };

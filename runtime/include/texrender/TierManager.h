@@ -1,17 +1,20 @@
 #ifndef TEXRENDER_TIERMANAGER_H
 #define TEXRENDER_TIERMANAGER_H
 
-// The texture kernels of a Renderer (docs/runtime.md, "Tiers"): which program renders the next
-// frame, the foreground builds frames wait for, the background builds (one thread at a time,
-// superseded ones finished and dropped), their adoption at a frame boundary (the interp
-// fallback alone: as soon as it is done), and the build events stats.json reports. The
-// Renderer keeps path tracing and launches the kernels this class hands it; the building
-// blocks (BackgroundBuild, buildShapeTier, the value-stack headroom) are in TextureTiers.h.
+// The texture kernels of a Renderer (docs/runtime.md, "Tiers"): the layout's programs by role
+// (primary, fallback, quick: texcc/Kernel/Manifest.h), which one renders the next frame, the
+// foreground builds frames wait for, the background builds (one thread at a time, superseded
+// ones finished and dropped), their adoption at a frame or pass boundary (the interp fallback
+// alone: at the first boundary at rest, collect), the events its subscribers hear (built,
+// adopted, failed: TierEvent) and the build records stats.json reports. The Renderer keeps
+// path tracing and launches the kernels this class hands it; the building blocks
+// (BackgroundBuild, buildShapeTier, the value-stack headroom) are in TextureTiers.h.
 
 #include "texrender/ClContext.h"
 #include "texrender/Layout.h"
 #include "texrender/TextureTiers.h"
 
+#include <atomic>
 #include <functional>
 #include <future>
 #include <map>
@@ -38,6 +41,30 @@ TierBuildPlan planTierBuilds(TierPolicy P, bool ShapeCached, bool FallbackCached
 /// The quick tier's name (stats.json, the frame log).
 constexpr const char *QuickTierName = "quick";
 
+using texcc::kernel::ProgramRole;
+
+/// What the tier manager tells its subscribers (subscribe) about a program of a role: Built
+/// once a build has ended (a background build: held for adoption, a quick warm-up: its
+/// programs kept), Adopted once the program is the manager's (frames render with it, or for an
+/// interp fallback built alone: a rewiring to a new shape can render with it at once), Failed
+/// when a build failed (the kernel that renders keeps rendering). Delivered on the thread that
+/// calls the manager (the render thread), from the call that saw it happen.
+struct TierEvent {
+  enum class Kind { Built, Adopted, Failed };
+  Kind K = Kind::Built;
+  ProgramRole Role = ProgramRole::Primary;
+  bool Background = false; // a background build (or warm-up); else one a frame waited for
+  /// Frames switch to what the build made (a new primary, or a new layout): the next frame
+  /// or pass adopts it. An interp fallback built alone never switches.
+  bool Switches = false;
+  unsigned Programs = 1;   // quick warm-up: the programs it built
+  double Seconds = 0;      // the build's wall seconds (start to end; a warm-up: first to last)
+  std::string Reason;      // why it was built: "initial", "edit", "shape change", "warm-up"
+  std::string Error;       // Failed: the build's error
+};
+const char *tierEventName(TierEvent::Kind K); // "built", "adopted", "failed"
+using TierSubscriber = std::function<void(const TierEvent &)>;
+
 class TierManager {
 public:
   /// Lay: the layout the renderer runs (the renderer's own, which outlives this manager; a
@@ -58,9 +85,11 @@ public:
   /// no texture kernel at all.
   void build(bool HasTextureWork);
   /// Whether switchShapes can run: a shape-mode layout whose interp fallback is built and
-  /// adopted (a fallback finished on the background thread counts once adoptFinishedFallback,
-  /// or a frame, has adopted it). No side effect.
-  bool canSwitchShapes() const { return Lay.Caps.InterpFallback && InterpProgram(); }
+  /// adopted (a fallback finished on the background thread counts once collect, or a frame,
+  /// has adopted it). No side effect.
+  bool canSwitchShapes() const {
+    return Lay.Caps.InterpFallback && program(ProgramRole::Fallback)();
+  }
   /// Renderer::switchShapes: the interp fallback renders at once, MakeLayout's layout is built
   /// on the background thread and Reencode fills it at adoption (TextureTiers.h). The renderer
   /// has uploaded the re-encoded arguments before.
@@ -72,22 +101,26 @@ public:
   /// Waits for the background build in flight, if any, and switches to its kernels. Returns
   /// the seconds waited.
   double waitForBackgroundBuild();
+  /// Events (TierEvent) go to every subscriber, in the order they happen. texrender --watch's
+  /// session subscribes to learn of finished builds and to print them.
+  void subscribe(TierSubscriber S) { Subscribers.push_back(std::move(S)); }
+  /// Called on the build's own thread as each background build or quick warm-up ends (the
+  /// session's wake-up: it then calls collect at its next boundary). Must be thread-safe.
+  void setWake(std::function<void()> W) { Wake = std::move(W); }
+  /// Takes the background builds that ended since the last call: Built or Failed for each (a
+  /// failed one is dropped; a quick warm-up's programs are kept), and starts a build queued
+  /// behind a superseded one that has ended. Rest: the caller is between frames (idle, or about
+  /// to plan an edit), so a finished interp fallback built alone is adopted now (Adopted; the
+  /// layout's own kernel renders on, and a rewiring to a new shape needs it); else (between the
+  /// stages of a pass) nothing is adopted. A build that frames switch to is adopted by the
+  /// next frame or pass (beginFrame, passDone), as ever.
+  void collect(bool Rest);
   /// A background build that makes a kernel to switch to (the shape kernel, or a new layout)
-  /// is queued or running; it no longer counts once it is done, so that an idle session notices
-  /// it (the next frame adopts it). A build of the interp fallback alone never counts: no frame
-  /// changes when it is adopted (adoptFinishedFallback). A build queued behind a superseded one
-  /// that has ended starts here, so that it does not wait for the next frame (an idle session
-  /// renders none).
-  bool backgroundBuildPending() {
-    launchQueued();
+  /// is queued, held or running and has not ended. No side effect.
+  bool switchPending() const {
     return HeldShape || HeldOptimised || (Queued && switches(Queued->Job)) ||
-           (Pending && PendingSwitches && !Pending->ready());
+           (Pending && PendingSwitches && !PendingAnnounced);
   }
-  /// Adopts a finished background build that made only the interp fallback (the layout's own
-  /// kernel renders meanwhile), now rather than at the next frame: an idle session renders none,
-  /// and a rewiring to a new shape needs the fallback (LiveEditor calls this before it reads
-  /// fallbackStackSlots). Returns the build's wall seconds when one was adopted by this call.
-  std::optional<double> adoptFinishedFallback();
   /// On: a background build that makes only the interp fallback of a layout whose own kernel
   /// renders (tier auto: the shape kernel built in the foreground, or built behind the quick
   /// tier) waits for startDeferredBuild() instead of starting with the layout. texrender
@@ -132,9 +165,6 @@ public:
   /// Starts building, in the background, the quick programs of the layout not kept yet (none
   /// while an earlier warm-up runs); returns whether it started.
   bool warmQuickPrograms();
-  /// Once per warm-up started by warmQuickPrograms, after it has ended: its wall seconds (first
-  /// start to last end) and the programs it built; std::nullopt otherwise.
-  std::optional<std::pair<double, unsigned>> quickWarmUpFinished();
   /// The node values per hit the quick tier needs in the texture scratch buffer (0 when off).
   unsigned quickScratchFloat4PerHit() const;
   /// The active tier's texture kernels in launch order (one, or wavefront's node launches and
@@ -151,32 +181,51 @@ public:
   const std::string &activeTier() const { return ActiveTier; }
   /// The value-stack slots the adopted interp fallback holds (stackHeadroomOption); 0: none
   /// (also while it is built on the background thread and not adopted). No side effect.
-  unsigned fallbackStackSlots() const { return InterpProgram() ? FallbackSlots : 0; }
+  unsigned fallbackStackSlots() const {
+    return program(ProgramRole::Fallback)() ? FallbackSlots : 0;
+  }
   /// interp mode: the value-stack slots the built kernel holds.
   unsigned interpStackSlots() const { return InterpModeSlots; }
   const std::vector<BuildEvent> &buildEvents() const { return Events; }
   /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
   double foregroundBuildSeconds() const;
 
+  /// The layout's built program of role R (Primary or Fallback; the quick tier's are kept per
+  /// function), or a null program.
+  cl::Program program(ProgramRole R) const {
+    auto It = Programs.find(R);
+    return It == Programs.end() ? cl::Program() : It->second;
+  }
+
 private:
   /// The job makes a kernel frames switch to (the shape kernel, or a new layout).
   static bool switches(const TierJob &J) { return J.Shape || !J.SameLayout; }
+  void emit(TierEvent E);
+  /// emit for each role Job builds (Primary, Fallback).
+  void emitForJob(TierEvent::Kind K, const TierJob &J, const BuildEvent &B);
+  /// The background build in flight, if it has ended: Built (or Failed: then dropped), once.
+  void announceReadyBuild();
   void buildShapeTiers(const char *Reason);
   /// The quick tier for this layout, if its programs are kept but at most one (built here).
   bool buildQuickTier(const char *Reason);
   void mergeQuickWarmUp(bool Wait);
   static std::string quickKey(const std::string &Source) { return Source; }
   /// ExtraOptions: appended to ProgramOptions (the value-stack headroom's -D).
-  /// Fallback: the program is the layout's interp fallback (Caps.InterpFallback), else the
+  /// Role: Fallback, the layout's interp fallback (Caps.InterpFallback), or Primary, the
   /// layout's own kernel.
-  cl::Program buildForeground(const std::string &Path, const std::string &Source, bool Fallback,
+  cl::Program buildForeground(const std::string &Path, const std::string &Source, ProgramRole Role,
                               const std::string &Reason, const std::string &ExtraOptions = "",
                               bool QuickFirst = false);
-  void activate(const cl::Program &P, bool Fallback);
-  bool tierUsesUniforms(bool Fallback) const;
-  /// The tier's name in stats.json and the frame log: the fallback's FallbackTierName, else
-  /// the layout's mode as its manifest names it (a label only: nothing compares it).
-  std::string tierName(bool Fallback) const;
+  void activate(const cl::Program &P, ProgramRole Role);
+  bool tierUsesUniforms(ProgramRole Role) const;
+  /// The tier's name in stats.json and the frame log: the fallback's FallbackTierName, the
+  /// quick tier's QuickTierName, else the layout's mode as its manifest names it (a label only:
+  /// nothing compares it).
+  std::string tierName(ProgramRole Role) const;
+  /// The primary if built, else the fallback.
+  ProgramRole renderingRole() const {
+    return program(ProgramRole::Primary)() ? ProgramRole::Primary : ProgramRole::Fallback;
+  }
   std::vector<std::string> textureKernelNames() const;
   void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
                             std::function<void(Layout &)> Reencode, const std::string &Reason);
@@ -195,19 +244,22 @@ private:
   std::function<bool(Layout &&)> AdoptLayout;
   bool HasTextureWork = false;
 
-  std::string ActiveTier;      // tierName(ActiveFallback); "" without texture work
-  bool ActiveFallback = false; // the interp fallback renders
-  bool ActiveQuick = false;    // the quick tier renders (kernels of QuickKept's programs)
+  std::string ActiveTier; // tierName(ActiveRole); "" without texture work
+  // The role of the program that renders (Quick: kernels of QuickKept's programs).
+  ProgramRole ActiveRole = ProgramRole::Primary;
   std::vector<cl::Kernel> TextureKernels;
   // The texcc_uniforms of the shape tier or of an interp kernel that hoists (Layout::Uniforms),
   // and whether fakeStack changed (or the kernel did) since it last ran.
   cl::Kernel UniformsKernel;
   bool UniformsDirty = true;
-  cl::Program ShapeProgram, InterpProgram;
+  // The layout's programs by role (Primary, Fallback) once built and adopted.
+  std::map<ProgramRole, cl::Program> Programs;
   unsigned FallbackSlots = 0;
   unsigned InterpModeSlots = 0;
   std::unique_ptr<BackgroundBuild> Pending;
   bool PendingSwitches = false; // Pending makes a kernel the next frame renders with
+  bool PendingAnnounced = false; // Pending has ended and Built was emitted (announceReadyBuild)
+  TierJob PendingJob;
   std::function<void(Layout &)> PendingReencode;
   std::vector<std::unique_ptr<BackgroundBuild>> Retired;
   // The newest build requested while a superseded one still runs: it starts when that ends.
@@ -240,7 +292,10 @@ private:
     std::string Error;
   };
   std::future<std::vector<QuickWarmed>> QuickWarming;
-  std::optional<std::pair<double, unsigned>> QuickWarmReport; // for quickWarmUpFinished
+  // Set by the warm-up's thread as it returns (its wake-up may come before the future is ready).
+  std::shared_ptr<std::atomic<bool>> QuickWarmingEnded;
+  std::vector<TierSubscriber> Subscribers;
+  std::function<void()> Wake;
 };
 
 } // namespace texrender
