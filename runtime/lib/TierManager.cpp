@@ -277,14 +277,15 @@ unsigned TierManager::quickScratchFloat4PerHit() const {
 
 bool TierManager::buildQuickTier(const char *Reason) {
   const texcc::kernel::KernelEntries &K = Lay.Manifest.Kernel;
-  if (!QuickTier || FramesRendered == 0 || K.QuickPrograms.empty() || K.QuickEntry.empty())
+  const std::vector<texcc::kernel::RoleProgram> Quick = K.programs(ProgramRole::Quick);
+  if (!QuickTier || FramesRendered == 0 || Quick.empty() || K.QuickEntry.empty())
     return false;
   // A warm-up still in flight is not waited for (it can take seconds, niced): without its
   // programs the edit takes the shape kernel's path, as before the quick tier.
   mergeQuickWarmUp(/*Wait=*/false);
   std::vector<std::string> Paths, Texts;
   unsigned Missing = 0;
-  for (const texcc::kernel::QuickProgram &P : K.QuickPrograms) {
+  for (const texcc::kernel::RoleProgram &P : Quick) {
     Paths.push_back(Lay.Dir + "/" + P.Source);
     Texts.push_back(readKernelSource(Paths.back()));
     Missing += QuickKept.count(quickKey(Texts.back())) ? 0 : 1;
@@ -294,7 +295,7 @@ bool TierManager::buildQuickTier(const char *Reason) {
   std::map<std::string, cl::Program> Now;
   std::map<std::string, cl::Program> ByKernel;
   for (size_t I = 0; I < Texts.size(); ++I) {
-    const texcc::kernel::QuickProgram &P = K.QuickPrograms[I];
+    const texcc::kernel::RoleProgram &P = Quick[I];
     auto It = QuickKept.find(quickKey(Texts[I]));
     cl::Program Prog;
     if (It != QuickKept.end()) {
@@ -338,8 +339,9 @@ bool TierManager::buildQuickTier(const char *Reason) {
 }
 
 bool TierManager::warmQuickPrograms() {
-  const texcc::kernel::KernelEntries &K = Lay.Manifest.Kernel;
-  if (!QuickTier || !HasTextureWork || K.QuickPrograms.empty())
+  const std::vector<texcc::kernel::RoleProgram> Quick =
+      Lay.Manifest.Kernel.programs(ProgramRole::Quick);
+  if (!QuickTier || !HasTextureWork || Quick.empty())
     return false;
   mergeQuickWarmUp(false);
   if (QuickWarming.valid())
@@ -349,7 +351,7 @@ bool TierManager::warmQuickPrograms() {
     std::vector<std::string> Kernels;
   };
   std::vector<Todo> Work;
-  for (const texcc::kernel::QuickProgram &P : K.QuickPrograms) {
+  for (const texcc::kernel::RoleProgram &P : Quick) {
     Todo T{Lay.Dir + "/" + P.Source, readKernelSource(Lay.Dir + "/" + P.Source), P.Kernels};
     if (!QuickKept.count(quickKey(T.Source)))
       Work.push_back(std::move(T));
