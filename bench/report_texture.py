@@ -77,7 +77,8 @@ def per_node_cycles_lines(d):
              "render's CPU time less the constant's of the same process and round, over the "
              "samples. The user fBM has no SVM form (a Script node runs under OSL only). "
              "Every reference value equals texrender's inline value at the same 4096 points "
-             "(max abs difference in the last column)." % (
+             "(max abs difference in the last column); the reference inlines every function into "
+             "its loop, as PoCL does." % (
                  d["reps"], d["spp"], d["reps"], d["git"], min(loads), max(loads), d["size"],
                  d["size"], d["spp"], d["inner"], d["inner"]), "",
              "| node | Cycles SVM | Cycles OSL | texrender inline | interp | shape | C ref "
@@ -97,7 +98,23 @@ def per_node_cycles_lines(d):
             if c:
                 spread.append("%s %s %.0f-%.0f" % (name, kind.upper(), min(c["rounds"]),
                                                    max(c["rounds"])))
-    return lines + ["", "Cycles' per-round costs (CPU time differences, ns per sample): %s; "
+    before_after = (
+        "Where the time went, before and after (texrender inline, ns per sample, one thread, "
+        "texcc-eval --time over 4096 points; bench/texture-speed.md has each step and how it "
+        "was found): at ca2db5c Noise 3D Color fBM 624.5, Ridged 653.2, Voronoi 3D F1 380.4, "
+        "Wave 245.5 (load 7.8). PoCL had not vectorised the scalar Perlin and Voronoi: the "
+        "lattice hashes and gradients on uint4/float4 and Color's channels interleaved "
+        "(e9cfb50) gave 437.7, 444.1, 236.1, 201.3. Then, at 992dc9c against now in one process "
+        "(load 6.8): Noise 438.4 -> 336.1, Ridged 449.4 -> 346.5 (the 100000 wrap tested once "
+        "per fractal instead of per octave, whose fmod calls had kept the octave's values in "
+        "memory; Perlin 3D's lanes by vector adds), Voronoi 235.0 -> 79.3 (the running minimum "
+        "as values under selects instead of pointers kept in memory with a branch per "
+        "candidate), Wave 176.8 -> 141.5 (the wrap and lanes, and Cycles' own sine formula "
+        "by a reduction and series: PoCL's sin had cost 14-36 ns). The user fBM: 339.2 -> "
+        "289.8 when floor/ceil/trunc became clang's rounding builtins (1bf469f, da5f673); it "
+        "stays about 1.1x the folded reference.")
+    return lines + ["", before_after, "",
+                    "Cycles' per-round costs (CPU time differences, ns per sample): %s; "
                     "the medians of the per-round ratios texrender inline / Cycles: %s. Where "
                     "the time went before and after, node by node: "
                     "[bench/texture-speed.md](bench/texture-speed.md)." % (
