@@ -40,8 +40,8 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
+import _bootstrap  # noqa: F401,E402  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common  # noqa: E402
 import texture_speed  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -47,8 +47,8 @@ import subprocess
 import sys
 import types
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
+import _bootstrap  # noqa: F401,E402  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common  # noqa: E402
 
 REF_DIR = os.path.join(common.BENCH, "cpp_reference")
 GRAPHS = {"noise3d-color-detail7": os.path.join(REF_DIR, "graphs", "noise3d-color-detail7.json"),

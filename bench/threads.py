@@ -42,11 +42,9 @@ import sys
 import tempfile
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import common  # noqa: E402
-import texture_speed  # noqa: E402
-import cycles  # noqa: E402
+import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
+from texcc_tools.bench import common, cycles
+import texture_speed  # noqa: E402  (bench/, this script's folder)
 
 
 def autogroup(pid):
