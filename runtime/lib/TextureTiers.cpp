@@ -195,16 +195,17 @@ TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &Mak
       std::vector<std::string> Kernels{R.L.Entry};
       if (!R.L.Uniforms.empty())
         Kernels.push_back(R.L.Uniforms);
-      R.Shape = buildAndWarm(Cl, R.L.KernelSource,
-                             Job.ShapeText.empty() ? readKernelSource(R.L.KernelSource)
-                                                   : Job.ShapeText,
-                             Kernels, Options + Job.ShapeOptions);
+      const std::string Source =
+          Job.ShapeText.empty() ? readKernelSource(R.L.KernelSource) : Job.ShapeText;
+      R.Programs[texcc::kernel::ProgramRole::Primary] =
+          buildAndWarm(Cl, R.L.KernelSource, Source, Kernels, Options + Job.ShapeOptions);
     }
     if (Job.Interp) {
       const std::string Source = Job.FallbackText.empty() ? readKernelSource(R.L.InterpFallback)
                                                           : Job.FallbackText;
       const std::string Headroom = stackHeadroomOption(R.L, Source, R.FallbackSlots);
-      R.Interp = buildAndWarm(Cl, R.L.InterpFallback, Source, {R.L.Entry}, Options + Headroom);
+      R.Programs[texcc::kernel::ProgramRole::Fallback] =
+          buildAndWarm(Cl, R.L.InterpFallback, Source, {R.L.Entry}, Options + Headroom);
     }
   } catch (const cl::Error &E) {
     R.Error = std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err());

@@ -575,7 +575,7 @@ void TierManager::adoptReadyBuild() {
   TierBuildResult R = Pending->take();
   const size_t Index = Pending->eventIndex();
   Pending.reset();
-  if (R.Shape() || !R.SameLayout)
+  if (R.Programs.count(ProgramRole::Primary) || !R.SameLayout)
     Events[Index].FirstFrame = int(FramesRendered); // it renders this frame (an interp-only
                                                     // job does not)
   try {
@@ -593,12 +593,10 @@ void TierManager::adopt(TierBuildResult &R) {
     PendingReencode = nullptr;
     HasTextureWork = AdoptLayout(std::move(R.L));
   }
-  if (R.Interp()) {
-    Programs[ProgramRole::Fallback] = R.Interp;
+  for (const auto &[Role, P] : R.Programs)
+    Programs[Role] = P;
+  if (R.Programs.count(ProgramRole::Fallback))
     FallbackSlots = R.FallbackSlots;
-  }
-  if (R.Shape())
-    Programs[ProgramRole::Primary] = R.Shape;
   if (HasTextureWork)
     activate(program(renderingRole()), renderingRole());
 }

@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <future>
+#include <map>
 #include <string>
 #include <thread>
 
@@ -51,9 +52,10 @@ struct BuildEvent {
 struct TierBuildResult {
   Layout L;                  // the layout the programs belong to
   bool SameLayout = false;   // L is the layout the renderer runs
-  cl::Program Shape;         // L's shape kernel (if the job built it)
-  cl::Program Interp;        // L's interp fallback (if the job built it)
-  unsigned FallbackSlots = 0; // its value-stack capacity (stackHeadroomOption)
+  // The programs of L the job built, by role: Primary (L's own kernel: the shape kernel),
+  // Fallback (its interp fallback).
+  std::map<texcc::kernel::ProgramRole, cl::Program> Programs;
+  unsigned FallbackSlots = 0; // the fallback's value-stack capacity (stackHeadroomOption)
   double ReadySeconds = 0;
   std::string Error;
 };
