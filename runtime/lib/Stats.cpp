@@ -94,7 +94,7 @@ json statsJson(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Fra
   J["kernelBuilds"] = R.cl().kernelBuilds();
   J["backgroundKernelBuilds"] = R.cl().backgroundBuilds();
   J["tierPolicy"] = L.Caps.InterpFallback ? json(tierPolicyName(R.tierPolicy())) : json(nullptr);
-  J["textureBuilds"] = buildEventsJson(R.buildEvents());
+  J["textureBuilds"] = buildEventsJson(R.tiers().buildEvents());
   J["programCacheHits"] = R.cl().cacheHits();
   J["memoryBytes"] = R.cl().memoryTotal();
   J["memory"] = R.cl().memory();

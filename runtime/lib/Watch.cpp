@@ -433,7 +433,7 @@ void Session::adoptJob() {
   }
   const std::string PrimeAccount = waitForPrime();
   unsigned Builds = R->cl().foregroundBuilds();
-  const size_t EventsBefore = R->buildEvents().size();
+  const size_t EventsBefore = R->tiers().buildEvents().size();
   const double AdoptStart = nowSeconds();
   try {
     R->setLayout(*Made);
@@ -453,7 +453,7 @@ void Session::adoptJob() {
   ChangeAt = J->Started;
   Source = {J->Started, J->Run->endedAt(), AdoptStart, nowSeconds(), 0,
             R->cl().foregroundBuilds() - Builds, PrimeAccount};
-  const std::vector<BuildEvent> &Events = R->buildEvents();
+  const std::vector<BuildEvent> &Events = R->tiers().buildEvents();
   for (size_t I = EventsBefore; I < Events.size(); ++I)
     if (!Events[I].Background && Events[I].ReadySeconds >= 0)
       Source.BuildMs += (Events[I].ReadySeconds - Events[I].StartSeconds) * 1000;

@@ -239,10 +239,10 @@ public:
   void record(FrameRecord &F) {
     F.KernelBuilds = R.cl().foregroundBuilds() - Foreground;
     F.BackgroundBuilds = R.cl().backgroundBuilds() - Background;
-    F.BuildWaitSeconds = R.foregroundBuildSeconds() - WaitSeconds;
+    F.BuildWaitSeconds = R.tiers().foregroundBuildSeconds() - WaitSeconds;
     Foreground = R.cl().foregroundBuilds();
     Background = R.cl().backgroundBuilds();
-    WaitSeconds = R.foregroundBuildSeconds();
+    WaitSeconds = R.tiers().foregroundBuildSeconds();
   }
 
 private:

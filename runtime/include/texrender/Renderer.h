@@ -138,10 +138,6 @@ public:
   TierManager &tiers() { return *Tiers; }
   const TierManager &tiers() const { return *Tiers; }
   TierPolicy tierPolicy() const { return Opts.Tier; }
-  /// Every texture-kernel build so far, foreground and background.
-  const std::vector<BuildEvent> &buildEvents() const { return Tiers->buildEvents(); }
-  /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
-  double foregroundBuildSeconds() const { return Tiers->foregroundBuildSeconds(); }
 
   /// For tests: one jittered camera ray per pixel, the hit attributes of the first hits
   /// (Mask: bits 1 << TEXCC_ATTR_*), with AO computed when the mask has the AO bit.

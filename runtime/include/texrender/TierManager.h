@@ -186,6 +186,7 @@ public:
   }
   /// interp mode: the value-stack slots the built kernel holds.
   unsigned interpStackSlots() const { return InterpModeSlots; }
+  /// Every texture-kernel build so far, foreground and background (stats.json textureBuilds).
   const std::vector<BuildEvent> &buildEvents() const { return Events; }
   /// Wall seconds of the texture-kernel builds (and cache loads) frames waited for, so far.
   double foregroundBuildSeconds() const;
