@@ -52,9 +52,9 @@ class Tools:
     def __init__(self, build, work, device="0"):
         self.texcc = tool("texcc", build)
         self.texrender = tool("texrender", build)
-        for tool in (self.texcc, self.texrender):
-            if not os.access(tool, os.X_OK):
-                raise BenchError("%s: not built (ninja -C %s texcc texrender)" % (tool, build))
+        for binary in (self.texcc, self.texrender):
+            if not os.access(binary, os.X_OK):
+                raise BenchError("%s: not built (ninja -C %s texcc texrender)" % (binary, build))
         self.build = build
         self.work = work
         self.device = device
