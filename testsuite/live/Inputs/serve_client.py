@@ -30,10 +30,14 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
 class Session:
-    def __init__(self, render_args, delay_ms=0, server_args=(), renderer=FAKE):
+    def __init__(self, render_args, hold=False, server_args=(), renderer=FAKE):
         self.tmp = tempfile.mkdtemp(prefix="serve-client-")
         self.log = os.path.join(self.tmp, "control.log")
-        env = dict(os.environ, SERVE_FAKE_LOG=self.log, SERVE_FAKE_DELAY_MS=str(delay_ms))
+        env = dict(os.environ, SERVE_FAKE_LOG=self.log)
+        # hold: the fake texrender answers an edit only while the file self.hold exists.
+        self.hold = os.path.join(self.tmp, "hold") if hold else None
+        if self.hold:
+            env["SERVE_FAKE_HOLD"] = self.hold
         # $SERVE_AUDIT_LOG: the server runs under an audit hook that logs every file it opens.
         audit = [os.path.join(HERE, "serve_audit.py")] if "SERVE_AUDIT_LOG" in os.environ else []
         self.proc = subprocess.Popen(
@@ -236,10 +240,19 @@ async def case_refused_downstream(s, http):
     await other.close()
 
 
-async def burst(ws, first_id, n):
+async def burst(s, ws, first_id, n):
+    """n set messages sent while the fake texrender holds its answer to the first (the edit in
+    flight), released once the server has read them all (its answer to a message of an unknown
+    type sent after them: it reads a page's messages in order): the server must coalesce the
+    rest into one line."""
+    if os.path.exists(s.hold):
+        os.remove(s.hold)
     for i in range(n):
         await ws.send_str(json.dumps({"type": "set", "id": first_id + i, "node": "t",
                                       "arg": "gain", "value": (i + 1) / n}))
+    await ws.send_str(json.dumps({"type": "read-them-all", "id": first_id + n}))
+    await next_of(ws, "error")
+    open(s.hold, "w").close()
     last = first_id + n - 1
     while True:
         applied = await next_of(ws, "applied", timeout=WAIT_S)
@@ -249,14 +262,14 @@ async def burst(ws, first_id, n):
 
 async def case_burst(s, http):
     ws, _ = await open_page(s, http)
-    applied = await burst(ws, 1, 1000)
+    applied = await burst(s, ws, 1, 1000)
     lines = s.forwarded()
     print(f"1000 messages: {len(lines)} control lines reached texrender; the last applied is "
           f"id {applied['id']} value {applied['value']} (coalesced {applied['coalesced']})")
     print(f"last line: {lines[-1].split(' ', 1)[1]}")
     before = s.rss_kib()
     for k in range(10):
-        await burst(ws, 10000 * (k + 1), 1000)
+        await burst(s, ws, 10000 * (k + 1), 1000)
     after = s.rss_kib()
     growth = after - before
     print(f"rss after 1000: {before} KiB, after 10000 more: {after} KiB; growth {growth} KiB")
@@ -574,13 +587,13 @@ def main():
         return
     case = sys.argv[1]
     cut = sys.argv.index("--")
-    delay = 200 if case == "burst" else 0
+    hold = case == "burst"
     if case == "huge-lines":
         os.environ["SERVE_FAKE_HUGE_LINES"] = "1"
     server_args = ["--listen", "0.0.0.0", "--idle-timeout", "1"] if case == "token" else []
     head = sys.argv[2:cut]
     renderer = head[head.index("--renderer") + 1] if "--renderer" in head else FAKE
-    s = Session(sys.argv[cut + 1:], delay, server_args, renderer)
+    s = Session(sys.argv[cut + 1:], hold, server_args, renderer)
     try:
         asyncio.run(main_async(case, s))
     finally:

@@ -11,7 +11,8 @@ tiny PNG frame every 50 ms. $SERVE_FAKE_BROKEN_SCHEMA makes the first node's inp
 $SERVE_FAKE_HUGE_LINES writes a 10 MiB line to stderr and a 10 MiB error event first.
 
 Every control line it reads is appended to $SERVE_FAKE_LOG (the tests read what reached
-"texrender"); $SERVE_FAKE_DELAY_MS delays each answer (so that a burst finds an edit in flight).
+"texrender"); $SERVE_FAKE_HOLD names a file: each answer waits until it exists (so that a burst finds an
+edit in flight, whatever the machine's speed).
 """
 import json
 import os
@@ -84,7 +85,7 @@ def main():
         graph = json.load(f)
     out = args[args.index("-o") + 1]
     log = os.environ.get("SERVE_FAKE_LOG")
-    delay = float(os.environ.get("SERVE_FAKE_DELAY_MS", "0")) / 1000
+    hold = os.environ.get("SERVE_FAKE_HOLD")
     schema = schema_of(graph, folder)
     emit({"event": "ready", "graph": "graph.json", "sources": graph["sources"], "width": 2,
           "height": 2, "schema": schema})
@@ -103,7 +104,8 @@ def main():
                 with open(log, "a") as f:
                     f.write(line)
             sid, edit = line.strip().split(" ", 1)
-            time.sleep(delay)
+            while hold and not os.path.exists(hold):  # the client says when to answer
+                time.sleep(0.005)
             if edit.endswith("=o"):  # as texrender refuses an edit its own checks reject
                 emit({"event": "error", "id": int(sid),
                       "message": f"edit '{edit}': node 'o' returns float, not float3"})
