@@ -24,8 +24,8 @@ Every texrender line that announces a slow step ("texrender: ...: N s ...") is k
 
   bench/coldstart.py [--reps 3] [--scenes rust,atrium-blender] [--json FILE] [--no-cycles]
 
-Writes bench/results/coldstart.json (or --json) and prints the medians; bench/report.py puts
-them in BENCHMARKS.md.
+Writes bench/results/coldstart.json (or --json) and prints the medians; texcc_tools.bench.report
+puts them in BENCHMARKS.md.
 """
 import argparse
 import json

@@ -207,7 +207,7 @@ def log(msg):
     print("bench: " + msg, flush=True)
 
 
-# Number formats of the report (bench/report.py, bench/report_peers.py).
+# Number formats of the report (texcc_tools.bench.report, report_peers).
 def fmt(x, digits=3):
     if x is None:
         return "n/a"

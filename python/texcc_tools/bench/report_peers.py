@@ -1,6 +1,7 @@
-"""BENCHMARKS.md's sections on texrender beside Blender Cycles (bench/cycles.py) and on single
-Blender nodes (bench/per_hit.py --nodes); bench/report.py assembles the page."""
-from texcc_tools.bench import common
+"""BENCHMARKS.md's sections on texrender beside Blender Cycles (bench/cycles.py), on single
+Blender nodes (bench/per_hit.py --nodes) and on error against converged references beside Cycles
+(bench/accuracy.py --peer); texcc_tools.bench.report assembles the page."""
+from texcc_tools.bench import charts, common
 from texcc_tools.bench.common import fmt, pct
 
 
@@ -139,3 +140,64 @@ def per_hit_nodes_section(d):
             c["interp"]["medianNsPerHit"], c["interp"]["minNsPerHit"],
             c["inline"]["medianRatioToFirst"], c["interp"]["medianRatioToFirst"]))
     return lines + [""]
+
+
+def peer_section(d):
+    """4b: bench/accuracy.py --peer, error against converged references beside Cycles."""
+    if not d or not d.get("scenes"):
+        return []
+    lines = ["## 4b. Error against converged references, beside Cycles", "",
+             "`bench/accuracy.py --peer` (details and the runs' notes: bench/sampling.md): %s, "
+             "each renderer against its own %d-spp reference; RMSE: RMS over the repetitions "
+             "(seeds 1..). Time axis: the renderer's CPU time (user + system, all threads) per "
+             "frame, i.e. less its fixed part (texrender's process start, scene load and BVH; "
+             "Cycles' scene sync and BVH), from a fit of each renderer's CPU time as fixed + "
+             "per sample x spp over the medians at each spp (the measured frame times are in "
+             "the results file). Ratios are texrender's RMSE over Cycles' at equal spp and at the "
+             "CPU time Cycles spends on that spp (texrender's RMSE read off its own "
+             "RMSE-against-spp curve in log-log at the spp it renders in that time), with 95%% bootstrap intervals over "
+             "the repetitions; \"whole process\" counts the fixed parts too (- : texrender's "
+             "fixed part alone is longer than Cycles' whole render). Load %s-%s during the "
+             "run."
+             % (d["size"], d["refSpp"], _fmt_load(d, min), _fmt_load(d, max)), ""]
+    for scene, s in d["scenes"].items():
+        rows = {}
+        for r in s["summary"]:
+            rows.setdefault(r["spp"], {})[r["renderer"]] = r
+        ratios = s.get("ratios", {})
+        fixed = s.get("fixed", {})
+        if not ratios or "texrender-sobol" not in fixed:
+            continue
+        tm = ratios.get("timeModel", {})
+        fit = ""
+        if "texrender-sobol" in tm and "cycles" in tm:
+            fit = "; CPU s fitted as fixed + per sample x spp: texrender %.2f + %.4f spp, " \
+                  "Cycles %.2f + %.4f spp" % tuple(tm["texrender-sobol"] + tm["cycles"])
+        lines += ["%s (fixed part, CPU s of a 16x16 1 spp render: texrender %.2f, Cycles "
+                  "%.2f%s):" % (scene, fixed["texrender-sobol"]["cpu"], fixed["cycles"]["cpu"],
+                                fit), "",
+                  "| spp | reps | Cycles RMSE | texrender RMSE | equal spp | Cycles CPU s "
+                  "(fit) | texrender CPU s (fit) | equal time | equal time, whole process |",
+                  "|---|---|---|---|---|---|---|---|---|"]
+
+        def ci(v):
+            if not v or v["ratio"] is None:
+                return "-"
+            return "**%.3f** [%.3f, %.3f]" % ((v["ratio"],) + tuple(v["ci95"]))
+        for spp in sorted(rows):
+            c, t = rows[spp].get("cycles"), rows[spp].get("texrender-sobol")
+            if not c or not t:
+                continue
+            q = ratios.get(str(spp), {})
+            lines.append("| %d | %d | %.5f | %.5f | %s | %.2f | %.2f | %s | %s |" % (
+                spp, t["n"], c["rmse"], t["rmse"], ci(q.get("equalSpp")), c["seconds"],
+                t["seconds"],
+                ci(q.get("equalTime-cpu")), ci(q.get("equalTime-cpuTotal"))))
+        lines.append("")
+    chart = charts.accuracy_peer(d)
+    return lines + ["![error against converged references](%s)" % chart, ""]
+
+
+def _fmt_load(d, f):
+    loads = d.get("loads") or [0.0]
+    return "%.1f" % f(loads)
