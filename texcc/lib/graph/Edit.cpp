@@ -84,18 +84,23 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
   return true;
 }
 
+/// The node NodeId of G, or nullptr after an error naming the closest id.
+static Node *findNodeOrSay(Graph &G, const std::string &NodeId, DiagnosticSink &Diags) {
+  if (Node *N = G.findNode(NodeId))
+    return N;
+  std::vector<std::string> Ids;
+  for (const Node &Other : G.Nodes)
+    Ids.push_back(Other.Id);
+  std::string Near = json::closestMatch(NodeId, Ids);
+  Diags.error({}, "unknown node '" + NodeId + "'" +
+                      (Near.empty() ? "" : "; did you mean '" + Near + "'?"));
+  return nullptr;
+}
+
 bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
                               const std::string &Value, DiagnosticSink &Diags) {
-  Node *N = G.findNode(NodeId);
-  if (!N) {
-    std::vector<std::string> Ids;
-    for (const Node &Other : G.Nodes)
-      Ids.push_back(Other.Id);
-    std::string Near = json::closestMatch(NodeId, Ids);
-    Diags.error({}, "unknown node '" + NodeId + "'" +
-                        (Near.empty() ? "" : "; did you mean '" + Near + "'?"));
+  if (!findNodeOrSay(G, NodeId, Diags))
     return false;
-  }
   std::optional<ArgValue> V = parseArgValue(NodeId + "." + Arg, Value, Diags);
   return V && setArgument(NodeId, Arg, std::move(*V), Diags);
 }
@@ -108,16 +113,9 @@ bool GraphEditor::apply(const Edit &E, DiagnosticSink &Diags) {
 
 bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg, ArgValue V,
                               DiagnosticSink &Diags) {
-  Node *N = G.findNode(NodeId);
-  if (!N) {
-    std::vector<std::string> Ids;
-    for (const Node &Other : G.Nodes)
-      Ids.push_back(Other.Id);
-    std::string Near = json::closestMatch(NodeId, Ids);
-    Diags.error({}, "unknown node '" + NodeId + "'" +
-                        (Near.empty() ? "" : "; did you mean '" + Near + "'?"));
+  Node *N = findNodeOrSay(G, NodeId, Diags);
+  if (!N)
     return false;
-  }
   Graph Edited = G;
   ArgValue *Slot = argumentOf(*Edited.findNode(NodeId), Arg);
   V.KeyLoc = Slot->KeyLoc;
