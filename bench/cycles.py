@@ -6,7 +6,6 @@
 The measurement is texcc_tools.bench.cycles (python/texcc_tools/bench/cycles.py); bench/run
 runs it as the figure "cycles"."""
 import _bootstrap  # noqa: F401  (texcc_tools importable whichever Python runs this)
-from texcc_tools.bench.cycles import *  # noqa: F401,F403  (bench/threads.py imports `cycles`)
 from texcc_tools.bench.cycles import run
 
 if __name__ == "__main__":

@@ -173,7 +173,7 @@ def measure_peer(tools, quick, refs=None, samplers=("sobol", "pcg"), checkpoint=
     sync and BVH) is the median CPU time of three 16x16, 1 spp renders of the same scene and is
     subtracted: "cpu" is the frame's CPU time, "cpuTotal" the whole. Wall times are kept
     beside (texrender's renderSeconds and process wall, Cycles' render call)."""
-    import cycles
+    from texcc_tools.bench import cycles
     cfg = peer_settings(quick)
     cfg.update({k: v for k, v in (overrides or {}).items() if v is not None})
     refs = refs or os.path.join(tools.work, "refs")
