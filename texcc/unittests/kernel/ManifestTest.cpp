@@ -47,7 +47,7 @@ Manifest everyField() {
   M.RecordsOffset = 48;
   M.Attributes = {"WorldPos", "AO"};
   M.Settings = {"Time"};
-  M.Images = {{"img", "/i/a.png", 0}};
+  M.Images = {{"img", "/i/a.png", 0, ""}};
   FunctionLayout F;
   F.Id = 2;
   F.Name = "noise";
