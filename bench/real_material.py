@@ -5,7 +5,7 @@ roughness and normal maps made by the script, Non-Color where due; cases "real" 
 "real-metal"), and on the three-lamp interior (testsuite/Inputs/blender-export/
 make_lamp_blend.py's "interior"). Each .blend is exported by scripts/blender_export.py and
 rendered by both at SIZE and SPP for every seed; the seed means are compared as bench/cycles.py's
-lamp figures are (cycles.lamp_figure): whole-image means per channel, 16x16 blocks within 1%,
+lamp figures are (cycles_lamps.lamp_figure): whole-image means per channel, 16x16 blocks within 1%,
 each block's difference against its standard error, frame times.
 
 The code is texcc_tools.bench.real_material (python/texcc_tools/bench/real_material.py)."""

@@ -4,7 +4,7 @@ roughness and normal maps made by the script, Non-Color where due; cases "real" 
 "real-metal"), and on the three-lamp interior (testsuite/Inputs/blender-export/
 make_lamp_blend.py's "interior"). Each .blend is exported by scripts/blender_export.py and
 rendered by both at SIZE and SPP for every seed; the seed means are compared as bench/cycles.py's
-lamp figures are (cycles.lamp_figure): whole-image means per channel, 16x16 blocks within 1%,
+lamp figures are (cycles_lamps.lamp_figure): whole-image means per channel, 16x16 blocks within 1%,
 each block's difference against its standard error, frame times.
 
 usage: bench/real_material.py [--build DIR] [--size WxH] [--spp N] [--seeds 1-4]
@@ -12,10 +12,9 @@ usage: bench/real_material.py [--build DIR] [--size WxH] [--spp N] [--seeds 1-4]
 """
 import argparse
 import os
-import sys
 
 from texcc_tools.bench import common
-from texcc_tools.bench import cycles
+from texcc_tools.bench import cycles, cycles_lamps
 
 REAL_BLEND = os.path.join(common.BENCH, "inputs", "real_material_blend.py")
 REAL_CASES = ("real", "real-metal")
@@ -45,11 +44,11 @@ def main():
     out = {}
     real = [c for c in cases if c in REAL_CASES]
     if real:
-        out.update(cycles.lamp_figure(tools, args.size, args.spp, args.seeds, real,
+        out.update(cycles_lamps.lamp_figure(tools, args.size, args.spp, args.seeds, real,
                                       maker=REAL_BLEND, prefix="real"))
     lamps = [c for c in cases if c in LAMP_CASES]
     if lamps:
-        out.update(cycles.lamp_figure(tools, args.size, args.spp, args.seeds, lamps))
+        out.update(cycles_lamps.lamp_figure(tools, args.size, args.spp, args.seeds, lamps))
     load.append(os.getloadavg()[0])
     common.save(None, {"machine": common.machine(), "git": common.git_head(),
                        "size": args.size, "spp": args.spp, "seeds": args.seeds,
