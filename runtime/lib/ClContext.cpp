@@ -66,6 +66,7 @@ std::string defaultCacheDir() {
 namespace {
 unsigned ThreadsGiven = 0; // setRenderThreads's N; 0: every core
 bool PoolSized = false;    // sizePoclPool ran: the count is fixed for the process
+bool Pinned = false;       // each pool's thread I runs on CPU I (sizePoclPool)
 std::mutex PoolMutex;
 } // namespace
 
@@ -83,13 +84,39 @@ bool renderThreadsGiven() { return ThreadsGiven != 0; }
 
 std::string embreeDeviceConfig() { return "threads=" + std::to_string(renderThreads()); }
 
+bool renderThreadsPinned() { return Pinned; }
+
+void pinRenderThread(unsigned I) {
+  if (!Pinned)
+    return;
+  cpu_set_t Set;
+  CPU_ZERO(&Set);
+  CPU_SET(I, &Set);
+  pthread_setaffinity_np(pthread_self(), sizeof Set, &Set); // best effort: unpinned on failure
+}
+
+/// Whether the pools are pinned: N threads, the process may run on exactly CPUs 0..N-1, and
+/// N > 1. PoCL's POCL_AFFINITY pins its worker I to CPU I (by index, whatever the mask), so
+/// only then is its pinning right.
+static bool pinnable(unsigned N) {
+  cpu_set_t Set;
+  CPU_ZERO(&Set);
+  if (N < 2 || sched_getaffinity(0, sizeof Set, &Set) != 0 || unsigned(CPU_COUNT(&Set)) != N)
+    return false;
+  for (unsigned I = 0; I < N; ++I)
+    if (!CPU_ISSET(I, &Set))
+      return false;
+  return true;
+}
+
 /// PoCL's pthread device starts one worker per compute unit, and takes the count from
 /// POCL_MAX_PTHREAD_COUNT (PoCL 3; later versions also read POCL_CPU_MAX_CU_COUNT when it is
 /// unset) when the platform is first queried, raised to POCL_PTHREAD_MIN_THREADS /
 /// POCL_CPU_MIN_CU_COUNT. --threads sets them; without it, a POCL_MAX_PTHREAD_COUNT already in
 /// the environment is kept (bench/per_hit.py runs PoCL on one thread that way), else it is set
 /// to the cores this process may run on (PoCL itself counts every core of the machine, also
-/// those outside the affinity mask). Runs once: by setRenderThreads, or by the first device
+/// those outside the affinity mask). POCL_AFFINITY is set when the pools are pinned
+/// (renderThreadsPinned), else cleared. Runs once: by setRenderThreads, or by the first device
 /// discovery. The environment is changed here only, before PoCL or texrender start threads
 /// that could read it (texrender calls setRenderThreads right after parsing its options).
 static void sizePoclPool(unsigned N) {
@@ -101,6 +128,11 @@ static void sizePoclPool(unsigned N) {
   if (!N && std::getenv("POCL_MAX_PTHREAD_COUNT"))
     return;
   const std::string Count = std::to_string(renderThreads());
+  Pinned = pinnable(renderThreads());
+  if (Pinned)
+    setenv("POCL_AFFINITY", "1", 1);
+  else
+    unsetenv("POCL_AFFINITY"); // PoCL would pin worker I to CPU I whatever the mask
   setenv("POCL_MAX_PTHREAD_COUNT", Count.c_str(), 1);
   setenv("POCL_CPU_MAX_CU_COUNT", Count.c_str(), 1);
   unsetenv("POCL_PTHREAD_MIN_THREADS");

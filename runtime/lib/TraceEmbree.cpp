@@ -36,7 +36,8 @@ double seconds() {
 
 /// Runs Fn(Begin, End) over [0, N) in chunks of Chunk, on renderThreads() threads (the calling
 /// one among them; Threads.h): the OpenCL stages have finished, so PoCL's pool of as many
-/// threads is idle meanwhile.
+/// threads is idle meanwhile. Thread T runs on CPU T when the pools are pinned, as PoCL's
+/// worker T does (pinRenderThread): woken for the next stage, each finds its own core.
 template <typename F> void parallelChunks(size_t N, size_t Chunk, F &&Fn) {
   const size_t Chunks = (N + Chunk - 1) / Chunk;
   const size_t Threads = std::min<size_t>(renderThreads(), Chunks);
@@ -48,7 +49,10 @@ template <typename F> void parallelChunks(size_t N, size_t Chunk, F &&Fn) {
   std::vector<std::thread> Pool;
   for (size_t T = 1; T < Threads; ++T) {
     try {
-      Pool.emplace_back(Work);
+      Pool.emplace_back([&Work, T] {
+        pinRenderThread(unsigned(T));
+        Work();
+      });
     } catch (const std::system_error &) {
       break; // no room for another thread (its stack): the threads started do all the chunks
     }

@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <mutex>
 #include <optional>
 #include <signal.h>
@@ -79,18 +80,34 @@ EditScript readEditScript(const std::string &Path) {
   return S;
 }
 
-/// Checks the --set edits and then the script's, in the order they will be applied, against
-/// the graph (LiveEditor::check), before anything is rendered.
-void checkEdits(const LiveEditor &Editor, const std::vector<Edit> &Sets, const EditScript &Script) {
-  std::vector<Edit> All = Sets;
-  All.insert(All.end(), Script.Edits.begin(), Script.Edits.end());
-  std::optional<EditProblem> P = Editor.check(All);
-  if (!P)
-    return;
-  if (P->Index < Sets.size())
-    throw Error("edit '" + Sets[P->Index].Text + "': " + P->Message);
-  size_t K = P->Index - Sets.size();
-  throw scriptError(Script.Path, Script.Lines[K], P->Col, P->Message);
+/// The --set edits and the script's, checked (validated once, LiveEditor::check) in the order
+/// they are applied, before anything is rendered; applied later without being validated again.
+struct CheckedEdits {
+  std::vector<CheckedEdit> Sets, Script;
+};
+
+/// Checks Sets and then the script's edits (moved out of Script) against the graph. A refused
+/// one is an error: "edit 'TEXT': why" for a --set, "FILE:LINE:COL: error: why" for a line.
+CheckedEdits checkEdits(const LiveEditor &Editor, std::vector<Edit> Sets, EditScript &Script) {
+  const size_t NumSets = Sets.size();
+  std::vector<std::string> SetTexts;
+  for (const Edit &E : Sets)
+    SetTexts.push_back(E.Text);
+  std::vector<Edit> All = std::move(Sets);
+  std::move(Script.Edits.begin(), Script.Edits.end(), std::back_inserter(All));
+  Script.Edits.clear();
+  std::vector<CheckedEdit> Checked;
+  if (std::optional<EditProblem> P = Editor.check(std::move(All), Checked)) {
+    if (P->Index < NumSets)
+      throw Error("edit '" + SetTexts[P->Index] + "': " + P->Message);
+    throw scriptError(Script.Path, Script.Lines[P->Index - NumSets], P->Col, P->Message);
+  }
+  CheckedEdits Out;
+  Out.Script.assign(std::make_move_iterator(Checked.begin() + NumSets),
+                    std::make_move_iterator(Checked.end()));
+  Checked.erase(Checked.begin() + NumSets, Checked.end());
+  Out.Sets = std::move(Checked);
+  return Out;
 }
 
 /// --time-limit: a thread that ends the process when a step that cannot be interrupted runs past
@@ -251,27 +268,31 @@ private:
   double WaitSeconds = 0;
 };
 
-/// The step an out-of-memory error names while E is applied: "applying the edit 'a.b=1'" (a
-/// long edit, such as a large array value, cut after 60 characters).
-std::string editStep(const Edit &E) {
-  return "applying the edit '" + (E.Text.size() > 60 ? E.Text.substr(0, 60) + "..." : E.Text) + "'";
+/// The step an out-of-memory error names while the edit Text is applied: "applying the edit
+/// 'a.b=1'" (a long edit, such as a large array value, cut after 60 characters).
+std::string editStep(const std::string &Text) {
+  return "applying the edit '" + (Text.size() > 60 ? Text.substr(0, 60) + "..." : Text) + "'";
 }
 
-/// Editor.apply(E, R) as the step editStep(E) (LiveEditor's own steps, such as "encoding the
-/// graph for a live edit", are named inside it).
-EditResult applyEdit(const Edit &E, LiveEditor &Editor, Renderer &R) {
-  const std::string Step = editStep(E);
-  return texcc::whileAllocating(Step.c_str(), [&] { return Editor.apply(E, R); });
+/// Editor.apply(E, R) as the step editStep (LiveEditor's own steps, such as "encoding the
+/// graph for a live edit", are named inside it). E: an Edit or a CheckedEdit.
+template <typename EditT>
+EditResult applyEdit(EditT &&E, const std::string &Text, LiveEditor &Editor, Renderer &R) {
+  const std::string Step = editStep(Text);
+  return texcc::whileAllocating(Step.c_str(),
+                                [&] { return Editor.apply(std::forward<EditT>(E), R); });
 }
 
-/// Applies E to the renderer and renders the next frame (Image), counting its builds.
-FrameRecord renderAfterEdit(const Edit &E, LiveEditor &Editor, Renderer &R, BuildCounter &Builds,
-                            std::vector<float> &Image) {
-  const std::string Step = editStep(E);
+/// Applies E (an Edit or a CheckedEdit, whose line is Text) to the renderer and renders the
+/// next frame (Image), counting its builds.
+template <typename EditT>
+FrameRecord renderAfterEdit(EditT &&E, const std::string &Text, LiveEditor &Editor, Renderer &R,
+                            BuildCounter &Builds, std::vector<float> &Image) {
+  const std::string Step = editStep(Text);
   return texcc::whileAllocating(Step.c_str(), [&] {
     FrameRecord F;
-    F.EditText = E.Text;
-    EditResult Res = Editor.apply(E, R);
+    F.EditText = Text;
+    EditResult Res = Editor.apply(std::forward<EditT>(E), R);
     F.EditSeconds = Res.Seconds;
     F.IdleSeconds = Res.IdleSeconds;
     F.Rebuilt = Res.Rebuilt;
@@ -319,7 +340,8 @@ bool interactiveSession(const Options &O, const Scene &S, const ViewTransform *V
     if (Line.compare(B, 4, "quit") == 0)
       break;
     try {
-      Frames.push_back(renderAfterEdit(parseEdit(Line), Editor, R, Builds, Image));
+      Edit E = parseEdit(Line);
+      Frames.push_back(renderAfterEdit(E, E.Text, Editor, R, Builds, Image));
     } catch (const Error &E) {
       std::fprintf(stderr, "texrender: error: %s\n", E.what());
       continue;
@@ -402,13 +424,15 @@ std::shared_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSet
 
 /// stats.json: statsJson's, with the threads that rendered: "pool", the count each pool was
 /// given (--threads, else every core), and "openclComputeUnits", the device's own count (on
-/// PoCL's CPU device, its pool's threads).
+/// PoCL's CPU device, its pool's threads) and "pinned", whether the pools' threads are pinned
+/// one per CPU (Threads.h).
 nlohmann::json statsWithThreads(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Frames,
                                 double Seconds) {
   nlohmann::json J = statsJson(R, L, Frames, Seconds);
   J["threads"] = {{"pool", renderThreads()},
                   {"given", renderThreadsGiven()},
-                  {"openclComputeUnits", R.cl().device().getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>()}};
+                  {"openclComputeUnits", R.cl().device().getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>()},
+                  {"pinned", renderThreadsPinned()}};
   return J;
 }
 
@@ -459,7 +483,7 @@ int run(int Argc, char **Argv) try {
     throw Error(O.Scene + ": no texture folder: give --textures OUTDIR or \"textures\" in the scene");
   Layout L = loadLayout(TexDir);
   EditScript ScriptFile = O.EditScript.empty() ? EditScript() : readEditScript(O.EditScript);
-  const std::vector<Edit> &Script = ScriptFile.Edits;
+  const bool HasScript = !ScriptFile.Edits.empty();
   std::vector<Edit> Sets;
   for (auto &Text : O.Sets)
     Sets.push_back(parseEdit(Text));
@@ -484,7 +508,7 @@ int run(int Argc, char **Argv) try {
   }
   // Tiered pays off when edits follow; a single render waits for the shape build instead
   // (docs/runtime.md, Tiers: the interp frame is slower and the background build competes).
-  const bool EditSession = !Script.empty() || O.Interactive || O.Watch;
+  const bool EditSession = HasScript || O.Interactive || O.Watch;
   RO.Tier = O.Tier.value_or(EditSession ? TierPolicy::Auto : TierPolicy::Shape);
   // Likewise an interp kernel gets value-stack headroom only when edits may need it.
   RO.InterpStackHeadroom = EditSession;
@@ -508,13 +532,16 @@ int run(int Argc, char **Argv) try {
     return Sig ? 128 + Sig : Res.Ok ? 0 : 1;
   }
   // Every edit is checked against the graph before the kernel build and the first frame: a
-  // bad one is an error that leaves no frame written.
+  // bad one is an error that leaves no frame written. The frames apply the checked edits.
   std::unique_ptr<LiveEditor> Editor;
-  if (!Sets.empty() || !Script.empty() || O.Interactive) {
+  CheckedEdits Checked;
+  if (!Sets.empty() || HasScript || O.Interactive) {
     texcc::whileAllocating("reading the graph for live edits",
                            [&] { Editor = std::make_unique<LiveEditor>(L); });
-    texcc::whileAllocating("checking the edits", [&] { checkEdits(*Editor, Sets, ScriptFile); });
+    texcc::whileAllocating("checking the edits",
+                           [&] { Checked = checkEdits(*Editor, std::move(Sets), ScriptFile); });
   }
+  std::vector<CheckedEdit> &Script = Checked.Script;
   phase(Dog.get(), "building the kernels");
   Renderer R(S, L, RO);
   if (int Sig = StopSignal.load()) {
@@ -525,8 +552,9 @@ int run(int Argc, char **Argv) try {
 
   std::vector<FrameRecord> Frames;
   FrameRecord First;
-  for (auto &E : Sets) {
-    EditResult Res = applyEdit(E, *Editor, R);
+  for (CheckedEdit &E : Checked.Sets) {
+    const std::string Text = E.line().Text;
+    EditResult Res = applyEdit(std::move(E), Text, *Editor, R);
     First.EditSeconds += Res.Seconds;
     First.Rebuilt |= Res.Rebuilt;
   }
@@ -569,7 +597,8 @@ int run(int Argc, char **Argv) try {
   if (!Script.empty())
     writeImage(frameName(O.Output, 0), OutW, OutH, Image, View.get());
   for (size_t K = 0; K < Script.size() && !StopSignal.load(); ++K) {
-    Frames.push_back(renderAfterEdit(Script[K], *Editor, R, Builds, Image));
+    const std::string Text = Script[K].line().Text;
+    Frames.push_back(renderAfterEdit(std::move(Script[K]), Text, *Editor, R, Builds, Image));
     writeImage(frameName(O.Output, K + 1), OutW, OutH, Image, View.get());
   }
   writeImage(O.Output, OutW, OutH, Image, View.get());

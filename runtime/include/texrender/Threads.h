@@ -25,6 +25,16 @@ unsigned renderThreads();
 /// Whether a count was given (setRenderThreads with N >= 1: texrender --threads).
 bool renderThreadsGiven();
 
+/// Whether each pool's thread I runs on CPU I: the pools have N >= 2 threads and the process
+/// may run on CPUs 0..N-1 and no other (decided with the pool's size; PoCL's POCL_AFFINITY
+/// pins its worker I to CPU I by number, so no other mask can be pinned). A thread woken for
+/// the next stage then has its own core instead of queueing behind another process's thread
+/// on a core a sibling already took (docs/cli.md, bench/threads.md).
+bool renderThreadsPinned();
+
+/// Pins the calling thread, the pool's thread I, to CPU I when the pools are pinned.
+void pinRenderThread(unsigned I);
+
 /// The configuration string of rtcNewDevice: "threads=N" with N = renderThreads().
 std::string embreeDeviceConfig();
 
