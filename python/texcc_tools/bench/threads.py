@@ -29,6 +29,10 @@ the frame's critical path keeps busy (PoCL's pool and the trace backend's take t
     python3 bench/threads.py [--rounds 3] [--size 256x256] [--spp 8] [--threads 0,1,2,4]
         [--stress 2] [--loads quiet,nice,nice-setsid] [--cycles] [--profile] [--out FILE]
 
+--baseline-build DIR adds texrender from another build (without --threads) to every round:
+a change and the build before it, interleaved. --waits records per render the seconds
+texrender's threads were runnable but waiting for a CPU (/proc/PID/task/*/schedstat).
+
 --threads 0 is texrender without --threads (every core). Results: bench/results/threads.json;
 bench/threads.md reports them (`python3 bench/threads.py --report [FILE]` prints its tables).
 """
@@ -117,16 +121,43 @@ def texrender(tools, scene, textures, size, spp, threads, name, profile=False):
     return r
 
 
-def texrender_cpu(tools, scene, textures, size, spp, threads, name):
-    """texrender() with its CPU seconds (wait4: user + sys of the process)."""
+def schedstat(pid, last):
+    """Reads /proc/PID/task/*/schedstat into last[tid] = (seconds on a CPU, seconds runnable
+    but waiting for one): the scheduler's own accounting (Documentation/scheduler/sched-stats)."""
+    try:
+        tids = os.listdir("/proc/%d/task" % pid)
+    except OSError:
+        return
+    for tid in tids:
+        try:
+            with open("/proc/%d/task/%s/schedstat" % (pid, tid)) as f:
+                run, wait = f.read().split()[:2]
+        except (OSError, ValueError):
+            continue
+        last[tid] = (int(run) / 1e9, int(wait) / 1e9)
+
+
+def texrender_cpu(tools, scene, textures, size, spp, threads, name, waits=False):
+    """texrender() with its CPU seconds (wait4: user + sys of the process). waits: also the
+    seconds its threads were runnable but not running (schedstat, read every 5 ms: a thread's
+    last 5 ms before it ends are missed)."""
     out = os.path.join(tools.work, name)
     cmd = [tools.texrender, scene, "--textures", textures, "-o", out + ".png", "--stats",
            out + ".json", "--quiet", "--cache-dir", tools.cache, "--size", size, "--spp",
            str(spp)] + (["--threads", str(threads)] if threads else [])
     t0 = time.perf_counter()
     p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    last = {}
+    status = ru = None
+    while waits:
+        pid, status, ru = os.wait4(p.pid, os.WNOHANG)
+        if pid:
+            break
+        schedstat(p.pid, last)
+        time.sleep(0.005)
     err = p.stderr.read()
-    _, status, ru = os.wait4(p.pid, 0)
+    if ru is None:
+        _, status, ru = os.wait4(p.pid, 0)
     p.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - t0
     if p.returncode != 0:
@@ -139,7 +170,8 @@ def texrender_cpu(tools, scene, textures, size, spp, threads, name):
     # hand-offs (a pool's workers woken, the host thread woken when they finish).
     return {"frame": stats["renderSeconds"], "total": stats["totalSeconds"], "wall": wall,
             "cpu": ru.ru_utime + ru.ru_stime, "threads": stats["threads"],
-            "kernelSeconds": stats["kernelSeconds"]}
+            "kernelSeconds": stats["kernelSeconds"],
+            **({"runQueueWait": sum(w for _, w in last.values())} if waits else {})}
 
 
 def runnable(pid):
@@ -180,6 +212,10 @@ def measure(args, tools, save):
     scene, textures = inputs(tools)
     threads = [int(t) for t in args.threads.split(",")]
     renderers = ["texrender-%s" % (t or "default") for t in threads]
+    builds = {r: tools for r in renderers}
+    if args.baseline_build:
+        renderers.append("texrender-baseline")
+        builds["texrender-baseline"] = texture_speed.bench_tools(args.baseline_build, tools.work)
     cyc = blend = None
     fixed = []
     w, h = (int(x) for x in args.size.split("x"))
@@ -192,7 +228,8 @@ def measure(args, tools, save):
             fixed.append(cyc.call(op="render", blend=blend, size=[16, 16], spp=1)["seconds"])
     # Kernels into the cache, at the measured spp: PoCL compiles a second work-group function
     # for launches of 65536 work-items or more (ClContext.h), which 1 spp at 256x256 misses.
-    texrender(tools, scene, textures, args.size, args.spp, 0, "warm")
+    for b in {id(t): t for t in builds.values()}.values():
+        texrender(b, scene, textures, args.size, args.spp, 0, "warm")
     loads = args.loads.split(",")
     configs = [(l, r) for l in loads for r in renderers]
     runs = {"%s/%s" % c: [] for c in configs}
@@ -212,8 +249,9 @@ def measure(args, tools, save):
                     sample = {"raw": s["seconds"], "frame": s["seconds"] - common.median(fixed)}
                 else:
                     t = r.split("-")[1]
-                    sample = texrender_cpu(tools, scene, textures, args.size, args.spp,
-                                           0 if t == "default" else int(t), "r")
+                    sample = texrender_cpu(builds[r], scene, textures, args.size, args.spp,
+                                           0 if t in ("default", "baseline") else int(t), "r",
+                                           waits=args.waits)
             finally:
                 sample_stress = st.stop()
             sample.update({"round": rnd, "load1Before": before[0],
@@ -306,6 +344,18 @@ def report(data):
             l, med([s["stressCpu"] for s in v]), "%.2f" % med(t) if t else "-",
             min(s["load1Before"] for s in v), max(s["load1Before"] for s in v),
             med([s["load1Before"] for s in v])))
+    if any("runQueueWait" in s for v in runs.values() for s in v):
+        lines.append("")
+        lines.append("| renderer | " + " | ".join(
+            "%s: run-queue wait s, median" % l for l in loads) + " |")
+        lines.append("|---" * (1 + len(loads)) + "|")
+        for r in renderers:
+            cells = []
+            for l in loads:
+                w = [s["runQueueWait"] for s in runs.get("%s/%s" % (l, r), [])
+                     if "runQueueWait" in s]
+                cells.append("%.2f" % med(w) if w else "-")
+            lines.append("| %s | %s |" % (r, " | ".join(cells)))
     prof = data.get("profile")
     if prof:
         lines.append("")
@@ -337,6 +387,11 @@ def main():
     ap.add_argument("--cycles", action="store_true", help="Cycles (bpy) under the same loads")
     ap.add_argument("--blend", help="the rust-all .blend (default: made by make_scene.py)")
     ap.add_argument("--profile", action="store_true")
+    ap.add_argument("--baseline-build",
+                    help="another build folder (bin/texrender), rendered as texrender-baseline "
+                         "(without --threads) in every round beside this build's")
+    ap.add_argument("--waits", action="store_true",
+                    help="record texrender's run-queue wait per render (schedstat)")
     ap.add_argument("--autogroup-check", action="store_true",
                     help="only: how much CPU a niced busy loop takes from one of this session, "
                          "in this session, under setsid, and with its autogroup niced "
