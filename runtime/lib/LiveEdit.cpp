@@ -176,6 +176,21 @@ std::optional<texcc::graph::Edit> typedEdit(const Edit &E, texcc::graph::Diagnos
   return T;
 }
 
+/// Whether E changes the wiring of G (a rewiring, a new value of a baked argument or of a node,
+/// attribute or image input, or a set to {"attr": ...} or {"node": ...}).
+bool changesWiring(const texcc::graph::Graph &G, const texcc::graph::Edit &E) {
+  using Kind = texcc::graph::ArgValue::Kind;
+  const texcc::graph::Node *N = G.findNode(E.Node);
+  const texcc::graph::ArgValue *Was = nullptr;
+  if (N)
+    for (const auto &[Name, V] : N->Args)
+      if (Name == E.Arg)
+        Was = &V;
+  const bool WasWired = Was && (Was->Bake || !texcc::graph::isConstant(*Was));
+  return E.K == texcc::graph::Edit::Kind::Rewire || WasWired || E.Value.K == Kind::NodeRef ||
+         E.Value.K == Kind::AttrRef;
+}
+
 } // namespace
 
 texcc::graph::Edit graphEdit(const Edit &E) {
@@ -236,49 +251,46 @@ LiveEditor::makeEditor(texcc::graph::Graph G) const {
   return E;
 }
 
-std::optional<EditProblem> LiveEditor::check(const std::vector<Edit> &Edits) const {
-  std::unique_ptr<texcc::graph::GraphEditor> Scratch = makeEditor(graph());
+std::optional<EditProblem> LiveEditor::check(std::vector<Edit> Edits,
+                                             std::vector<CheckedEdit> &Checked) const {
+  Checked.clear();
+  Checked.reserve(Edits.size()); // Last points into it
+  const texcc::graph::CheckedEdit *Last = nullptr; // the edit the next is checked after
   for (size_t I = 0; I < Edits.size(); ++I) {
-    const Edit &E = Edits[I];
-    if (E.K == Edit::Kind::Wait)
-      continue;
-    texcc::graph::DiagnosticSink Diags;
-    std::optional<texcc::graph::Edit> T = typedEdit(E, Diags);
-    if (T && Scratch->apply(*T, Diags))
-      continue;
-    // Point at the part at fault: the node, else the parameter, else the value.
-    const texcc::graph::Node *N = Scratch->graph().findNode(E.Node);
-    unsigned Col = E.ValueCol;
-    if (!N) {
-      Col = E.NodeCol;
-    } else {
-      const auto &Sigs = Scratch->compiled().Signatures;
-      auto Sig = Sigs.find(N->Fn);
-      if (Sig != Sigs.end() &&
-          std::none_of(Sig->second.Params.begin(), Sig->second.Params.end(),
-                       [&](const texcc::graph::Param &P) { return P.Name == E.Arg; }))
-        Col = E.ArgCol;
+    CheckedEdit C(std::move(Edits[I]));
+    if (C.Line.K != Edit::Kind::Wait) {
+      const texcc::graph::Graph &Base = Last ? Last->graph() : graph();
+      texcc::graph::DiagnosticSink Diags;
+      std::optional<texcc::graph::Edit> T = typedEdit(C.Line, Diags);
+      if (T) {
+        C.Wiring = changesWiring(Base, *T);
+        C.Checked = Last ? Editor->check(*Last, *T, Diags) : Editor->check(*T, Diags);
+      }
+      if (!C.Checked)
+        return EditProblem{I, columnAtFault(Base, C.Line), firstError(Diags)};
     }
-    return EditProblem{I, Col, firstError(Diags)};
+    Checked.push_back(std::move(C));
+    if (Checked.back().Checked)
+      Last = &*Checked.back().Checked;
   }
   return std::nullopt;
 }
 
-LiveEditor::~LiveEditor() = default;
-
-bool LiveEditor::changesWiring(const texcc::graph::Edit &E) const {
-  using Kind = texcc::graph::ArgValue::Kind;
-  const texcc::graph::Node *N = graph().findNode(E.Node);
-  const texcc::graph::ArgValue *Was = nullptr;
-  if (N)
-    for (const auto &[Name, V] : N->Args)
-      if (Name == E.Arg)
-        Was = &V;
-  const bool WasWired = Was && (Was->Bake || !texcc::graph::isConstant(*Was));
-  // A set to {"attr": ...} or {"node": ...} is a wiring too.
-  return E.K == texcc::graph::Edit::Kind::Rewire || WasWired || E.Value.K == Kind::NodeRef ||
-         E.Value.K == Kind::AttrRef;
+unsigned LiveEditor::columnAtFault(const texcc::graph::Graph &Base, const Edit &E) const {
+  const texcc::graph::Node *N = Base.findNode(E.Node);
+  if (!N)
+    return E.NodeCol;
+  // Every function a node of the graph names has its signature in the compiled graph.
+  const auto &Sigs = Editor->compiled().Signatures;
+  auto Sig = Sigs.find(N->Fn);
+  if (Sig != Sigs.end() &&
+      std::none_of(Sig->second.Params.begin(), Sig->second.Params.end(),
+                   [&](const texcc::graph::Param &P) { return P.Name == E.Arg; }))
+    return E.ArgCol;
+  return E.ValueCol;
 }
+
+LiveEditor::~LiveEditor() = default;
 
 texcc::graph::Graph LiveEditor::absoluteGraph() const {
   fs::path GraphDir = fs::path(Lay.GraphPath).parent_path();
@@ -384,7 +396,11 @@ void LiveEditor::adopt(const Layout &New, const Regeneration &Files) {
   texcc::graph::Graph G = graph();
   Lay = New;
   Lay.GraphPath = Original;
+  std::unique_ptr<texcc::graph::GraphEditor> Old = std::move(Editor);
   initEditor(std::move(G));
+  // Edits checked against the old editor (texrender's edit script) apply to the new one
+  // without being validated again: the same graph, the same sources' signatures.
+  Editor->continueFrom(*Old);
   PreviousFolder = std::move(KernelFolder);
   KernelFolder = Files.folder();
 }
@@ -470,10 +486,26 @@ EditResult LiveEditor::apply(const Edit &E, Renderer &R) {
   return apply(graphEdit(E), R, E.Text);
 }
 
+EditResult LiveEditor::apply(CheckedEdit C, Renderer &R) {
+  if (!C.Checked)
+    return apply(C.Line, R); // a wait
+  double T0 = now();
+  Pending P;
+  bool Applied = texcc::whileAllocating("encoding the graph for a live edit",
+                                        [&] { return Editor->apply(std::move(*C.Checked)); });
+  if (!Applied) {
+    // Checked against another graph than the one rendered (the edits applied out of the order
+    // they were checked in, or a kernel regenerated from changed sources): validated here.
+    return apply(C.Checked->edit(), R, C.Line.Text);
+  }
+  P.add(C.Wiring, *Editor);
+  return carryOut(P, R, T0);
+}
+
 EditResult LiveEditor::apply(const texcc::graph::Edit &E, Renderer &R, const std::string &Text) {
   double T0 = now();
   Pending P;
-  const bool Wiring = changesWiring(E);
+  const bool Wiring = changesWiring(graph(), E);
   texcc::graph::DiagnosticSink Diags;
   // The editor validates and applies it, or leaves everything as it was.
   if (!texcc::whileAllocating("encoding the graph for a live edit",
@@ -495,7 +527,7 @@ EditResult LiveEditor::apply(const std::vector<texcc::graph::Edit> &Edits, Rende
     Next = std::make_unique<texcc::graph::GraphEditor>(*Editor);
     std::swap(Next, Editor);
     for (const texcc::graph::Edit &E : Edits) {
-      const bool Wiring = changesWiring(E);
+      const bool Wiring = changesWiring(graph(), E);
       texcc::graph::DiagnosticSink Diags;
       if (!Editor->apply(E, Diags)) {
         std::swap(Next, Editor);

@@ -4,7 +4,9 @@
 // file order) and the same text; numbers that are not exactly representable in decimal
 // round-trip bit for bit; a baked literal is written as {"value": v, "bake": true}.
 #include "texrender/LiveEdit.h"
+#include "texrender/Renderer.h"
 
+#include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace texrender;
@@ -130,4 +133,79 @@ TEST(LiveEditGraph, NumbersBakesAndReferences) {
   // Materials stay in file order ("z" before "a"), not sorted.
   EXPECT_EQ(J["materials"].begin().key(), "z");
   expectSameGraph(G, parse("again.json", J.dump()));
+}
+
+namespace {
+
+/// NODE.ARG's value in G.
+const graph::ArgValue &argument(const graph::Graph &G, const std::string &Node,
+                                const std::string &Arg) {
+  for (const auto &[Name, V] : G.findNode(Node)->Args)
+    if (Name == Arg)
+      return V;
+  ADD_FAILURE() << Node << "." << Arg;
+  return G.Nodes.front().Args.front().second;
+}
+
+/// A 4x4 film of one quad with the material "tex", for a renderer of Lay.
+Scene quadScene(const fs::path &Dir) {
+  Scene S;
+  S.Path = (Dir / "scene.json").string();
+  S.Cam.Position = {0.0f, 0.0f, 3.0f};
+  S.Cam.Target = {0.0f, 0.0f, 0.0f};
+  S.Cam.FovDegrees = 45;
+  S.Render.Width = S.Render.Height = 4;
+  S.Render.Spp = 1;
+  std::ofstream(Dir / "quad.obj") << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+  MeshInstance M;
+  M.ObjPath = (Dir / "quad.obj").string();
+  M.Material = "tex";
+  M.Transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  M.JsonPath = "/meshes/0";
+  S.Meshes.push_back(M);
+  return S;
+}
+
+} // namespace
+
+// texrender's --set and edit script: LiveEditor::check validates every edit once, each against
+// the graph the edits before it leave, and applies none; the frames then apply the checked
+// edits without validating them again (the check on a scratch editor and the apply used to
+// validate each edit twice).
+TEST(LiveEditor, CheckedEditsAreValidatedOnce) {
+  Layout L = loadLayout(std::string(TEXRENDER_SOURCE_DIR) + "/testsuite/Inputs/runtime/const-tex");
+  LiveEditor Editor(L);
+  std::vector<CheckedEdit> Checked, None;
+  std::optional<EditProblem> P =
+      Editor.check({parseEdit("set t.gain=0.5"), parseEdit("t.gian=2")}, None);
+  ASSERT_TRUE(P);
+  EXPECT_EQ(P->Index, 1u);
+  EXPECT_EQ(P->Col, 3u); // the parameter
+  EXPECT_NE(P->Message.find("unknown argument 'gian'"), std::string::npos) << P->Message;
+
+  const uint64_t Before = graph::GraphEditor::validations();
+  ASSERT_FALSE(Editor.check({parseEdit("set t.gain=0.5"), parseEdit("wait"),
+                             parseEdit("t.color=[1, 0, 0]"), parseEdit("t.gain=0.25")},
+                            Checked));
+  EXPECT_EQ(graph::GraphEditor::validations() - Before, 3u);
+  ASSERT_EQ(Checked.size(), 4u);
+  EXPECT_EQ(Checked[2].line().Text, "t.color=[1, 0, 0]");
+  EXPECT_EQ(argument(Editor.graph(), "t", "gain").Numbers, std::vector<double>{1.0});
+
+  if (listDevices().empty())
+    GTEST_SKIP() << "no OpenCL device: applying the checked edits needs a renderer";
+  fs::path Dir = fs::temp_directory_path() / ("texrender-checked-" + std::to_string(::getpid()));
+  fs::create_directories(Dir);
+  RendererOptions O;
+  O.CacheDir = (fs::temp_directory_path() / "texrender-test-cache").string();
+  if (!std::getenv("TEXRENDER_KERNELS"))
+    O.KernelDir = TEXRENDER_KERNEL_DIR;
+  Renderer R(quadScene(Dir), L, O);
+  const uint64_t Checks = graph::GraphEditor::validations();
+  for (CheckedEdit &C : Checked)
+    EXPECT_FALSE(Editor.apply(std::move(C), R).Rebuilt);
+  EXPECT_EQ(graph::GraphEditor::validations(), Checks);
+  EXPECT_EQ(argument(Editor.graph(), "t", "gain").Numbers, std::vector<double>{0.25});
+  EXPECT_EQ(argument(Editor.graph(), "t", "color").Numbers, (std::vector<double>{1, 0, 0}));
+  fs::remove_all(Dir);
 }

@@ -16,6 +16,7 @@
 #include "texrender/Renderer.h"
 
 #include "texcc/Graph/Diff.h"
+#include "texcc/Graph/Edit.h"
 #include "texcc/Graph/Graph.h"
 
 #include <atomic>
@@ -27,10 +28,6 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-
-namespace texcc::graph {
-class GraphEditor;
-}
 
 namespace texrender {
 
@@ -56,6 +53,23 @@ struct EditProblem {
   size_t Index = 0;
   unsigned Col = 1;
   std::string Message;
+};
+
+/// An edit line that LiveEditor::check validated (texrender's --set and edit-script lines, all
+/// checked before the first frame): a wait, or a set or rewire carrying the graph library's
+/// checked edit, which LiveEditor::apply applies without validating it again. Only check()
+/// makes one.
+class CheckedEdit {
+public:
+  /// The line as parsed (its text for the frame record and the errors).
+  const Edit &line() const { return Line; }
+
+private:
+  friend class LiveEditor;
+  explicit CheckedEdit(Edit L) : Line(std::move(L)) {}
+  Edit Line;
+  std::optional<texcc::graph::CheckedEdit> Checked; // none: a wait
+  bool Wiring = false; // whether it changes the wiring of the graph it was checked against
 };
 
 /// Parses "NODE.ARG=VALUE", "set NODE.ARG=VALUE", "rewire NODE.ARG=SOURCE" or "wait".
@@ -168,6 +182,10 @@ public:
   /// onto an unknown node or into a cycle) changes nothing. Text: the edit as the user wrote
   /// it, for the error ("" = editText(E)). Throws Error ("edit 'TEXT': why").
   EditResult apply(const texcc::graph::Edit &E, Renderer &R, const std::string &Text = "");
+  /// Applies C, checked by check(), to the graph and to R without validating it again (a wait
+  /// waits for the background build). The checked edits apply in the order check() was given
+  /// them. Throws Error ("edit 'TEXT': why") when the edit cannot be carried out.
+  EditResult apply(CheckedEdit C, Renderer &R);
   /// Applies Edits (a saved graph.json's diff) together: each validated once, in order, and
   /// all refused if one is (nothing changes); then one upload, regeneration or shape switch.
   EditResult apply(const std::vector<texcc::graph::Edit> &Edits, Renderer &R);
@@ -180,10 +198,12 @@ public:
   /// equal to graph() where it did not change.
   void markCommandLineBakes(texcc::graph::Graph &G) const;
 
-  /// Applies Edits, in order, to a scratch copy of the graph with the graph library's
-  /// validation: nothing is uploaded, built or rendered. Returns the first edit that fails, if
-  /// any. (texrender's --set and edit script are checked whole before the first frame.)
-  std::optional<EditProblem> check(const std::vector<Edit> &Edits) const;
+  /// Validates Edits, in order, each against the graph as the edits before it leave it (the
+  /// graph library's GraphEditor::check): nothing is applied, uploaded, built or rendered.
+  /// Returns the first edit that is refused, if any; else Checked holds every edit, checked,
+  /// for apply(CheckedEdit). (texrender's --set and edit script are checked whole before the
+  /// first frame.)
+  std::optional<EditProblem> check(std::vector<Edit> Edits, std::vector<CheckedEdit> &Checked) const;
 
 private:
   /// The kernel-side facts of the edits applied to the graph editor since the last plan.
@@ -192,9 +212,9 @@ private:
          NeedsAttributeCase = false, NeedsFunction = false;
     void add(bool Wiring, const texcc::graph::GraphEditor &Ed);
   };
-  /// Whether E changes the wiring of graph() (a rewiring, a new value of a baked argument or
-  /// of a node, attribute or image input, or a set to {"attr": ...} or {"node": ...}).
-  bool changesWiring(const texcc::graph::Edit &E) const;
+  /// The column of the part of E at fault in a refusal against Base: the node, else the
+  /// parameter, else the value.
+  unsigned columnAtFault(const texcc::graph::Graph &Base, const Edit &E) const;
   /// Plans what the edited graph needs (planEdit, with the layout's capabilities) and does it.
   EditResult carryOut(const Pending &P, Renderer &R, double T0);
   EditAction plan(const Pending &P, Renderer &R);

@@ -2,11 +2,14 @@
 // else recompiles the graph with the kernel's function ids pinned.
 
 #include "texcc/Graph/Edit.h"
+#include "texcc/Graph/Bump.h"
 #include "texcc/Graph/Passes.h"
+#include "texcc/OutOfMemory.h"
 
 #include "Json.h"
 
 #include <algorithm>
+#include <atomic>
 
 namespace texcc::graph {
 
@@ -39,10 +42,55 @@ ArgValue *argumentOf(Node &N, const std::string &Arg) {
   return &N.Args.back().second;
 }
 
+std::atomic<uint64_t> States{0};      // the last graph state numbered
+std::atomic<uint64_t> Validations{0}; // GraphEditor::check's edits
+
+uint64_t newState() { return ++States; }
+
+/// Whether A and B validate edits of G alike: the same return and parameters (names and types)
+/// for every function a node of G names (edits never change a node's function).
+bool validateAlike(const Graph &G, const SignatureMap &A, const SignatureMap &B) {
+  for (const Node &N : G.Nodes) {
+    auto I = A.find(N.Fn), J = B.find(N.Fn);
+    if ((I == A.end()) != (J == B.end()))
+      return false;
+    if (I == A.end())
+      continue;
+    const FunctionSignature &X = I->second, &Y = J->second;
+    if (X.Return != Y.Return || X.Params.size() != Y.Params.size())
+      return false;
+    for (size_t K = 0; K < X.Params.size(); ++K)
+      if (X.Params[K].Name != Y.Params[K].Name || !(X.Params[K].Type == Y.Params[K].Type))
+        return false;
+  }
+  return true;
+}
+
 } // namespace
 
+Edit CheckedEdit::edit() const {
+  Edit E;
+  E.K = K;
+  E.Node = NodeId;
+  E.Arg = Arg;
+  if (const Node *N = Edited.findNode(NodeId))
+    for (const auto &[Name, V] : N->Args)
+      if (Name == Arg)
+        E.Value = V;
+  return E;
+}
+
 GraphEditor::GraphEditor(Graph G, SignatureMap Sigs, CompileOptions Opts)
-    : G(std::move(G)), Sigs(std::move(Sigs)), Opts(std::move(Opts)) {}
+    : G(std::move(G)), Sigs(std::move(Sigs)), Opts(std::move(Opts)), State(newState()) {}
+
+uint64_t GraphEditor::validations() { return Validations.load(); }
+
+bool GraphEditor::continueFrom(const GraphEditor &Old) {
+  if (!sameGraph(G, Old.G) || !validateAlike(G, Sigs, Old.Sigs))
+    return false;
+  State = Old.State;
+  return true;
+}
 
 bool GraphEditor::init(DiagnosticSink &Diags) {
   std::optional<CompiledGraph> C = compileGraph(G, Sigs, Opts, Diags);
@@ -63,11 +111,8 @@ bool GraphEditor::init(DiagnosticSink &Diags) {
   return true;
 }
 
-bool GraphEditor::recompile(DiagnosticSink &Diags) {
-  std::optional<CompiledGraph> C = compileGraph(G, Sigs, Opts, Diags);
-  if (!C)
-    return false;
-  CG = std::move(*C);
+void GraphEditor::recompile(CompiledGraph Resolved) {
+  CG = compileResolved(std::move(Resolved), Sigs, Opts);
   NeedsCode = CG.MaxOutputs > KernelMaxOutputs;
   NeedsFunction = false;
   for (const CompiledNode &N : CG.Nodes) {
@@ -81,12 +126,12 @@ bool GraphEditor::recompile(DiagnosticSink &Diags) {
       CG.GraphArgumentAttributes.begin(), CG.GraphArgumentAttributes.end());
   NeedsCode |= NeedsAttributeCase || NeedsFunction;
   NeedsRebuild = NeedsCode || CG.StackSlots > KernelStackSlots;
-  return true;
 }
 
 /// The node NodeId of G, or nullptr after an error naming the closest id.
-static Node *findNodeOrSay(Graph &G, const std::string &NodeId, DiagnosticSink &Diags) {
-  if (Node *N = G.findNode(NodeId))
+static const Node *findNodeOrSay(const Graph &G, const std::string &NodeId,
+                                 DiagnosticSink &Diags) {
+  if (const Node *N = G.findNode(NodeId))
     return N;
   std::vector<std::string> Ids;
   for (const Node &Other : G.Nodes)
@@ -105,95 +150,127 @@ bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg,
   return V && setArgument(NodeId, Arg, std::move(*V), Diags);
 }
 
-bool GraphEditor::apply(const Edit &E, DiagnosticSink &Diags) {
-  if (E.K == Edit::Kind::Rewire)
-    return rewire(E.Node, E.Arg, E.Value.Ref, Diags);
-  return setArgument(E.Node, E.Arg, E.Value, Diags);
-}
-
 bool GraphEditor::setArgument(const std::string &NodeId, const std::string &Arg, ArgValue V,
                               DiagnosticSink &Diags) {
-  Node *N = findNodeOrSay(G, NodeId, Diags);
-  if (!N)
-    return false;
-  Graph Edited = G;
-  ArgValue *Slot = argumentOf(*Edited.findNode(NodeId), Arg);
-  V.KeyLoc = Slot->KeyLoc;
-  V.Bake |= Slot->Bake; // a new value of a baked argument stays baked
-  V.JsonPath = N->JsonPath + "/args/" + Arg;
-  *Slot = std::move(V);
-
-  // Validate the edited graph; keep only its errors (warnings were given at compile time).
-  DiagnosticSink Check;
-  std::optional<CompiledGraph> Resolved = resolveGraph(Edited, Sigs, Opts, Check);
-  forward(Check, Diags, /*ErrorsOnly=*/true);
-  if (!Resolved)
-    return false;
-
-  // The fast path: a live, unmerged node whose constant keeps its shape is patched in place.
-  int Live = CG.findNode(NodeId);
-  size_t GraphIndex = static_cast<size_t>(N - G.Nodes.data());
-  if (Live >= 0 && CG.Nodes[Live].Id == NodeId && CG.Nodes[Live].MergedIds.empty()) {
-    CompiledNode &CN = CG.Nodes[Live];
-    const std::vector<CompiledArg> &NewArgs = Resolved->Nodes[GraphIndex].Args;
-    for (size_t I = 0; I < CN.Args.size() && I < NewArgs.size(); ++I) {
-      CompiledArg &Old = CN.Args[I];
-      const CompiledArg &New = NewArgs[I];
-      if (Old.Name != Arg)
-        continue;
-      if (Old.Src != CompiledArg::Source::Constant || New.Src != Old.Src ||
-          New.Values.size() != Old.Values.size() || New.ArrayCount != Old.ArrayCount)
-        break;
-      Old.Values = New.Values;
-      encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, CN.RecordOffset), Old);
-      for (uint32_t Copy : CN.RecordCopies)
-        encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
-      for (CompiledNode &Moved : CG.Nodes) // bump's copies of the node (Bump.h) follow it
-        if (Moved.OffsetOf == NodeId && I < Moved.Args.size()) {
-          Moved.Args[I].Values = New.Values;
-          encodeArgumentValue(CG.ArgsBin, parameterBlockStart(Moved, Moved.RecordOffset), Old);
-          for (uint32_t Copy : Moved.RecordCopies)
-            encodeArgumentValue(CG.ArgsBin, parameterBlockStart(Moved, Copy), Old);
-        }
-      if (!CG.Quickened.empty() && argumentSource(Old).K == ArgumentSource::Kind::IntValue) {
-        // An int value is part of a quickened pattern: the instruction now runs the entry of
-        // the kernel's table (pinned by init) for its new value, or its plain case (a new
-        // opcode word).
-        applyQuickened(CG, Opts.Quickened, nullptr);
-        encodeArgsBin(CG);
-      }
-      G = std::move(Edited);
-      NeedsRebuild = NeedsCode = NeedsAttributeCase = NeedsFunction = false;
-      return true;
-    }
-  }
-  Graph Saved = std::move(G);
-  G = std::move(Edited);
-  if (recompile(Diags))
-    return true;
-  G = std::move(Saved);
-  return false;
+  Edit E;
+  E.Node = NodeId;
+  E.Arg = Arg;
+  E.Value = std::move(V);
+  return apply(E, Diags);
 }
 
 bool GraphEditor::rewire(const std::string &NodeId, const std::string &Arg,
                          const std::string &SourceNode, DiagnosticSink &Diags) {
-  if (!G.findNode(NodeId)) {
-    Diags.error({}, "unknown node '" + NodeId + "'");
-    return false;
+  return apply(rewireEdit(NodeId, Arg, SourceNode), Diags);
+}
+
+bool GraphEditor::apply(const Edit &E, DiagnosticSink &Diags) {
+  std::optional<CheckedEdit> C = check(E, Diags);
+  return C && apply(std::move(*C));
+}
+
+std::optional<CheckedEdit> GraphEditor::check(const Edit &E, DiagnosticSink &Diags) const {
+  return checkAgainst(G, State, E, Diags);
+}
+
+std::optional<CheckedEdit> GraphEditor::check(const CheckedEdit &After, const Edit &E,
+                                              DiagnosticSink &Diags) const {
+  return checkAgainst(After.Edited, After.Result, E, Diags);
+}
+
+std::optional<CheckedEdit> GraphEditor::checkAgainst(const Graph &Base, uint64_t BaseState,
+                                                     const Edit &E, DiagnosticSink &Diags) const {
+  ++Validations;
+  const bool Rewire = E.K == Edit::Kind::Rewire;
+  const Node *N = Rewire ? Base.findNode(E.Node) : findNodeOrSay(Base, E.Node, Diags);
+  if (!N) {
+    if (Rewire)
+      Diags.error({}, "unknown node '" + E.Node + "'");
+    return std::nullopt;
   }
-  Graph Saved = G;
-  Node *N = G.findNode(NodeId);
-  ArgValue *Slot = argumentOf(*N, Arg);
-  ArgValue V;
-  V.K = ArgValue::Kind::NodeRef;
-  V.Ref = SourceNode;
-  V.Loc = {NodeId + "." + Arg, 0, 0};
+  CheckedEdit C;
+  C.K = E.K;
+  C.NodeId = E.Node;
+  C.Arg = E.Arg;
+  C.Base = BaseState;
+  C.Edited = Base;
+  ArgValue *Slot = argumentOf(*C.Edited.findNode(E.Node), E.Arg);
+  ArgValue V = E.Value;
+  if (Rewire) {
+    V = ArgValue();
+    V.K = ArgValue::Kind::NodeRef;
+    V.Ref = E.Value.Ref;
+    V.Loc = {E.Node + "." + E.Arg, 0, 0};
+  } else {
+    V.Bake |= Slot->Bake; // a new value of a baked argument stays baked
+  }
   V.KeyLoc = Slot->KeyLoc;
-  V.JsonPath = N->JsonPath + "/args/" + Arg;
+  V.JsonPath = N->JsonPath + "/args/" + E.Arg;
   *Slot = std::move(V);
-  if (recompile(Diags))
+  // The edited graph resolved as compileGraph resolves it; only its errors are kept (its
+  // warnings were given when the graph was compiled).
+  DiagnosticSink Check;
+  std::optional<CompiledGraph> Resolved =
+      whileAllocating("building the node and material tables", [&] {
+        return resolveWithBump(C.Edited, withBuiltinSignatures(Sigs), Opts, Check);
+      });
+  forward(Check, Diags, /*ErrorsOnly=*/true);
+  if (!Resolved)
+    return std::nullopt;
+  C.Resolved = std::move(*Resolved);
+  C.Result = newState();
+  return C;
+}
+
+bool GraphEditor::apply(CheckedEdit &&C) {
+  if (C.Base != State)
+    return false;
+  State = C.Result;
+  const bool Patched = C.K == Edit::Kind::Set && patchInPlace(C);
+  G = std::move(C.Edited);
+  if (Patched)
+    NeedsRebuild = NeedsCode = NeedsAttributeCase = NeedsFunction = false;
+  else
+    recompile(std::move(C.Resolved));
+  return true;
+}
+
+bool GraphEditor::patchInPlace(const CheckedEdit &C) {
+  int Live = CG.findNode(C.NodeId);
+  if (Live < 0 || CG.Nodes[Live].Id != C.NodeId || !CG.Nodes[Live].MergedIds.empty())
+    return false;
+  // Resolved's nodes are the edited graph's, in its order (bump's copies after them).
+  size_t GraphIndex = static_cast<size_t>(C.Edited.findNode(C.NodeId) - C.Edited.Nodes.data());
+  CompiledNode &CN = CG.Nodes[Live];
+  const std::vector<CompiledArg> &NewArgs = C.Resolved.Nodes[GraphIndex].Args;
+  for (size_t I = 0; I < CN.Args.size() && I < NewArgs.size(); ++I) {
+    CompiledArg &Old = CN.Args[I];
+    const CompiledArg &New = NewArgs[I];
+    if (Old.Name != C.Arg)
+      continue;
+    if (Old.Src != CompiledArg::Source::Constant || New.Src != Old.Src ||
+        New.Values.size() != Old.Values.size() || New.ArrayCount != Old.ArrayCount)
+      return false;
+    Old.Values = New.Values;
+    encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, CN.RecordOffset), Old);
+    for (uint32_t Copy : CN.RecordCopies)
+      encodeArgumentValue(CG.ArgsBin, parameterBlockStart(CN, Copy), Old);
+    for (CompiledNode &Moved : CG.Nodes) // bump's copies of the node (Bump.h) follow it
+      if (Moved.OffsetOf == C.NodeId && I < Moved.Args.size()) {
+        Moved.Args[I].Values = New.Values;
+        encodeArgumentValue(CG.ArgsBin, parameterBlockStart(Moved, Moved.RecordOffset), Old);
+        for (uint32_t Copy : Moved.RecordCopies)
+          encodeArgumentValue(CG.ArgsBin, parameterBlockStart(Moved, Copy), Old);
+      }
+    if (!CG.Quickened.empty() && argumentSource(Old).K == ArgumentSource::Kind::IntValue) {
+      // An int value is part of a quickened pattern: the instruction now runs the entry of
+      // the kernel's table (pinned by init) for its new value, or its plain case (a new
+      // opcode word).
+      applyQuickened(CG, Opts.Quickened, nullptr);
+      encodeArgsBin(CG);
+    }
     return true;
-  G = std::move(Saved);
+  }
   return false;
 }
 

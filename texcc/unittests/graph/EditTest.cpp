@@ -266,3 +266,87 @@ TEST(GraphEditor, FunctionIdsStayPinned) {
 }
 
 } // namespace
+
+// An edit is validated once (GraphEditor::check): a sequence checked whole, each edit against
+// the one before, then applied in order, is not validated again, and ends where the same edits
+// applied one by one end.
+TEST(GraphEditor, CheckedEditsApplyWithoutBeingValidatedAgain) {
+  DiagnosticSink D;
+  auto set = [&](const std::string &Node, const std::string &Arg, const std::string &Value) {
+    Edit E;
+    E.Node = Node;
+    E.Arg = Arg;
+    E.Value = *parseArgValue(Node + "." + Arg, Value, D);
+    return E;
+  };
+  const std::vector<Edit> Edits = {
+      set("n", "scale", "0.5"),  // args.bin patched in place
+      rewireEdit("m", "t", "n"), // recompiled
+      rewireEdit("s", "a", "x"),
+      rewireEdit("a", "x", "s"), // a cycle, unless checked after the edit before it
+      set("u", "x", "2")};       // a dead node
+
+  GraphEditor Checked = makeEditor(), OneByOne = makeEditor();
+  const uint64_t Before = GraphEditor::validations();
+  std::vector<CheckedEdit> Sequence;
+  for (const Edit &E : Edits) {
+    std::optional<CheckedEdit> C =
+        Sequence.empty() ? Checked.check(E, D) : Checked.check(Sequence.back(), E, D);
+    ASSERT_TRUE(C) << text(D);
+    Sequence.push_back(std::move(*C));
+  }
+  EXPECT_EQ(GraphEditor::validations() - Before, Edits.size());
+  EXPECT_TRUE(sameGraph(Checked.graph(), OneByOne.graph())); // checking changes nothing
+  DiagnosticSink Alone;
+  EXPECT_FALSE(Checked.check(Edits[3], Alone)); // against the graph as it is: the cycle
+  const uint64_t Checks = GraphEditor::validations();
+  for (CheckedEdit &C : Sequence)
+    ASSERT_TRUE(Checked.apply(std::move(C)));
+  EXPECT_EQ(GraphEditor::validations(), Checks);
+  for (const Edit &E : Edits)
+    ASSERT_TRUE(OneByOne.apply(E, D)) << text(D);
+  EXPECT_EQ(GraphEditor::validations() - Checks, Edits.size()); // apply(Edit): once each
+  EXPECT_TRUE(sameGraph(Checked.graph(), OneByOne.graph()));
+  EXPECT_EQ(Checked.compiled().ArgsBin, OneByOne.compiled().ArgsBin);
+  EXPECT_EQ(Checked.needsRebuild(), OneByOne.needsRebuild());
+}
+
+// A checked edit applies only to the state of the graph it was checked against: checked
+// against the initial graph, it is refused once another edit was applied, and nothing changes.
+TEST(GraphEditor, ACheckedEditAppliesOnlyToItsState) {
+  GraphEditor E = makeEditor();
+  DiagnosticSink D;
+  std::optional<CheckedEdit> A = E.check(rewireEdit("m", "t", "n"), D);
+  std::optional<CheckedEdit> B = E.check(rewireEdit("m", "t", "x"), D);
+  ASSERT_TRUE(A && B) << text(D);
+  ASSERT_TRUE(E.apply(std::move(*A)));
+  std::vector<uint8_t> Bin = E.compiled().ArgsBin;
+  EXPECT_FALSE(E.apply(std::move(*B)));
+  EXPECT_EQ(E.compiled().ArgsBin, Bin);
+  EXPECT_EQ(E.graph().findNode("m")->Args[2].second.Ref, "n");
+  EXPECT_EQ(editText(B->edit()), "rewire m.t=x"); // left whole by the refusal
+  // A refused check is an error and leaves nothing to apply.
+  EXPECT_FALSE(E.check(rewireEdit("a", "x", "s"), D));
+  EXPECT_NE(text(D).find("cycle in the node graph"), std::string::npos) << text(D);
+}
+
+// An editor over the same graph and signatures (a regenerated kernel) continues the state of
+// the one before it, so that the edits checked against that one apply; other signatures do not.
+TEST(GraphEditor, ContinueFromTheEditorBefore) {
+  GraphEditor Old = makeEditor();
+  DiagnosticSink D;
+  std::optional<CheckedEdit> C = Old.check(rewireEdit("m", "t", "n"), D);
+  ASSERT_TRUE(C) << text(D);
+  GraphEditor New(Old.graph(), stdSigs(), CompileOptions());
+  ASSERT_TRUE(New.init(D)) << text(D);
+  EXPECT_FALSE(New.apply(std::move(*C)));
+  SignatureMap Other = stdSigs();
+  Other.at("neg").Params[0].Name = "y";
+  GraphEditor Renamed(Old.graph(), Other, CompileOptions());
+  EXPECT_FALSE(Renamed.continueFrom(Old));
+  ASSERT_TRUE(New.continueFrom(Old));
+  const uint64_t Before = GraphEditor::validations();
+  EXPECT_TRUE(New.apply(std::move(*C)));
+  EXPECT_EQ(GraphEditor::validations(), Before);
+  EXPECT_EQ(argOf(New.compiled(), "m", "t").Src, CompiledArg::Source::Node);
+}

@@ -210,6 +210,12 @@ bool validateGraph(const Graph &G, const SignatureMap &Sigs, const CompileOption
 std::optional<CompiledGraph> compileGraph(const Graph &G, const SignatureMap &Sigs,
                                           const CompileOptions &Opts, DiagnosticSink &Diags);
 
+/// The passes and the encoding of compileGraph() on a graph its validation has already
+/// resolved (resolveWithBump(), Bump.h, with withBuiltinSignatures(Sigs)): nothing is
+/// validated again. The live editor applies a checked edit this way (GraphEditor, Edit.h).
+CompiledGraph compileResolved(CompiledGraph Resolved, const SignatureMap &Sigs,
+                              const CompileOptions &Opts);
+
 /// The shape of a material's program (shape mode): per instruction its function and, per
 /// argument, whether it is a constant (a baked one with its value), which earlier instruction
 /// or attribute it reads and whether it is broadcast; then which instructions are the outputs.
