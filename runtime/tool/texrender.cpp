@@ -275,7 +275,8 @@ std::string editStep(const std::string &Text) {
 }
 
 /// Editor.apply(E, R) as the step editStep (LiveEditor's own steps, such as "encoding the
-/// graph for a live edit", are named inside it). E: an Edit or a CheckedEdit.
+/// graph for a live edit", are named inside it). E: an Edit or a CheckedEdit; Text: its line's
+/// text, read before E is moved into the editor (no copy outside a step).
 template <typename EditT>
 EditResult applyEdit(EditT &&E, const std::string &Text, LiveEditor &Editor, Renderer &R) {
   const std::string Step = editStep(Text);
@@ -283,8 +284,8 @@ EditResult applyEdit(EditT &&E, const std::string &Text, LiveEditor &Editor, Ren
                                 [&] { return Editor.apply(std::forward<EditT>(E), R); });
 }
 
-/// Applies E (an Edit or a CheckedEdit, whose line is Text) to the renderer and renders the
-/// next frame (Image), counting its builds.
+/// Applies E (an Edit or a CheckedEdit, whose line's text is Text, read before E is moved) to
+/// the renderer and renders the next frame (Image), counting its builds.
 template <typename EditT>
 FrameRecord renderAfterEdit(EditT &&E, const std::string &Text, LiveEditor &Editor, Renderer &R,
                             BuildCounter &Builds, std::vector<float> &Image) {
@@ -553,8 +554,7 @@ int run(int Argc, char **Argv) try {
   std::vector<FrameRecord> Frames;
   FrameRecord First;
   for (CheckedEdit &E : Checked.Sets) {
-    const std::string Text = E.line().Text;
-    EditResult Res = applyEdit(std::move(E), Text, *Editor, R);
+    EditResult Res = applyEdit(std::move(E), E.line().Text, *Editor, R);
     First.EditSeconds += Res.Seconds;
     First.Rebuilt |= Res.Rebuilt;
   }
@@ -597,8 +597,8 @@ int run(int Argc, char **Argv) try {
   if (!Script.empty())
     writeImage(frameName(O.Output, 0), OutW, OutH, Image, View.get());
   for (size_t K = 0; K < Script.size() && !StopSignal.load(); ++K) {
-    const std::string Text = Script[K].line().Text;
-    Frames.push_back(renderAfterEdit(std::move(Script[K]), Text, *Editor, R, Builds, Image));
+    Frames.push_back(
+        renderAfterEdit(std::move(Script[K]), Script[K].line().Text, *Editor, R, Builds, Image));
     writeImage(frameName(O.Output, K + 1), OutW, OutH, Image, View.get());
   }
   writeImage(O.Output, OutW, OutH, Image, View.get());
