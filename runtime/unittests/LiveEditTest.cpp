@@ -207,5 +207,18 @@ TEST(LiveEditor, CheckedEditsAreValidatedOnce) {
   EXPECT_EQ(graph::GraphEditor::validations(), Checks);
   EXPECT_EQ(argument(Editor.graph(), "t", "gain").Numbers, std::vector<double>{0.25});
   EXPECT_EQ(argument(Editor.graph(), "t", "color").Numbers, (std::vector<double>{1, 0, 0}));
+  // The watch session's ways in validate once too: a control line's typed edit, and a saved
+  // graph.json's diff (all or nothing).
+  Editor.apply(graphEdit(parseEdit("t.gain=0.75")), R);
+  EXPECT_EQ(graph::GraphEditor::validations() - Checks, 1u);
+  graph::Graph Saved = Editor.graph();
+  Saved.findNode("t")->Args[0].second.Numbers = {0.5, 0.5, 0.5};
+  Saved.findNode("t")->Args[1].second.Numbers = {2.0};
+  std::string Why;
+  std::optional<std::vector<graph::Edit>> Diff = graph::diff(Editor.graph(), Saved, Why);
+  ASSERT_TRUE(Diff && Diff->size() == 2) << Why;
+  Editor.apply(*Diff, R);
+  EXPECT_EQ(graph::GraphEditor::validations() - Checks, 3u);
+  EXPECT_TRUE(graph::sameGraph(Editor.graph(), Saved));
   fs::remove_all(Dir);
 }
