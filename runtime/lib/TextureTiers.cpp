@@ -185,28 +185,36 @@ std::string stackHeadroomOption(const Layout &L, const std::string &Source, unsi
   return " -DTEXCC_STACK_SLOTS=" + std::to_string(Capacity);
 }
 
+namespace {
+
+/// Builds and warms up P, a program of the job's layout L (FallbackSlots: a fallback's
+/// value-stack capacity).
+cl::Program buildJobProgram(ClContext &Cl, const Layout &L, const TierProgram &P,
+                            const std::string &Options, unsigned &FallbackSlots) {
+  if (P.Role == ProgramRole::Quick)
+    throw Error("a background build job names a quick program (the quick tier warms its own)");
+  const bool Primary = P.Role == ProgramRole::Primary;
+  const std::string &File = Primary ? L.KernelSource : L.InterpFallback;
+  const std::string Source = P.Text.empty() ? readKernelSource(File) : P.Text;
+  std::vector<std::string> Kernels{L.Entry};
+  std::string All = Options + P.Options;
+  if (!Primary)
+    All += stackHeadroomOption(L, Source, FallbackSlots);
+  else if (!L.Uniforms.empty())
+    Kernels.push_back(L.Uniforms);
+  return buildAndWarm(Cl, File, Source, Kernels, All);
+}
+
+} // namespace
+
 TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
                                TierJob Job, const std::string &Options, double Epoch) {
   TierBuildResult R;
   R.SameLayout = Job.SameLayout;
   try {
     R.L = MakeLayout();
-    if (Job.Shape) {
-      std::vector<std::string> Kernels{R.L.Entry};
-      if (!R.L.Uniforms.empty())
-        Kernels.push_back(R.L.Uniforms);
-      const std::string Source =
-          Job.ShapeText.empty() ? readKernelSource(R.L.KernelSource) : Job.ShapeText;
-      R.Programs[texcc::kernel::ProgramRole::Primary] =
-          buildAndWarm(Cl, R.L.KernelSource, Source, Kernels, Options + Job.ShapeOptions);
-    }
-    if (Job.Interp) {
-      const std::string Source = Job.FallbackText.empty() ? readKernelSource(R.L.InterpFallback)
-                                                          : Job.FallbackText;
-      const std::string Headroom = stackHeadroomOption(R.L, Source, R.FallbackSlots);
-      R.Programs[texcc::kernel::ProgramRole::Fallback] =
-          buildAndWarm(Cl, R.L.InterpFallback, Source, {R.L.Entry}, Options + Headroom);
-    }
+    for (const TierProgram &P : Job.Programs)
+      R.Programs[P.Role] = buildJobProgram(Cl, R.L, P, Options, R.FallbackSlots);
   } catch (const cl::Error &E) {
     R.Error = std::string("OpenCL call ") + E.what() + " failed: " + clErrorName(E.err());
   } catch (const std::exception &E) {

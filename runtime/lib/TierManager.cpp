@@ -6,6 +6,7 @@
 #include "texrender/Error.h"
 #include "texrender/SlowStep.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <cstdio>
@@ -16,12 +17,17 @@
 namespace texrender {
 
 TierBuildPlan planTierBuilds(TierPolicy P, bool ShapeCached, bool FallbackCached) {
-  TierBuildPlan Plan;
   const bool Auto = P == TierPolicy::Auto;
-  Plan.ShapeNow = P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached));
-  Plan.InterpNow = P == TierPolicy::Interp || (Auto && FallbackCached);
-  Plan.ShapeLater = Auto && !Plan.ShapeNow;
-  Plan.InterpLater = Auto && !Plan.InterpNow;
+  const bool PrimaryNow = P == TierPolicy::Shape || (Auto && (ShapeCached || !FallbackCached));
+  const bool FallbackNow = P == TierPolicy::Interp || (Auto && FallbackCached);
+  TierBuildPlan Plan;
+  for (const auto &[Role, Now] : {std::pair(ProgramRole::Primary, PrimaryNow),
+                                  std::pair(ProgramRole::Fallback, FallbackNow)}) {
+    if (Now)
+      Plan.Now.push_back(Role);
+    else if (Auto) // tiers shape and interp build nothing behind
+      Plan.Later.push_back(Role);
+  }
   return Plan;
 }
 
@@ -42,14 +48,15 @@ void warnShapeBuildFailed(const std::string &Error) {
 } // namespace
 
 TierManager::~TierManager() {
-  if (Pending) {
+  if (Running) {
+    BackgroundBuild &B = *Running->Build;
     // The optimised build behind a quick first build: its binary is stored for the next run.
     std::optional<SlowStep> Step;
-    if (ActiveQuickFirst && !Pending->ready())
+    if (ActiveQuickFirst && !B.ready())
       Step.emplace("finishing the optimised texture kernel for the program cache");
     // A build that failed after the last frame began was never adopted: say so now.
-    Pending->wait();
-    const TierBuildResult R = Pending->take();
+    B.wait();
+    const TierBuildResult R = B.take();
     if (!R.Error.empty())
       warnShapeBuildFailed(R.Error);
   }
@@ -90,15 +97,14 @@ void TierManager::emitForJob(TierEvent::Kind K, const TierJob &J, const BuildEve
   TierEvent E;
   E.K = K;
   E.Background = B.Background;
-  E.Switches = switches(J);
+  E.Switches = J.switches();
   E.Seconds = B.ReadySeconds >= 0 ? B.ReadySeconds - B.StartSeconds : 0;
   E.Reason = B.Reason;
   E.Error = B.Error;
-  for (ProgramRole R : {ProgramRole::Primary, ProgramRole::Fallback})
-    if (R == ProgramRole::Primary ? J.Shape : J.Interp) {
-      E.Role = R;
-      emit(E);
-    }
+  for (const TierProgram &P : J.Programs) {
+    E.Role = P.Role;
+    emit(E);
+  }
 }
 
 namespace {
@@ -186,10 +192,8 @@ void TierManager::activate(const cl::Program &P, ProgramRole Role) {
 
 void TierManager::build(bool HasWork) {
   HasTextureWork = HasWork;
-  supersedePending();
-  Deferred.reset();
-  HeldShape.reset();
-  HeldOptimised.reset();
+  Waiting.clear();
+  supersedeRunning();
   ActiveQuickFirst = false;
   TextureKernels.clear();
   Programs.clear();
@@ -216,9 +220,8 @@ void TierManager::build(bool HasWork) {
                ProgramRole::Primary);
       ActiveQuickFirst = true;
       QuickFirstFrame = FramesRendered;
-      Layout Same = Lay;
-      TierJob Job{/*SameLayout=*/true, /*Shape=*/true, /*Interp=*/false, Source, {}, 0, Headroom};
-      HeldOptimised = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
+      TierJob Job{/*SameLayout=*/true, {{ProgramRole::Primary, Source, Headroom}}, /*Nice=*/0};
+      hold(sameLayoutBuild(Release::Pass, Job, Reason));
       return;
     }
     activate(Programs[ProgramRole::Primary] =
@@ -246,29 +249,32 @@ void TierManager::buildShapeTiers(const char *Reason) {
   // at the renderer's own priority, and takes over when it is ready; its fallback waits for
   // startDeferredBuild (setQuickTier: the caller drives both).
   if (Policy == TierPolicy::Auto && !ShapeCached && !FallbackCached && buildQuickTier(Reason)) {
-    Layout Same = Lay;
-    TierJob Shape{/*SameLayout=*/true, /*Shape=*/true, /*Interp=*/false, ShapeText, {}, 0};
-    TierJob Fallback{/*SameLayout=*/true, /*Shape=*/false, /*Interp=*/true, {}, FallbackText};
-    HeldShape = QueuedBuild{[Same] { return Same; }, Shape, nullptr, Reason};
-    Deferred = QueuedBuild{[Same] { return Same; }, Fallback, nullptr, Reason};
+    TierJob Shape{/*SameLayout=*/true, {{ProgramRole::Primary, ShapeText}}, /*Nice=*/0};
+    TierJob Fallback{/*SameLayout=*/true, {{ProgramRole::Fallback, FallbackText}}};
+    hold(sameLayoutBuild(Release::FullPass, Shape, Reason));
+    hold(sameLayoutBuild(Release::DeferredStart, Fallback, Reason));
     return;
   }
-  if (Plan.ShapeNow)
-    Programs[ProgramRole::Primary] =
-        buildForeground(Lay.KernelSource, ShapeText, ProgramRole::Primary, Reason);
-  if (Plan.InterpNow)
-    Programs[ProgramRole::Fallback] = buildForeground(
-        Lay.InterpFallback, FallbackText, ProgramRole::Fallback, Reason, FallbackHeadroom);
-  activate(program(renderingRole()), renderingRole());
-  if (Plan.ShapeLater || Plan.InterpLater) {
-    Layout Same = Lay;
-    TierJob Job{/*SameLayout=*/true, /*Shape=*/Plan.ShapeLater, /*Interp=*/Plan.InterpLater,
-                ShapeText, FallbackText, backgroundBuildNice()};
-    if (DeferFallback && !Plan.ShapeLater)
-      Deferred = QueuedBuild{[Same] { return Same; }, Job, nullptr, Reason};
-    else
-      startBackgroundBuild([Same] { return Same; }, Job, nullptr, Reason);
+  auto Text = [&](ProgramRole R) -> const std::string & {
+    return R == ProgramRole::Primary ? ShapeText : FallbackText;
+  };
+  for (ProgramRole R : Plan.Now) {
+    const bool Primary = R == ProgramRole::Primary;
+    Programs[R] = buildForeground(Primary ? Lay.KernelSource : Lay.InterpFallback, Text(R), R,
+                                  Reason, Primary ? "" : FallbackHeadroom);
   }
+  activate(program(renderingRole()), renderingRole());
+  if (Plan.Later.empty())
+    return;
+  TierJob Job{/*SameLayout=*/true, {}, backgroundBuildNice()};
+  for (ProgramRole R : Plan.Later)
+    Job.Programs.push_back({R, Text(R)});
+  const bool Defer = DeferFallback && !Job.switches(); // a fallback built alone
+  WaitingBuild B = sameLayoutBuild(Defer ? Release::DeferredStart : Release::Free, Job, Reason);
+  if (Defer)
+    hold(std::move(B));
+  else
+    startBackgroundBuild(std::move(B));
 }
 
 unsigned TierManager::quickScratchFloat4PerHit() const {
@@ -422,38 +428,62 @@ void TierManager::mergeQuickWarmUp(bool Wait) {
           Done.back().ReadySeconds - Done.front().StartSeconds, "warm-up", ""});
 }
 
-void TierManager::startHeldOptimised() {
-  if (!HeldOptimised)
-    return;
-  QueuedBuild B = std::move(*HeldOptimised);
-  HeldOptimised.reset();
-  startBackgroundBuild(std::move(B.MakeLayout), B.Job, std::move(B.Reencode), B.Reason);
+TierManager::WaitingBuild TierManager::sameLayoutBuild(Release When, TierJob Job,
+                                                       const char *Reason) const {
+  return WaitingBuild{When, std::move(Job), [Same = Lay] { return Same; }, nullptr, Reason};
+}
+
+void TierManager::hold(WaitingBuild B) {
+  for (WaitingBuild &W : Waiting)
+    if (W.When == B.When) {
+      W = std::move(B);
+      return;
+    }
+  Waiting.push_back(std::move(B));
+}
+
+const TierManager::WaitingBuild *TierManager::waitingFor(Release When) const {
+  for (const WaitingBuild &W : Waiting)
+    if (W.When == When)
+      return &W;
+  return nullptr;
+}
+
+bool TierManager::release(Release When) {
+  for (auto It = Waiting.begin(); It != Waiting.end(); ++It)
+    if (It->When == When) {
+      WaitingBuild B = std::move(*It);
+      Waiting.erase(It);
+      startBackgroundBuild(std::move(B));
+      return true;
+    }
+  return false;
+}
+
+bool TierManager::switchPending() const {
+  // A fallback built alone (the deferred build) switches nothing.
+  for (const WaitingBuild &W : Waiting)
+    if (W.Job.switches())
+      return true;
+  return Running && Running->Job.switches() && !Running->Announced;
 }
 
 void TierManager::passDone() {
-  startHeldOptimised();
+  release(Release::Pass);
   // A layout without a fallback has no other background build than this one.
-  if (ActiveQuickFirst && Pending && Pending->ready())
+  if (ActiveQuickFirst && Running && Running->Build->ready())
     adoptReadyBuild();
 }
 
 bool TierManager::fullPassDone() {
-  startHeldOptimised(); // not the shape kernel's build: the caller says nothing about it
-  if (!HeldShape)
-    return false;
-  QueuedBuild B = std::move(*HeldShape);
-  HeldShape.reset();
-  startBackgroundBuild(std::move(B.MakeLayout), B.Job, std::move(B.Reencode), B.Reason);
-  return true;
+  release(Release::Pass); // not the shape kernel's build: the caller says nothing about it
+  return release(Release::FullPass);
 }
 
 bool TierManager::startDeferredBuild() {
-  if (!Deferred || Pending || Queued || HeldShape)
+  if (Running || waitingFor(Release::Free) || waitingFor(Release::FullPass))
     return false;
-  QueuedBuild B = std::move(*Deferred);
-  Deferred.reset();
-  startBackgroundBuild(std::move(B.MakeLayout), B.Job, std::move(B.Reencode), B.Reason);
-  return true;
+  return release(Release::DeferredStart);
 }
 
 void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
@@ -463,53 +493,57 @@ void TierManager::switchShapes(bool HasWork, std::function<Layout()> MakeLayout,
   HasTextureWork = HasWork;
   if (HasTextureWork && ActiveRole != ProgramRole::Fallback)
     activate(program(ProgramRole::Fallback), ProgramRole::Fallback);
-  startBackgroundBuild(std::move(MakeLayout),
-                       TierJob{false, true, true, {}, {}, backgroundBuildNice()},
-                       std::move(Reencode), "shape change");
+  TierJob Job{/*SameLayout=*/false, {{ProgramRole::Primary}, {ProgramRole::Fallback}},
+              backgroundBuildNice()};
+  startBackgroundBuild(WaitingBuild{Release::Free, std::move(Job), std::move(MakeLayout),
+                                    std::move(Reencode), "shape change"});
 }
 
-void TierManager::startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
-                                       std::function<void(Layout &)> Reencode,
-                                       const std::string &Reason) {
-  supersedePending();
-  Queued = QueuedBuild{std::move(MakeLayout), Job, std::move(Reencode), Reason};
-  launchQueued();
+void TierManager::startBackgroundBuild(WaitingBuild B) {
+  supersedeRunning();
+  B.When = Release::Free;
+  hold(std::move(B));
+  launchFree();
 }
 
-void TierManager::launchQueued() {
+void TierManager::launchFree() {
   // One build thread at a time: a superseded build cannot be cancelled, and letting it finish
   // before the next one starts keeps rapid edits from piling up builds on the same cores.
   reapRetired(false);
-  if (!Queued || Pending || !Retired.empty())
+  if (Running || !Retired.empty())
     return;
+  auto It = std::find_if(Waiting.begin(), Waiting.end(),
+                         [](const WaitingBuild &W) { return W.When == Release::Free; });
+  if (It == Waiting.end())
+    return;
+  WaitingBuild B = std::move(*It);
+  Waiting.erase(It);
   BuildEvent E;
-  E.Kernel = tierName(Queued->Job.Shape ? ProgramRole::Primary : ProgramRole::Fallback);
-  E.Reason = Queued->Reason;
+  E.Kernel = tierName(B.Job.Programs.front().Role);
+  E.Reason = B.Reason;
   E.Background = true;
   E.StartSeconds = steadySeconds() - Epoch;
   Events.push_back(E);
   ClContext *Ctx = &Cl;
   std::string Options = ProgramOptions;
   double Start = Epoch;
-  Pending = std::make_unique<BackgroundBuild>(
-      [Ctx, MakeLayout = std::move(Queued->MakeLayout), Job = Queued->Job, Options, Start] {
+  auto Build = std::make_unique<BackgroundBuild>(
+      [Ctx, MakeLayout = std::move(B.MakeLayout), Job = B.Job, Options, Start] {
         return buildShapeTier(*Ctx, MakeLayout, Job, Options, Start);
       },
-      Events.size() - 1, Queued->Job.Nice, Wake);
-  PendingReencode = std::move(Queued->Reencode);
-  PendingSwitches = switches(Queued->Job);
-  PendingAnnounced = false;
-  PendingJob = Queued->Job;
-  Queued.reset();
+      Events.size() - 1, B.Job.Nice, Wake);
+  Running = RunningBuild{std::move(Build), std::move(B.Job), std::move(B.Reencode)};
 }
 
-void TierManager::supersedePending() {
-  Queued.reset();
-  if (!Pending)
+void TierManager::supersedeRunning() {
+  Waiting.erase(std::remove_if(Waiting.begin(), Waiting.end(),
+                               [](const WaitingBuild &W) { return W.When == Release::Free; }),
+                Waiting.end());
+  if (!Running)
     return;
-  Events[Pending->eventIndex()].Superseded = true;
-  Retired.push_back(std::move(Pending));
-  PendingReencode = nullptr;
+  Events[Running->Build->eventIndex()].Superseded = true;
+  Retired.push_back(std::move(Running->Build));
+  Running.reset();
 }
 
 void TierManager::reapRetired(bool Wait) {
@@ -533,7 +567,7 @@ const std::string &TierManager::beginFrame() {
   // pass). Started earlier, its compile holds up those launches (PoCL compiles one at a time):
   // rust's first image after a save waited 4-7 s for it (bench/coldstart.md).
   if (FramesRendered >= QuickFirstFrame + 2)
-    startHeldOptimised();
+    release(Release::Pass);
   adoptReadyBuild(); // a background shape build that finished since the last frame
   ++FramesRendered;
   return ActiveTier;
@@ -544,53 +578,53 @@ void TierManager::collect(bool Rest) {
   announceReadyBuild();
   // An interp fallback built alone: adopted at rest, not at the next frame (an idle session
   // renders none, and a rewiring to a new shape needs it).
-  if (Rest && Pending && !PendingSwitches && PendingAnnounced)
+  if (Rest && Running && !Running->Job.switches() && Running->Announced)
     adoptReadyBuild();
 }
 
 void TierManager::announceReadyBuild() {
-  launchQueued();
-  if (!Pending || PendingAnnounced || !Pending->ready())
+  launchFree();
+  if (!Running || Running->Announced || !Running->Build->ready())
     return;
-  PendingAnnounced = true;
-  const TierBuildResult &R = Pending->result();
-  BuildEvent &E = Events[Pending->eventIndex()];
+  Running->Announced = true;
+  const TierBuildResult &R = Running->Build->result();
+  BuildEvent &E = Events[Running->Build->eventIndex()];
   E.ReadySeconds = R.ReadySeconds;
   if (R.Error.empty()) {
-    emitForJob(TierEvent::Kind::Built, PendingJob, E);
+    emitForJob(TierEvent::Kind::Built, Running->Job, E);
     return;
   }
   // The kernel that renders renders correctly; the faster one is lost, and the reason reported.
   E.Error = R.Error;
   warnShapeBuildFailed(R.Error);
-  PendingReencode = nullptr;
-  Pending.reset();
-  emitForJob(TierEvent::Kind::Failed, PendingJob, E);
+  const TierJob Job = std::move(Running->Job);
+  Running.reset();
+  emitForJob(TierEvent::Kind::Failed, Job, E);
 }
 
 void TierManager::adoptReadyBuild() {
   announceReadyBuild();
-  if (!Pending || !PendingAnnounced)
+  if (!Running || !Running->Announced)
     return;
-  TierBuildResult R = Pending->take();
-  const size_t Index = Pending->eventIndex();
-  Pending.reset();
-  if (R.Programs.count(ProgramRole::Primary) || !R.SameLayout)
-    Events[Index].FirstFrame = int(FramesRendered); // it renders this frame (an interp-only
-                                                    // job does not)
+  RunningBuild Done = std::move(*Running);
+  Running.reset();
+  TierBuildResult R = Done.Build->take();
+  const size_t Index = Done.Build->eventIndex();
+  if (Done.Job.switches())
+    Events[Index].FirstFrame = int(FramesRendered); // it renders this frame (a fallback built
+                                                    // alone does not)
   try {
-    adopt(R);
+    adopt(R, Done.Reencode);
   } catch (const cl::Error &Ex) {
     throw Error(std::string("OpenCL call ") + Ex.what() + " failed: " + clErrorName(Ex.err()));
   }
-  emitForJob(TierEvent::Kind::Adopted, PendingJob, Events[Index]);
+  emitForJob(TierEvent::Kind::Adopted, Done.Job, Events[Index]);
 }
 
-void TierManager::adopt(TierBuildResult &R) {
+void TierManager::adopt(TierBuildResult &R, const std::function<void(Layout &)> &Reencode) {
   if (!R.SameLayout) {
-    if (PendingReencode)
-      PendingReencode(R.L);
-    PendingReencode = nullptr;
+    if (Reencode)
+      Reencode(R.L);
     HasTextureWork = AdoptLayout(std::move(R.L));
   }
   for (const auto &[Role, P] : R.Programs)
@@ -605,11 +639,11 @@ double TierManager::waitForBackgroundBuild() {
   double T0 = steadySeconds();
   mergeQuickWarmUp(/*Wait=*/true);
   fullPassDone(); // a shape kernel held behind the quick tier: it is what is waited for
-  while (Pending || Queued || !Retired.empty()) {
+  while (Running || waitingFor(Release::Free) || !Retired.empty()) {
     reapRetired(/*Wait=*/true);
-    launchQueued();
-    if (Pending)
-      Pending->wait();
+    launchFree();
+    if (Running)
+      Running->Build->wait();
     adoptReadyBuild();
   }
   return steadySeconds() - T0;

@@ -2,7 +2,7 @@
 // a shape-mode layout without its interp fallback, BackgroundBuild's hand-over of a result
 // made on another thread, the tier manager's build plan (which tier renders the first
 // frame, which one builds in the background) for every policy and program-cache state, and its
-// events (built, adopted, failed) on two tiny kernels. The tiers themselves run in
+// events (built, adopted, failed) and build queue (a deferred fallback) on two tiny kernels. The tiers themselves run in
 // testsuite/runtime/tier-*.test.
 #include "texrender/Error.h"
 #include "texrender/Layout.h"
@@ -177,14 +177,15 @@ TEST(Tier, BuildPlanOfEveryPolicyAndCacheState) {
                  std::to_string(R.ShapeCached) + " fallbackCached=" +
                  std::to_string(R.FallbackCached));
     TierBuildPlan Plan = planTierBuilds(R.P, R.ShapeCached, R.FallbackCached);
-    EXPECT_EQ(Plan.ShapeNow, R.ShapeNow);
-    EXPECT_EQ(Plan.InterpNow, R.InterpNow);
-    EXPECT_EQ(Plan.ShapeLater, R.ShapeLater);
-    EXPECT_EQ(Plan.InterpLater, R.InterpLater);
+    const ProgramRole Primary = ProgramRole::Primary, Fallback = ProgramRole::Fallback;
+    EXPECT_EQ(Plan.now(Primary), R.ShapeNow);
+    EXPECT_EQ(Plan.now(Fallback), R.InterpNow);
+    EXPECT_EQ(Plan.later(Primary), R.ShapeLater);
+    EXPECT_EQ(Plan.later(Fallback), R.InterpLater);
     // Something renders the first frame, and nothing is built twice.
-    EXPECT_TRUE(Plan.ShapeNow || Plan.InterpNow);
-    EXPECT_FALSE(Plan.ShapeNow && Plan.ShapeLater);
-    EXPECT_FALSE(Plan.InterpNow && Plan.InterpLater);
+    EXPECT_TRUE(Plan.now(Primary) || Plan.now(Fallback));
+    EXPECT_FALSE(Plan.now(Primary) && Plan.later(Primary));
+    EXPECT_FALSE(Plan.now(Fallback) && Plan.later(Fallback));
   }
 }
 
@@ -334,4 +335,32 @@ TEST(TierEvents, FailedBuildSaysWhy) {
   EXPECT_EQ(F.T->beginFrame(), "shape"); // nothing more to adopt
   EXPECT_EQ(F.Log.background().size(), 1u);
   EXPECT_EQ(F.T->buildEvents().back().Error, E.Error);
+}
+
+// The build queue: a fallback built alone (setDeferFallbackBuilds) waits for startDeferredBuild,
+// not for the layout: nothing starts with it, and nothing is pending to switch to. Released, it
+// starts once (a second call finds nothing), is Built when it ends and Adopted at rest.
+TEST(TierEvents, DeferredFallbackWaitsForItsRelease) {
+  if (listDevices().empty())
+    GTEST_SKIP() << "no OpenCL device";
+  TierFixture F("defer", /*FallbackBroken=*/false);
+  F.T->setDeferFallbackBuilds(true);
+  F.T->build(true); // nothing cached: the shape kernel now, its fallback held back
+  ASSERT_EQ(F.T->activeTier(), "shape");
+  EXPECT_FALSE(F.T->switchPending());
+  F.T->collect(/*Rest=*/true);
+  EXPECT_EQ(F.T->beginFrame(), "shape");
+  ASSERT_EQ(F.T->buildEvents().size(), 1u); // the foreground build only: nothing started
+  EXPECT_TRUE(F.Log.background().empty());
+  EXPECT_TRUE(F.T->startDeferredBuild());
+  EXPECT_FALSE(F.T->startDeferredBuild()); // started: nothing left to start
+  EXPECT_FALSE(F.T->switchPending());
+  ASSERT_EQ(F.T->buildEvents().size(), 2u);
+  EXPECT_EQ(F.T->buildEvents().back().Kernel, "interp");
+  EXPECT_TRUE(F.T->buildEvents().back().Background);
+  F.Log.waitForWakes(1);
+  F.T->collect(/*Rest=*/true);
+  EXPECT_EQ(F.Log.background(), (std::vector<std::string>{"built fallback", "adopted fallback"}));
+  EXPECT_TRUE(F.T->canSwitchShapes());
+  EXPECT_EQ(F.T->activeTier(), "shape");
 }

@@ -16,6 +16,7 @@
 #include <map>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace texrender {
 
@@ -26,7 +27,7 @@ enum class TierPolicy { Auto, Interp, Shape };
 
 /// The tiers of a layout with an interp fallback (Layout::Caps.InterpFallback), as --tier
 /// spells its policies and stats.json names the tiers: the layout's kernel and its interp
-/// fallback. Labels only: the tier manager tracks which program renders as a flag, and names
+/// fallback. Labels only: the tier manager tracks which program renders by its role, and names
 /// the layout's own kernel by the manifest's mode ("shape" for such a layout), never comparing
 /// either name.
 constexpr const char *ShapeTierName = "shape";
@@ -48,13 +49,17 @@ struct BuildEvent {
   std::string Error;         // a failed background build: the interp tier kept rendering
 };
 
+/// A program's role in its layout (texcc/Kernel/Manifest.h): the layout's own kernel
+/// (Primary: shape mode's shape kernel), its interp fallback (Fallback), the quick tier's.
+using texcc::kernel::ProgramRole;
+
 /// What a background job produced.
 struct TierBuildResult {
   Layout L;                  // the layout the programs belong to
   bool SameLayout = false;   // L is the layout the renderer runs
   // The programs of L the job built, by role: Primary (L's own kernel: the shape kernel),
   // Fallback (its interp fallback).
-  std::map<texcc::kernel::ProgramRole, cl::Program> Programs;
+  std::map<ProgramRole, cl::Program> Programs;
   unsigned FallbackSlots = 0; // the fallback's value-stack capacity (stackHeadroomOption)
   double ReadySeconds = 0;
   std::string Error;
@@ -83,28 +88,46 @@ int backgroundBuildNice();
 /// Increment 0: nothing.
 void lowerThisThreadsPriority(int Increment);
 
-/// What a background job builds.
+/// One program a background job builds.
+struct TierProgram {
+  TierProgram(ProgramRole Role, std::string Text = "", std::string Options = "")
+      : Role(Role), Text(std::move(Text)), Options(std::move(Options)) {}
+  ProgramRole Role; // Primary (the layout's own kernel) or Fallback
+  // Its text when read already (non-empty; else the layout's file is read): a live edit's
+  // regenerated layout lives in a temporary folder that is gone by the time a deferred build
+  // runs.
+  std::string Text;
+  // Extra build options: an interp-mode primary's value-stack headroom. A fallback's headroom
+  // comes from its text as it builds (stackHeadroomOption).
+  std::string Options;
+};
+
+/// What a background job builds: programs by role, the primary first (a build event names the
+/// first).
 struct TierJob {
   bool SameLayout = false; // for the layout the renderer runs, else for MakeLayout's new one
-  bool Shape = true;       // the layout's shape kernel
-  bool Interp = false;     // the layout's interp fallback
-  // The programs' texts when read already (non-empty): a live edit's regenerated layout lives
-  // in a temporary folder that is gone by the time a deferred build runs.
-  std::string ShapeText, FallbackText;
+  std::vector<TierProgram> Programs;
   // The build thread's nice increment: backgroundBuildNice(), or 0 for the shape kernel that
   // takes over from the quick tier (TierManager::buildShapeTiers: at nice 19 it waited a
   // minute behind a loaded machine) and for the optimised build behind a quick first build.
   int Nice = backgroundBuildNice();
-  // Extra build options of the shape (or, for another mode, the layout's own) program: an
-  // interp-mode kernel's value-stack headroom.
-  std::string ShapeOptions;
+
+  bool builds(ProgramRole R) const {
+    for (const TierProgram &P : Programs)
+      if (P.Role == R)
+        return true;
+    return false;
+  }
+  /// Frames switch to what it makes: a new primary, or a new layout (an interp fallback of the
+  /// layout that renders, built alone, never switches).
+  bool switches() const { return builds(ProgramRole::Primary) || !SameLayout; }
 };
 
-/// Builds the programs Job names for the layout MakeLayout gives (run first, on the calling
-/// thread: e.g. texcc regenerating a rewired graph), then launches each once over an empty
-/// range on a private queue: PoCL compiles the work-group function at the first launch, and
-/// that compile belongs to the build, not to the first frame that uses it. Never throws: a
-/// failure is returned in Error.
+/// Builds the programs Job names, in its order, for the layout MakeLayout gives (run first, on
+/// the calling thread: e.g. texcc regenerating a rewired graph), then launches each once over
+/// an empty range on a private queue: PoCL compiles the work-group function at the first
+/// launch, and that compile belongs to the build, not to the first frame that uses it. Never
+/// throws: a failure (a quick program among them included) is returned in Error.
 TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
                                TierJob Job, const std::string &Options, double Epoch);
 

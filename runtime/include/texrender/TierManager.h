@@ -14,6 +14,7 @@
 #include "texrender/Layout.h"
 #include "texrender/TextureTiers.h"
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <future>
@@ -26,22 +27,22 @@
 namespace texrender {
 
 /// Which programs of a shape-mode layout (Caps.InterpFallback) a build of its texture kernel
-/// makes before the next frame (Now) and which it leaves to the background thread (Later).
+/// makes before the next frame (Now) and which it leaves to the background thread (Later), by
+/// role (Primary: the shape kernel, Fallback: its interp fallback), the primary first.
 /// Something must render the next frame, and a cached program is a load, not a build: tier
 /// auto builds now what is cached, or the shape kernel when neither is (on PoCL it builds faster
 /// than the fallback, whose switch holds every function), and the other behind it. Tiers shape
 /// and interp build only their own program, now. The first frame renders with the shape kernel
 /// when it is built now, else with the fallback.
 struct TierBuildPlan {
-  bool ShapeNow = false, InterpNow = false;
-  bool ShapeLater = false, InterpLater = false;
+  std::vector<ProgramRole> Now, Later;
+  bool now(ProgramRole R) const { return std::count(Now.begin(), Now.end(), R) != 0; }
+  bool later(ProgramRole R) const { return std::count(Later.begin(), Later.end(), R) != 0; }
 };
 TierBuildPlan planTierBuilds(TierPolicy P, bool ShapeCached, bool FallbackCached);
 
 /// The quick tier's name (stats.json, the frame log).
 constexpr const char *QuickTierName = "quick";
-
-using texcc::kernel::ProgramRole;
 
 /// What the tier manager tells its subscribers (subscribe) about a program of a role: Built
 /// once a build has ended (a background build: held for adoption, a quick warm-up: its
@@ -117,10 +118,7 @@ public:
   void collect(bool Rest);
   /// A background build that makes a kernel to switch to (the shape kernel, or a new layout)
   /// is queued, held or running and has not ended. No side effect.
-  bool switchPending() const {
-    return HeldShape || HeldOptimised || (Queued && switches(Queued->Job)) ||
-           (Pending && PendingSwitches && !PendingAnnounced);
-  }
+  bool switchPending() const;
   /// On: a background build that makes only the interp fallback of a layout whose own kernel
   /// renders (tier auto: the shape kernel built in the foreground, or built behind the quick
   /// tier) waits for startDeferredBuild() instead of starting with the layout. texrender
@@ -199,11 +197,42 @@ public:
   }
 
 private:
-  /// The job makes a kernel frames switch to (the shape kernel, or a new layout).
-  static bool switches(const TierJob &J) { return J.Shape || !J.SameLayout; }
+  /// What releases a background build that waits (Waiting).
+  enum class Release {
+    Free,          // no build running or retired: the newest request, behind a superseded one
+    DeferredStart, // startDeferredBuild: a fallback built alone (setDeferFallbackBuilds, and
+                   // the quick tier's fallback)
+    FullPass,      // fullPassDone: the shape kernel behind the quick tier
+    Pass,          // passDone, fullPassDone or beginFrame's second frame after a quick first
+                   // build: the optimised build behind it
+  };
+  /// A background build that waits for its release.
+  struct WaitingBuild {
+    Release When = Release::Free;
+    TierJob Job;
+    std::function<Layout()> MakeLayout;
+    std::function<void(Layout &)> Reencode; // fills a new layout's args.bin at adoption
+    std::string Reason;
+  };
+  /// The background build in flight.
+  struct RunningBuild {
+    std::unique_ptr<BackgroundBuild> Build;
+    TierJob Job;
+    std::function<void(Layout &)> Reencode;
+    bool Announced = false; // it has ended and Built was emitted (announceReadyBuild)
+  };
+
   void emit(TierEvent E);
   /// emit for each role Job builds (Primary, Fallback).
   void emitForJob(TierEvent::Kind K, const TierJob &J, const BuildEvent &B);
+  /// A build of the renderer's layout that waits for When.
+  WaitingBuild sameLayoutBuild(Release When, TierJob Job, const char *Reason) const;
+  /// Queues B, replacing the build that waits for the same release, if any.
+  void hold(WaitingBuild B);
+  /// The build that waits for When, or nullptr. No side effect.
+  const WaitingBuild *waitingFor(Release When) const;
+  /// Starts the build that waits for When, if any; returns whether there was one.
+  bool release(Release When);
   /// The background build in flight, if it has ended: Built (or Failed: then dropped), once.
   void announceReadyBuild();
   void buildShapeTiers(const char *Reason);
@@ -228,13 +257,15 @@ private:
     return program(ProgramRole::Primary)() ? ProgramRole::Primary : ProgramRole::Fallback;
   }
   std::vector<std::string> textureKernelNames() const;
-  void startBackgroundBuild(std::function<Layout()> MakeLayout, TierJob Job,
-                            std::function<void(Layout &)> Reencode, const std::string &Reason);
-  void supersedePending();
-  void launchQueued();
+  /// Supersedes the build in flight and the one waiting behind it; B starts once the
+  /// superseded builds have ended.
+  void startBackgroundBuild(WaitingBuild B);
+  void supersedeRunning();
+  /// Starts the build released by Free once no build runs or is retired.
+  void launchFree();
   void reapRetired(bool Wait);
   void adoptReadyBuild();
-  void adopt(TierBuildResult &R);
+  void adopt(TierBuildResult &R, const std::function<void(Layout &)> &Reencode);
 
   ClContext &Cl;
   const Layout &Lay;
@@ -257,30 +288,16 @@ private:
   std::map<ProgramRole, cl::Program> Programs;
   unsigned FallbackSlots = 0;
   unsigned InterpModeSlots = 0;
-  std::unique_ptr<BackgroundBuild> Pending;
-  bool PendingSwitches = false; // Pending makes a kernel the next frame renders with
-  bool PendingAnnounced = false; // Pending has ended and Built was emitted (announceReadyBuild)
-  TierJob PendingJob;
-  std::function<void(Layout &)> PendingReencode;
+  // The background builds: the one in flight, the superseded ones still running (a build
+  // cannot be cancelled: the next one starts once they have ended) and those waiting for their
+  // release, at most one per Release.
+  std::optional<RunningBuild> Running;
   std::vector<std::unique_ptr<BackgroundBuild>> Retired;
-  // The newest build requested while a superseded one still runs: it starts when that ends.
-  struct QueuedBuild {
-    std::function<Layout()> MakeLayout;
-    TierJob Job;
-    std::function<void(Layout &)> Reencode;
-    std::string Reason;
-  };
-  std::optional<QueuedBuild> Queued;
+  std::vector<WaitingBuild> Waiting;
   bool DeferFallback = false;
-  std::optional<QueuedBuild> Deferred; // setDeferFallbackBuilds's build, until started
-  std::optional<QueuedBuild> HeldShape; // the quick tier's shape kernel, until fullPassDone
   bool QuickFirstBuild = true;
   bool ActiveQuickFirst = false; // the kernel that renders is a quick first build
   unsigned QuickFirstFrame = 0;  // FramesRendered when it was built
-  // The optimised build behind a quick first build, until a pass is done (passDone,
-  // fullPassDone, or the next frame's beginFrame).
-  std::optional<QueuedBuild> HeldOptimised;
-  void startHeldOptimised();
   std::vector<BuildEvent> Events;
   unsigned FramesRendered = 0;
   bool QuickTier = false;
