@@ -245,8 +245,10 @@ def measure(args, tools, save):
             st = Stressor(load, args.stress)
             try:
                 if r == "cycles":
+                    c0 = cpu_seconds(cyc.p.pid)
                     s = cyc.call(op="render", blend=blend, size=[w, h], spp=args.spp)
-                    sample = {"raw": s["seconds"], "frame": s["seconds"] - common.median(fixed)}
+                    sample = {"raw": s["seconds"], "frame": s["seconds"] - common.median(fixed),
+                              "cpu": cpu_seconds(cyc.p.pid) - c0}
                 else:
                     t = r.split("-")[1]
                     sample = texrender_cpu(builds[r], scene, textures, args.size, args.spp,
@@ -334,16 +336,23 @@ def report(data):
                 if v and ratios else "-")
         lines.append("| %s | %s |" % (r, " | ".join(cells)))
     lines.append("")
-    lines.append("| load | stressor CPU s per render, median | texrender CPU s, median "
-                 "(user + sys) | load average (1 min) before the renders |")
-    lines.append("|---|---|---|---|")
-    for l in loads:
-        v = [s for c, vs in runs.items() if c.startswith(l + "/") for s in vs]
-        t = [s["cpu"] for s in v if "cpu" in s]
-        lines.append("| %s | %.2f | %s | %.1f-%.1f (median %.1f) |" % (
-            l, med([s["stressCpu"] for s in v]), "%.2f" % med(t) if t else "-",
-            min(s["load1Before"] for s in v), max(s["load1Before"] for s in v),
-            med([s["load1Before"] for s in v])))
+    lines.append("| renderer | " + " | ".join(
+        "%s: CPU s per render (user + sys), median | %s: the stressor's CPU s" % (l, l)
+        for l in loads) + " |")
+    lines.append("|---" * (1 + 2 * len(loads)) + "|")
+    for r in renderers:
+        cells = []
+        for l in loads:
+            v = runs.get("%s/%s" % (l, r), [])
+            t = [s["cpu"] for s in v if "cpu" in s]
+            cells.append("%.2f" % med(t) if t else "-")
+            cells.append("%.2f" % med([s["stressCpu"] for s in v]) if v else "-")
+        lines.append("| %s | %s |" % (r, " | ".join(cells)))
+    every = [s for vs in runs.values() for s in vs]
+    lines.append("")
+    lines.append("Load average (1 min) before the renders: %.1f-%.1f (median %.1f)." % (
+        min(s["load1Before"] for s in every), max(s["load1Before"] for s in every),
+        med([s["load1Before"] for s in every])))
     if any("runQueueWait" in s for v in runs.values() for s in v):
         lines.append("")
         lines.append("| renderer | " + " | ".join(
