@@ -207,8 +207,8 @@ cl::Program buildJobProgram(ClContext &Cl, const Layout &L, const TierProgram &P
 
 } // namespace
 
-TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
-                               TierJob Job, const std::string &Options, double Epoch) {
+TierBuildResult buildTierJob(ClContext &Cl, const std::function<Layout()> &MakeLayout,
+                             TierJob Job, const std::string &Options, double Epoch) {
   TierBuildResult R;
   R.SameLayout = Job.SameLayout;
   try {

@@ -529,7 +529,7 @@ void TierManager::launchFree() {
   double Start = Epoch;
   auto Build = std::make_unique<BackgroundBuild>(
       [Ctx, MakeLayout = std::move(B.MakeLayout), Job = B.Job, Options, Start] {
-        return buildShapeTier(*Ctx, MakeLayout, Job, Options, Start);
+        return buildTierJob(*Ctx, MakeLayout, Job, Options, Start);
       },
       Events.size() - 1, B.Job.Nice, Wake);
   Running = RunningBuild{std::move(Build), std::move(B.Job), std::move(B.Reencode)};

@@ -128,8 +128,8 @@ struct TierJob {
 /// an empty range on a private queue: PoCL compiles the work-group function at the first
 /// launch, and that compile belongs to the build, not to the first frame that uses it. Never
 /// throws: a failure (a quick program among them included) is returned in Error.
-TierBuildResult buildShapeTier(ClContext &Cl, const std::function<Layout()> &MakeLayout,
-                               TierJob Job, const std::string &Options, double Epoch);
+TierBuildResult buildTierJob(ClContext &Cl, const std::function<Layout()> &MakeLayout,
+                             TierJob Job, const std::string &Options, double Epoch);
 
 /// Launches each of Kernels of P once over one work-group whose items all return at once
 /// (numHits 0), on a private queue, so that PoCL's compile at the first launch happens here,

@@ -8,7 +8,7 @@
 // alone: at the first boundary at rest, collect), the events its subscribers hear (built,
 // adopted, failed: TierEvent) and the build records stats.json reports. The Renderer keeps
 // path tracing and launches the kernels this class hands it; the building blocks
-// (BackgroundBuild, buildShapeTier, the value-stack headroom) are in TextureTiers.h.
+// (BackgroundBuild, buildTierJob, the value-stack headroom) are in TextureTiers.h.
 
 #include "texrender/ClContext.h"
 #include "texrender/Layout.h"
