@@ -416,12 +416,14 @@ void LiveEditor::regenerateInBackground(Renderer &R) {
   std::shared_ptr<const Regeneration> Files = writeEditedGraph();
   const auto &CG = Editor->compiled();
   KernelShapeHash = texcc::graph::shapeHash(CG);
+  Switching = true;
   R.switchShapes(
       CG.ArgsBin, CG.Attributes, [Files] { return Files->run(); },
       [this, Files](Layout &New) {
         adopt(New, *Files);
         New.ArgsBin = Editor->compiled().ArgsBin;
         New.Attributes = Editor->compiled().Attributes;
+        Switching = false; // the renderer switches to New with them
       });
 }
 
@@ -459,6 +461,7 @@ EditAction LiveEditor::plan(const Pending &P, Renderer &R) {
 
 EditResult LiveEditor::carryOut(const Pending &P, Renderer &R, double T0) {
   EditResult Res;
+  Rendered = false; // the graph editor has the edit; the renderer has it once this is done
   switch (plan(P, R)) {
   case EditAction::Upload:
     R.applyArguments(Editor->compiled().ArgsBin, Editor->compiled().Attributes);
@@ -473,8 +476,23 @@ EditResult LiveEditor::carryOut(const Pending &P, Renderer &R, double T0) {
     break;
   }
   R.cl().finish();
+  Rendered = true; // Lay's kernel, or the fallback while Switching
   Res.Seconds = now() - T0;
   return Res;
+}
+
+std::optional<Layout> LiveEditor::renderedLayout() const {
+  if (!Rendered || Switching)
+    return std::nullopt;
+  Layout L = Lay;
+  // A kernel that re-encodes runs the graph editor's args.bin (uploaded after each edit, and
+  // given to a shape kernel adopted later); an inline kernel is regenerated at every edit, and
+  // Lay has its args.bin.
+  if (L.Caps.ReEncodes) {
+    L.ArgsBin = Editor->compiled().ArgsBin;
+    L.Attributes = Editor->compiled().Attributes;
+  }
+  return L;
 }
 
 EditResult LiveEditor::apply(const Edit &E, Renderer &R) {

@@ -301,19 +301,28 @@ void Session::applyKeptEdits(const texcc::graph::Graph &Edited) {
 
 void Session::reloadScene() {
   try {
-    auto New = std::make_unique<Renderer>(O.LoadScene(), Lay, O.Renderer);
+    // The scene changed, not the graph or its kernel: the new renderer starts from the kernel
+    // and arguments the live editor renders now, and the editor carries on (nothing validated,
+    // encoded or regenerated again). Where the editor's graph is not what is rendered (a shape
+    // switch in flight, an edit that failed half-way), it starts from Lay and a new editor
+    // applies the edits made since again.
+    std::optional<Layout> Carried = Editor->renderedLayout();
+    auto New = std::make_unique<Renderer>(O.LoadScene(), Carried ? *Carried : Lay, O.Renderer);
     followTiers(*New);
     // A new OpenCL context: primed again after its first complete frame.
     if (Prime.joinable())
       Prime.join();
     Primed = false;
-    // The new renderer has Lay's arguments: the live edits made since are applied again.
-    auto NewEditor = std::make_unique<LiveEditor>(Lay, Regen);
-    std::string Why;
-    if (auto Edits = texcc::graph::diff(NewEditor->graph(), Editor->graph(), Why))
-      NewEditor->apply(*Edits, *New);
+    std::unique_ptr<LiveEditor> NewEditor;
+    if (!Carried) {
+      NewEditor = std::make_unique<LiveEditor>(Lay, Regen);
+      std::string Why;
+      if (auto Edits = texcc::graph::diff(NewEditor->graph(), Editor->graph(), Why))
+        NewEditor->apply(*Edits, *New);
+    }
     R = std::move(New);
-    Editor = std::move(NewEditor);
+    if (NewEditor)
+      Editor = std::move(NewEditor);
     Dirty = true;
     ChangeAt = Noticed;
     say(O.ScenePath + " reloaded");

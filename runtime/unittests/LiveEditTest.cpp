@@ -3,6 +3,7 @@
 // (ids, functions, arguments with their kinds, numbers, integer-ness and bakes, materials in
 // file order) and the same text; numbers that are not exactly representable in decimal
 // round-trip bit for bit; a baked literal is written as {"value": v, "bake": true}.
+#include "texrender/Error.h"
 #include "texrender/LiveEdit.h"
 #include "texrender/Renderer.h"
 
@@ -220,5 +221,53 @@ TEST(LiveEditor, CheckedEditsAreValidatedOnce) {
   Editor.apply(*Diff, R);
   EXPECT_EQ(graph::GraphEditor::validations() - Checks, 3u);
   EXPECT_TRUE(graph::sameGraph(Editor.graph(), Saved));
+  fs::remove_all(Dir);
+}
+
+// The watch session's scene reload: a renderer made from the live editor's rendered layout
+// (its kernel with the args.bin of every edit so far) renders what the renderer before it
+// rendered, and nothing is validated again: the editor carries on. (The reload used to start a
+// new renderer from the session's layout and apply the edits made since to a new editor, each
+// validated a second time.) An edit the renderer never got (its regeneration failed: no texcc)
+// leaves no layout to carry, and the reload falls back to applying the edits again.
+TEST(LiveEditor, ASceneReloadValidatesNothing) {
+  if (listDevices().empty())
+    GTEST_SKIP() << "no OpenCL device: the reload needs renderers";
+  Layout L = loadLayout(std::string(TEXRENDER_SOURCE_DIR) + "/testsuite/Inputs/runtime/const-tex");
+  fs::path Dir = fs::temp_directory_path() / ("texrender-reload-" + std::to_string(::getpid()));
+  fs::create_directories(Dir);
+  RendererOptions O;
+  O.CacheDir = (fs::temp_directory_path() / "texrender-test-cache").string();
+  if (!std::getenv("TEXRENDER_KERNELS"))
+    O.KernelDir = TEXRENDER_KERNEL_DIR;
+  Scene Lit = quadScene(Dir);
+  Light Sky;
+  Sky.Type = "sky";
+  Sky.Radiance = {1, 1, 1};
+  Lit.Lights.push_back(Sky);
+  LiveEditor Editor(L, std::make_shared<const Regenerator>((Dir / "no-texcc").string()));
+  Renderer R(Lit, L, O);
+  ASSERT_TRUE(Editor.renderedLayout());
+  Editor.apply(graphEdit(parseEdit("t.gain=0.5")), R);
+  Editor.apply(graphEdit(parseEdit("t.color=[1, 0.25, 0]")), R);
+  const uint64_t Before = graph::GraphEditor::validations();
+  std::optional<Layout> Carried = Editor.renderedLayout();
+  ASSERT_TRUE(Carried);
+  Renderer Reloaded(Lit, *Carried, O);
+  EXPECT_EQ(graph::GraphEditor::validations(), Before);
+  FrameStats S;
+  const std::vector<float> Edited = R.render(S);
+  EXPECT_EQ(Reloaded.render(S), Edited); // bit for bit
+  Renderer Unedited(Lit, L, O);
+  EXPECT_NE(Unedited.render(S), Edited);
+  // The editor carries on with the reloaded renderer.
+  Editor.apply(graphEdit(parseEdit("t.gain=2")), Reloaded);
+  EXPECT_EQ(graph::GraphEditor::validations() - Before, 1u);
+  ASSERT_TRUE(Editor.renderedLayout());
+  // A normal read by the tint needs a case the interp kernel lacks: a regeneration, which
+  // fails here; the graph editor has the edit, the renderer does not.
+  EXPECT_THROW(Editor.apply(graphEdit(parseEdit(R"(t.color={"attr": "Normal"})")), Reloaded),
+               Error);
+  EXPECT_FALSE(Editor.renderedLayout());
   fs::remove_all(Dir);
 }

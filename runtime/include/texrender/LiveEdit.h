@@ -198,6 +198,14 @@ public:
   /// equal to graph() where it did not change.
   void markCommandLineBakes(texcc::graph::Graph &G) const;
 
+  /// The layout of the kernel the renderer runs, with the arguments of every edit so far (the
+  /// graph editor's args.bin and attributes where the kernel re-encodes): what a new renderer
+  /// of the same graph starts from (the watch session's scene reload), nothing validated or
+  /// encoded again, this editor carrying on with it. std::nullopt while the renderer does not
+  /// run the editor's graph: a shape switch in flight (until the new kernel is adopted), or an
+  /// edit whose upload, regeneration or build failed.
+  std::optional<Layout> renderedLayout() const;
+
   /// Validates Edits, in order, each against the graph as the edits before it leave it (the
   /// graph library's GraphEditor::check): nothing is applied, uploaded, built or rendered.
   /// Returns the first edit that is refused, if any; else Checked holds every edit, checked,
@@ -238,6 +246,10 @@ private:
   // Shape mode: the shapes (graph::shapeHash) of the shape kernel in use or being built; an
   // edit that changes them needs a new shape kernel, one that keeps them is an upload.
   std::string KernelShapeHash;
+  // Whether the renderer runs Lay with the graph editor's arguments (false from an edit's
+  // change of the graph until the renderer has it), and whether a shape switch is in flight
+  // (regenerateInBackground, until its kernel is adopted): renderedLayout.
+  bool Rendered = true, Switching = false;
   // The folders of the regenerated kernel in use and of the one before (the renderer may still
   // read their files: a tier built later, a fallback); older ones are removed.
   std::shared_ptr<const TempFolder> KernelFolder, PreviousFolder;
