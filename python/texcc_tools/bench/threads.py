@@ -93,13 +93,25 @@ class Stressor:
         return ru.ru_utime + ru.ru_stime
 
 
-def texrender(tools, scene, textures, size, spp, threads, name, profile=False):
+def command(tools, scene, textures, size, spp, threads, name):
+    """(output path without extension, texrender's command line) of one render."""
     out = os.path.join(tools.work, name)
-    cmd = [tools.texrender, scene, "--textures", textures, "-o", out + ".png", "--stats",
-           out + ".json", "--quiet", "--cache-dir", tools.cache, "--size", size, "--spp",
-           str(spp)]
-    if threads:
-        cmd += ["--threads", str(threads)]
+    return out, [tools.texrender, scene, "--textures", textures, "-o", out + ".png", "--stats",
+                 out + ".json", "--quiet", "--cache-dir", tools.cache, "--size", size, "--spp",
+                 str(spp)] + (["--threads", str(threads)] if threads else [])
+
+
+def finished(cmd, returncode, err, out):
+    """The stats.json of a render that ended; BenchError if it failed."""
+    if returncode != 0:
+        raise common.BenchError("texrender failed (exit %d): %s\n%s" % (
+            returncode, " ".join(cmd), err.decode()[-2000:]))
+    with open(out + ".json") as f:
+        return json.load(f)
+
+
+def texrender(tools, scene, textures, size, spp, threads, name, profile=False):
+    out, cmd = command(tools, scene, textures, size, spp, threads, name)
     t0 = time.perf_counter()
     p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     samples = collections.Counter() if profile else None
@@ -109,11 +121,7 @@ def texrender(tools, scene, textures, size, spp, threads, name, profile=False):
             time.sleep(0.002)
     out_, err = p.communicate()
     wall = time.perf_counter() - t0
-    if p.returncode != 0:
-        raise common.BenchError("texrender failed (exit %d): %s\n%s" % (
-            p.returncode, " ".join(cmd), err.decode()[-2000:]))
-    with open(out + ".json") as f:
-        stats = json.load(f)
+    stats = finished(cmd, p.returncode, err, out)
     r = {"frame": stats["renderSeconds"], "total": stats["totalSeconds"], "wall": wall,
          "threads": stats["threads"]}
     if profile:
@@ -141,10 +149,7 @@ def texrender_cpu(tools, scene, textures, size, spp, threads, name, waits=False)
     """texrender() with its CPU seconds (wait4: user + sys of the process). waits: also the
     seconds its threads were runnable but not running (schedstat, read every 5 ms: a thread's
     last 5 ms before it ends are missed)."""
-    out = os.path.join(tools.work, name)
-    cmd = [tools.texrender, scene, "--textures", textures, "-o", out + ".png", "--stats",
-           out + ".json", "--quiet", "--cache-dir", tools.cache, "--size", size, "--spp",
-           str(spp)] + (["--threads", str(threads)] if threads else [])
+    out, cmd = command(tools, scene, textures, size, spp, threads, name)
     t0 = time.perf_counter()
     p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     last = {}
@@ -160,11 +165,7 @@ def texrender_cpu(tools, scene, textures, size, spp, threads, name, waits=False)
         _, status, ru = os.wait4(p.pid, 0)
     p.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - t0
-    if p.returncode != 0:
-        raise common.BenchError("texrender failed (exit %d): %s\n%s" % (
-            p.returncode, " ".join(cmd), err.decode()[-2000:]))
-    with open(out + ".json") as f:
-        stats = json.load(f)
+    stats = finished(cmd, p.returncode, err, out)
     # kernelSeconds: the stages' own times (OpenCL profiling start to end, the Embree stages'
     # wall time); the rest of renderSeconds is the host between them: launches, maps, and the
     # hand-offs (a pool's workers woken, the host thread woken when they finish).
