@@ -310,6 +310,48 @@ def autogroup_check(seconds=4.0, cpu=None):
     return out
 
 
+# The scheduler's weights of nice 0 and nice 10 (sched_prio_to_weight): a thread of the renderer
+# sharing a core with one niced stressor thread runs 1024 / (1024 + 110) of the time.
+WEIGHT_NICE0, WEIGHT_NICE10 = 1024, 110
+
+
+def cores_busy(s):
+    """CPU seconds over wall seconds of one render: texrender's whole process (wall), Cycles'
+    render call (raw: its frame with its fixed part); None where not recorded."""
+    wall = s.get("wall", s.get("raw"))
+    return s["cpu"] / wall if "cpu" in s and wall else None
+
+
+def decomposition(runs, loads, renderers):
+    """A frame's growth beside the load, split per round into what the renderer had to do
+    (CPU factor: its CPU seconds beside the load over the same round's quiet ones) and how much
+    of the machine it got (share factor: cores busy quiet over cores busy beside the load);
+    growth = CPU factor x share factor, the fixed parts aside. Beside a niced stressor with a
+    thread per core, a renderer that keeps every core busy gets at best 1024 / (1024 + 110) of
+    each: share factor 1 + 110 / 1024 = 1.107 (the fair-share floor)."""
+    med = common.median
+    out = ["", "| renderer | load | cores busy, quiet | cores busy, load | share factor "
+           "(floor %.3f) | CPU factor | product |" % (1 + WEIGHT_NICE10 / WEIGHT_NICE0),
+           "|---|---|---|---|---|---|---|"]
+    rows = 0
+    for r in renderers:
+        quiet = {s["round"]: s for s in runs.get("quiet/" + r, [])}
+        for l in loads:
+            if l == "quiet":
+                continue
+            pairs = [(quiet[s["round"]], s) for s in runs.get("%s/%s" % (l, r), [])
+                     if s["round"] in quiet and cores_busy(s) and cores_busy(quiet[s["round"]])]
+            if not pairs:
+                continue
+            share = med([cores_busy(q) / cores_busy(s) for q, s in pairs])
+            cpu = med([s["cpu"] / q["cpu"] for q, s in pairs])
+            out.append("| %s | %s | %.2f | %.2f | %.3f | %.3f | %.3f |" % (
+                r, l, med([cores_busy(q) for q, _ in pairs]),
+                med([cores_busy(s) for _, s in pairs]), share, cpu, share * cpu))
+            rows += 1
+    return out if rows else []
+
+
 def report(data):
     """The markdown tables of bench/threads.md from a result file."""
     runs = data["runs"]
@@ -366,6 +408,7 @@ def report(data):
                      if "runQueueWait" in s]
                 cells.append("%.2f" % med(w) if w else "-")
             lines.append("| %s | %s |" % (r, " | ".join(cells)))
+    lines += decomposition(runs, loads, renderers)
     prof = data.get("profile")
     if prof:
         lines.append("")
