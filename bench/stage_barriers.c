@@ -3,10 +3,11 @@
 // stages with a barrier between them ("stages": the threads take chunks of a stage from a
 // shared counter, the last to finish wakes the host thread, which starts the next stage; a
 // thread with no chunk left sleeps on a condition variable until then, as PoCL's pthread
-// workers do at the end of each command). Prints the wall seconds. bench/threads.py
-// --barriers runs it quiet and beside a niced load (bench/threads.md).
+// workers do at the end of each command). With SPIN_US, a thread with no chunk left first
+// polls for the next stage for up to that many microseconds before it sleeps. Prints the wall
+// seconds. bench/barriers.py runs it quiet and beside a niced load (bench/threads.md).
 //
-//   stage_barriers steady|stages STAGES CHUNKS_PER_STAGE
+//   stage_barriers steady|stages STAGES CHUNKS_PER_STAGE [SPIN_US]
 #define _GNU_SOURCE
 #include <pthread.h>
 #include <sched.h>
@@ -39,10 +40,10 @@ static void work(long Chunks) { // a dependent chain: no memory traffic, no vect
   Sink = X;
 }
 
-static long Stages, PerStage;
+static long Stages, PerStage, SpinUs;
 static pthread_mutex_t Lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_cond_t StageStart = PTHREAD_COND_INITIALIZER, StageDone = PTHREAD_COND_INITIALIZER;
-static long Generation; // the stage running (under Lock); -1: quit
+static atomic_long Generation; // the stage running (written under Lock); -1: quit
 static int Finished;    // threads done with it (under Lock)
 static atomic_long Next;
 
@@ -50,6 +51,9 @@ static void *stageWorker(void *Arg) {
   pin((int)(long)Arg);
   long Seen = 0;
   for (;;) {
+    for (const double End = now() + SpinUs * 1e-6; SpinUs && now() < End;)
+      if (atomic_load(&Generation) != Seen)
+        break;
     pthread_mutex_lock(&Lock);
     while (Generation == Seen)
       pthread_cond_wait(&StageStart, &Lock);
@@ -73,12 +77,12 @@ static void *steadyWorker(void *Arg) {
 }
 
 int main(int Argc, char **Argv) {
-  if (Argc != 4 || (strcmp(Argv[1], "steady") && strcmp(Argv[1], "stages"))) {
-    fprintf(stderr, "usage: stage_barriers steady|stages STAGES CHUNKS_PER_STAGE\n");
+  if ((Argc != 4 && Argc != 5) || (strcmp(Argv[1], "steady") && strcmp(Argv[1], "stages"))) {
+    fprintf(stderr, "usage: stage_barriers steady|stages STAGES CHUNKS_PER_STAGE [SPIN_US]\n");
     return 2;
   }
   const int Steady = !strcmp(Argv[1], "steady");
-  Stages = atol(Argv[2]), PerStage = atol(Argv[3]);
+  Stages = atol(Argv[2]), PerStage = atol(Argv[3]), SpinUs = Argc == 5 ? atol(Argv[4]) : 0;
   pthread_t T[Threads];
   const double T0 = now();
   for (long I = 0; I < Threads; ++I)

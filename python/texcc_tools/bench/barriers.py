@@ -4,14 +4,15 @@ item 4, bench/threads.md).
 bench/stage_barriers.c does the same CPU work on two threads pinned to CPUs 0 and 1, either
 straight through ("steady", as Cycles' render threads work) or in stages of a given length
 with a barrier between them (the threads that run out of chunks sleep until the host thread
-starts the next stage, as PoCL's pthread workers do at the end of each command). Each round
+starts the next stage, as PoCL's pthread workers do at the end of each command), and with
+--spin-us, polling for the next stage for up to that long before they sleep. Each round
 runs every (load, configuration) pair once, in an order rotating with the round: quiet
 (nothing added) and nice (`nice -n 10 stress-ng --cpu 2` in this session, bench/threads.py's
 Stressor). The chunk's cost is calibrated once, quiet, before the rounds, so that every
 configuration does the same work; the stage lengths are nominal (quiet).
 
     python3 bench/barriers.py [--rounds 4] [--seconds 2] [--stages-ms 1,5,10,20,40]
-        [--out FILE]
+        [--spin-us 200,1000] [--out FILE]
     python3 bench/barriers.py --report [FILE]
 
 Results: bench/results/barriers.json.
@@ -41,9 +42,10 @@ def wall(exe, argv):
     return float(out)
 
 
-def configurations(exe, seconds, stages_ms):
-    """{name: argv} of the steady run and one staged run per stage length, each `seconds` of
-    work on two threads (quiet), from a quiet calibration of one chunk's cost."""
+def configurations(exe, seconds, stages_ms, spins_us=()):
+    """{name: argv} of the steady run and staged runs per stage length (sleeping at once, then
+    polling for each of spins_us first), each `seconds` of work on two threads (quiet), from a
+    quiet calibration of one chunk's cost."""
     calib = 2000
     chunk = wall(exe, ["steady", "1", str(calib)]) * 2 / calib  # CPU seconds per chunk
     total = int(seconds * 2 / chunk)
@@ -51,11 +53,15 @@ def configurations(exe, seconds, stages_ms):
     for ms in stages_ms:
         per = max(1, int(ms / 1000.0 * 2 / chunk))
         cfgs["stages %g ms" % ms] = ["stages", str(max(1, total // per)), str(per)]
+        for us in spins_us:
+            cfgs["stages %g ms, polling %g us" % (ms, us)] = cfgs["stages %g ms" % ms] + [
+                str(int(us))]
     return cfgs, chunk
 
 
 def measure(args, exe):
-    cfgs, chunk = configurations(exe, args.seconds, [float(x) for x in args.stages_ms.split(",")])
+    cfgs, chunk = configurations(exe, args.seconds, [float(x) for x in args.stages_ms.split(",")],
+                                 [float(x) for x in args.spin_us.split(",") if x])
     common.log("chunk %.1f us; %s" % (chunk * 1e6, cfgs))
     runs = {}
     keys = [(load, c) for load in ("quiet", "nice") for c in cfgs]
@@ -104,6 +110,8 @@ def main():
     ap.add_argument("--rounds", type=int, default=4)
     ap.add_argument("--seconds", type=float, default=2.0, help="work per run, quiet")
     ap.add_argument("--stages-ms", default="1,5,10,20,40")
+    ap.add_argument("--spin-us", default="", help="also each stage length with its threads "
+                    "polling for the next stage this long before they sleep (comma list)")
     ap.add_argument("--out", help="result file (default bench/results/barriers.json)")
     args = ap.parse_args()
     if len(os.sched_getaffinity(0)) < 2:
