@@ -4,10 +4,14 @@
 // shared counter, the last to finish wakes the host thread, which starts the next stage; a
 // thread with no chunk left sleeps on a condition variable until then, as PoCL's pthread
 // workers do at the end of each command). With SPIN_US, a thread with no chunk left first
-// polls for the next stage for up to that many microseconds before it sleeps. Prints the wall
-// seconds. bench/barriers.py runs it quiet and beside a niced load (bench/threads.md).
+// polls for the next stage for up to that many microseconds before it sleeps. "halves" splits
+// every stage into two independent halves (two chains of STAGES stages of CHUNKS_PER_STAGE / 2
+// chunks, as two halves of a pass's paths would be): a thread takes a chunk of either chain's
+// current stage, and a chain's next stage starts when its current one is done, so a thread
+// waits only when both chains wait. Prints the wall seconds. bench/barriers.py runs it quiet
+// and beside a niced load (bench/threads.md).
 //
-//   stage_barriers steady|stages STAGES CHUNKS_PER_STAGE [SPIN_US]
+//   stage_barriers steady|stages|halves STAGES CHUNKS_PER_STAGE [SPIN_US]
 #define _GNU_SOURCE
 #include <pthread.h>
 #include <sched.h>
@@ -70,6 +74,50 @@ static void *stageWorker(void *Arg) {
   }
 }
 
+typedef struct {
+  long Stage;             // the current stage, 0..Stages (done)
+  long Dealt, Done;       // chunks of it handed out, finished
+} Chain;
+static Chain Chains[2]; // under Lock
+
+/// A chunk of either chain's current stage (Chain index), or -1 with Lock held to wait; -2 when
+/// both chains are done.
+static int takeChunk(int Prefer) {
+  for (int K = 0; K < 2; ++K) {
+    Chain *C = &Chains[(Prefer + K) % 2];
+    if (C->Stage < Stages && C->Dealt < PerStage / 2) {
+      ++C->Dealt;
+      return (Prefer + K) % 2;
+    }
+  }
+  return Chains[0].Stage == Stages && Chains[1].Stage == Stages ? -2 : -1;
+}
+
+static void *halvesWorker(void *Arg) {
+  const int Me = (int)(long)Arg;
+  pin(Me);
+  pthread_mutex_lock(&Lock);
+  for (;;) {
+    const int C = takeChunk(Me);
+    if (C == -2)
+      break;
+    if (C == -1) {
+      pthread_cond_wait(&StageStart, &Lock);
+      continue;
+    }
+    pthread_mutex_unlock(&Lock);
+    work(1);
+    pthread_mutex_lock(&Lock);
+    if (++Chains[C].Done == PerStage / 2) { // the chain's stage is done: its next one starts
+      ++Chains[C].Stage;
+      Chains[C].Dealt = Chains[C].Done = 0;
+      pthread_cond_broadcast(&StageStart);
+    }
+  }
+  pthread_mutex_unlock(&Lock);
+  return NULL;
+}
+
 static void *steadyWorker(void *Arg) {
   pin((int)(long)Arg);
   work(Stages * PerStage / Threads);
@@ -77,17 +125,19 @@ static void *steadyWorker(void *Arg) {
 }
 
 int main(int Argc, char **Argv) {
-  if ((Argc != 4 && Argc != 5) || (strcmp(Argv[1], "steady") && strcmp(Argv[1], "stages"))) {
-    fprintf(stderr, "usage: stage_barriers steady|stages STAGES CHUNKS_PER_STAGE [SPIN_US]\n");
+  if ((Argc != 4 && Argc != 5) ||
+      (strcmp(Argv[1], "steady") && strcmp(Argv[1], "stages") && strcmp(Argv[1], "halves"))) {
+    fprintf(stderr, "usage: stage_barriers steady|stages|halves STAGES CHUNKS_PER_STAGE [SPIN_US]\n");
     return 2;
   }
-  const int Steady = !strcmp(Argv[1], "steady");
+  const int Steady = !strcmp(Argv[1], "steady"), Halves = !strcmp(Argv[1], "halves");
   Stages = atol(Argv[2]), PerStage = atol(Argv[3]), SpinUs = Argc == 5 ? atol(Argv[4]) : 0;
   pthread_t T[Threads];
   const double T0 = now();
   for (long I = 0; I < Threads; ++I)
-    pthread_create(&T[I], NULL, Steady ? steadyWorker : stageWorker, (void *)I);
-  for (long S = 1; !Steady && S <= Stages; ++S) {
+    pthread_create(&T[I], NULL, Steady ? steadyWorker : Halves ? halvesWorker : stageWorker,
+                   (void *)I);
+  for (long S = 1; !Steady && !Halves && S <= Stages; ++S) {
     pthread_mutex_lock(&Lock);
     atomic_store(&Next, 0);
     Finished = 0;
@@ -97,7 +147,7 @@ int main(int Argc, char **Argv) {
       pthread_cond_wait(&StageDone, &Lock);
     pthread_mutex_unlock(&Lock);
   }
-  if (!Steady) {
+  if (!Steady && !Halves) {
     pthread_mutex_lock(&Lock);
     Generation = -1;
     pthread_cond_broadcast(&StageStart);

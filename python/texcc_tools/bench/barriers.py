@@ -5,14 +5,16 @@ bench/stage_barriers.c does the same CPU work on two threads pinned to CPUs 0 an
 straight through ("steady", as Cycles' render threads work) or in stages of a given length
 with a barrier between them (the threads that run out of chunks sleep until the host thread
 starts the next stage, as PoCL's pthread workers do at the end of each command), and with
---spin-us, polling for the next stage for up to that long before they sleep. Each round
+--spin-us, polling for the next stage for up to that long before they sleep; with --halves,
+also each stage split into two independent halves (two chains of stages, each half as wide: a
+thread whose chain waits at a barrier takes chunks of the other). Each round
 runs every (load, configuration) pair once, in an order rotating with the round: quiet
 (nothing added) and nice (`nice -n 10 stress-ng --cpu 2` in this session, bench/threads.py's
 Stressor). The chunk's cost is calibrated once, quiet, before the rounds, so that every
 configuration does the same work; the stage lengths are nominal (quiet).
 
     python3 bench/barriers.py [--rounds 4] [--seconds 2] [--stages-ms 1,5,10,20,40]
-        [--spin-us 200,1000] [--out FILE]
+        [--spin-us 200,1000] [--halves] [--out FILE]
     python3 bench/barriers.py --report [FILE]
 
 Results: bench/results/barriers.json.
@@ -42,7 +44,7 @@ def wall(exe, argv):
     return float(out)
 
 
-def configurations(exe, seconds, stages_ms, spins_us=()):
+def configurations(exe, seconds, stages_ms, spins_us=(), halves=False):
     """{name: argv} of the steady run and staged runs per stage length (sleeping at once, then
     polling for each of spins_us first), each `seconds` of work on two threads (quiet), from a
     quiet calibration of one chunk's cost."""
@@ -56,12 +58,14 @@ def configurations(exe, seconds, stages_ms, spins_us=()):
         for us in spins_us:
             cfgs["stages %g ms, polling %g us" % (ms, us)] = cfgs["stages %g ms" % ms] + [
                 str(int(us))]
+        if halves:
+            cfgs["stages %g ms in two halves" % ms] = ["halves"] + cfgs["stages %g ms" % ms][1:]
     return cfgs, chunk
 
 
 def measure(args, exe):
     cfgs, chunk = configurations(exe, args.seconds, [float(x) for x in args.stages_ms.split(",")],
-                                 [float(x) for x in args.spin_us.split(",") if x])
+                                 [float(x) for x in args.spin_us.split(",") if x], args.halves)
     common.log("chunk %.1f us; %s" % (chunk * 1e6, cfgs))
     runs = {}
     keys = [(load, c) for load in ("quiet", "nice") for c in cfgs]
@@ -112,6 +116,8 @@ def main():
     ap.add_argument("--stages-ms", default="1,5,10,20,40")
     ap.add_argument("--spin-us", default="", help="also each stage length with its threads "
                     "polling for the next stage this long before they sleep (comma list)")
+    ap.add_argument("--halves", action="store_true",
+                    help="also each stage length split into two independent halves")
     ap.add_argument("--out", help="result file (default bench/results/barriers.json)")
     args = ap.parse_args()
     if len(os.sched_getaffinity(0)) < 2:
