@@ -64,8 +64,7 @@ def configurations(exe, seconds, stages_ms, spins_us=(), halves=False):
 
 
 def measure(args, exe):
-    cfgs, chunk = configurations(exe, args.seconds, [float(x) for x in args.stages_ms.split(",")],
-                                 [float(x) for x in args.spin_us.split(",") if x], args.halves)
+    cfgs, chunk = configurations(exe, args.seconds, args.stages_ms, args.spin_us, args.halves)
     common.log("chunk %.1f us; %s" % (chunk * 1e6, cfgs))
     runs = {}
     keys = [(load, c) for load in ("quiet", "nice") for c in cfgs]
@@ -89,7 +88,9 @@ def report(data):
     runs = data["runs"]
     lines = ["| configuration | quiet | nice | growth (paired) | the stressor's CPU s |",
              "|---|---|---|---|---|"]
-    for c in data["configurations"]:
+    order = sorted(data["configurations"], key=lambda c: (c != "steady", float(
+        c.split()[1]) if c != "steady" else 0.0, c))  # saved files sort their keys
+    for c in order:
         q, n = runs["quiet/" + c], runs["nice/" + c]
         quiet = {s["round"]: s["wall"] for s in q}
         paired = [s["wall"] / quiet[s["round"]] - 1 for s in n if s["round"] in quiet]
@@ -104,17 +105,31 @@ def report(data):
     return "\n".join(lines)
 
 
+def numbers(text):
+    """A comma list of positive numbers (argparse type)."""
+    try:
+        values = [float(x) for x in text.split(",") if x]
+    except ValueError:
+        values = []
+    if not values or min(values) <= 0:
+        raise argparse.ArgumentTypeError("expected positive numbers separated by commas: %r" % text)
+    return values
+
+
 def main():
     if sys.argv[1:2] == ["--report"]:
         path = sys.argv[2] if len(sys.argv) > 2 else os.path.join(common.RESULTS, "barriers.json")
-        with open(path) as f:
-            print(report(json.load(f)))
+        try:
+            with open(path) as f:
+                print(report(json.load(f)))
+        except (OSError, ValueError, KeyError) as e:
+            raise common.BenchError("%s: not a bench/barriers.py result (%s)" % (path, e))
         return
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rounds", type=int, default=4)
     ap.add_argument("--seconds", type=float, default=2.0, help="work per run, quiet")
-    ap.add_argument("--stages-ms", default="1,5,10,20,40")
-    ap.add_argument("--spin-us", default="", help="also each stage length with its threads "
+    ap.add_argument("--stages-ms", type=numbers, default=[1, 5, 10, 20, 40])
+    ap.add_argument("--spin-us", type=numbers, default=[], help="also each stage length with its threads "
                     "polling for the next stage this long before they sleep (comma list)")
     ap.add_argument("--halves", action="store_true",
                     help="also each stage length split into two independent halves")

@@ -354,6 +354,10 @@ def decomposition(runs, loads, renderers):
 
 def report(data):
     """The markdown tables of bench/threads.md from a result file."""
+    if "autogroupCheck" in data:  # --autogroup-check's file
+        return "\n".join(["| case | A's CPU s | B's CPU s | B's share |", "|---|---|---|---|"] + [
+            "| %s | %.2f | %.2f | %.0f%% |" % (c, v["A"], v["B"], 100 * v["B share"])
+            for c, v in data["autogroupCheck"].items()])
     runs = data["runs"]
     loads = sorted({c.split("/")[0] for c in runs}, key=["quiet", "nice", "nice-setsid"].index)
     renderers = sorted({c.split("/")[1] for c in runs})
@@ -424,9 +428,12 @@ def report(data):
 
 def main():
     if sys.argv[1:2] == ["--report"]:
-        with open(sys.argv[2] if len(sys.argv) > 2 else
-                  os.path.join(common.RESULTS, "threads.json")) as f:
-            print(report(json.load(f)))
+        path = sys.argv[2] if len(sys.argv) > 2 else os.path.join(common.RESULTS, "threads.json")
+        try:
+            with open(path) as f:
+                print(report(json.load(f)))
+        except (OSError, ValueError, KeyError) as e:
+            raise common.BenchError("%s: not a bench/threads.py result (%s)" % (path, e))
         return
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
