@@ -1,0 +1,116 @@
+"""Figure: the frame of bench/threads.py (the atrium with rust everywhere) rendered whole by one
+texrender (its default threads: the stages shared by both cores, a barrier at each stage's end)
+and as two lanes: two `texrender --threads 1` processes at once, each rendering half of the film
+(`--region`, the top and bottom halves; stitched, the halves equal the whole bit for bit,
+docs/runtime.md), so that no stage waits for a thread on the other core. Quiet and beside
+`nice -n 10 stress-ng --cpu 2` in this session (bench/threads.py's Stressor); each round runs
+every (load, configuration) pair once, in an order rotating with the round. The time of the
+lanes is the wall time until both have ended; `frame` is the longer of their renderSeconds
+(issue 39 item 4, bench/threads.md).
+
+    python3 bench/lanes.py [--build DIR] [--rounds 5] [--size 512x512] [--spp 16] [--out FILE]
+    python3 bench/lanes.py --report [FILE]
+
+Results: bench/results/lanes.json.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+from texcc_tools.bench import common, texture_speed
+from texcc_tools.bench import threads as th
+
+CONFIGS = ("whole", "lanes")
+
+
+def render(tools, scene, textures, size, spp, lanes):
+    """(wall seconds, frame seconds) of the whole frame or of its two lanes."""
+    w, h = (int(x) for x in size.split("x"))
+    jobs = [[]] if not lanes else [
+        ["--threads", "1", "--region", "0,0,%d,%d" % (w, h // 2)],
+        ["--threads", "1", "--region", "0,%d,%d,%d" % (h // 2, w, h - h // 2)]]
+    outs = [os.path.join(tools.work, "lane%d" % i) for i in range(len(jobs))]
+    t0 = time.perf_counter()
+    procs = []
+    for out, extra in zip(outs, jobs):
+        cmd = th.command(tools, scene, textures, size, spp, 0, os.path.basename(out))[1] + extra
+        procs.append((cmd, out, subprocess.Popen(cmd, stdout=subprocess.DEVNULL,
+                                                 stderr=subprocess.PIPE)))
+    frames = []
+    for cmd, out, p in procs:
+        _, err = p.communicate()
+        frames.append(th.finished(cmd, p.returncode, err, out)["renderSeconds"])
+    return time.perf_counter() - t0, max(frames)
+
+
+def measure(args, tools):
+    scene, textures = th.inputs(tools)
+    render(tools, scene, textures, args.size, args.spp, False)  # warm: kernels cached
+    runs = {}
+    keys = [(load, c) for load in ("quiet", "nice") for c in CONFIGS]
+    for r in range(args.rounds):
+        k = r % len(keys)
+        for load, c in keys[k:] + keys[:k]:
+            before = os.getloadavg()[0]
+            stressor = th.Stressor(load, 2)
+            try:
+                wall, frame = render(tools, scene, textures, args.size, args.spp, c == "lanes")
+            finally:
+                stress = stressor.stop()
+            runs.setdefault("%s/%s" % (load, c), []).append(
+                {"round": r, "wall": wall, "frame": frame, "stressCpu": stress,
+                 "load1Before": before})
+            common.log("round %d/%d %s %s: %.2f s" % (r + 1, args.rounds, load, c, wall))
+    return {"runs": runs}
+
+
+def report(data):
+    med = common.median
+    runs = data["runs"]
+    lines = ["| configuration | quiet (wall) | nice (wall) | growth (paired) | frame quiet / nice "
+             "| the stressor's CPU s |", "|---|---|---|---|---|---|"]
+    for c in CONFIGS:
+        q, n = runs["quiet/" + c], runs["nice/" + c]
+        quiet = {s["round"]: s["wall"] for s in q}
+        paired = [s["wall"] / quiet[s["round"]] - 1 for s in n if s["round"] in quiet]
+        lines.append("| %s | %.2f s (%s) | %.2f s (%s) | %+.1f%% (%+.1f%%) | %.2f / %.2f s | %.2f |" % (
+            c, med([s["wall"] for s in q]), ", ".join("%.2f" % s["wall"] for s in q),
+            med([s["wall"] for s in n]), ", ".join("%.2f" % s["wall"] for s in n),
+            100 * (med([s["wall"] for s in n]) / med([s["wall"] for s in q]) - 1),
+            100 * med(paired), med([s["frame"] for s in q]), med([s["frame"] for s in n]),
+            med([s["stressCpu"] for s in n])))
+    every = [s for v in runs.values() for s in v]
+    lines.append("")
+    lines.append("Load average (1 min) before the renders: %.1f-%.1f." % (
+        min(s["load1Before"] for s in every), max(s["load1Before"] for s in every)))
+    return "\n".join(lines)
+
+
+def main():
+    if sys.argv[1:2] == ["--report"]:
+        path = sys.argv[2] if len(sys.argv) > 2 else os.path.join(common.RESULTS, "lanes.json")
+        try:
+            with open(path) as f:
+                print(report(json.load(f)))
+        except (OSError, ValueError, KeyError) as e:
+            raise common.BenchError("%s: not a bench/lanes.py result (%s)" % (path, e))
+        return
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
+    ap.add_argument("--rounds", type=int, default=5)
+    ap.add_argument("--size", default="512x512")
+    ap.add_argument("--spp", type=int, default=16)
+    ap.add_argument("--out", help="result file (default bench/results/lanes.json)")
+    args = ap.parse_args()
+    t0 = time.perf_counter()
+    tools = texture_speed.bench_tools(args.build, tempfile.mkdtemp(prefix="texcc-lanes-"))
+    data = measure(args, tools)
+    data.update(command="python3 bench/lanes.py " + " ".join(sys.argv[1:]),
+                date=time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), git=common.git_head(),
+                machine=common.machine(), seconds=time.perf_counter() - t0, complete=True)
+    common.save("lanes", data, args.out)
+    print(report(data))
