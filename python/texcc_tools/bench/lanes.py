@@ -6,9 +6,12 @@ docs/runtime.md), so that no stage waits for a thread on the other core. Quiet a
 `nice -n 10 stress-ng --cpu 2` in this session (bench/threads.py's Stressor); each round runs
 every (load, configuration) pair once, in an order rotating with the round. The time of the
 lanes is the wall time until both have ended; `frame` is the longer of their renderSeconds
-(issue 39 item 4, bench/threads.md).
+(issue 39 item 4, bench/threads.md). --cycles adds Cycles (bpy) rendering the same scene's
+.blend in the same rounds, measured as bench/threads.py measures it: its wall time is that of
+bpy.ops.render.render() in a warm bpy process, its frame that less the fixed part.
 
-    python3 bench/lanes.py [--build DIR] [--rounds 5] [--size 512x512] [--spp 16] [--out FILE]
+    python3 bench/lanes.py [--build DIR] [--rounds 5] [--size 512x512] [--spp 16]
+        [--cycles [--blend B]] [--out FILE]
     python3 bench/lanes.py --report [FILE]
 
 Results: bench/results/lanes.json.
@@ -21,10 +24,10 @@ import sys
 import tempfile
 import time
 
-from texcc_tools.bench import common, texture_speed
+from texcc_tools.bench import common, cycles, texture_speed
 from texcc_tools.bench import threads as th
 
-CONFIGS = ("whole", "lanes")
+CONFIGS = ("whole", "lanes", "cycles")
 
 
 def render(tools, scene, textures, size, spp, lanes):
@@ -51,21 +54,38 @@ def measure(args, tools):
     scene, textures = th.inputs(tools)
     render(tools, scene, textures, args.size, args.spp, False)  # warm: kernels cached
     runs = {}
-    keys = [(load, c) for load in ("quiet", "nice") for c in CONFIGS]
+    w, h = (int(x) for x in args.size.split("x"))
+    cyc, fixed = None, []
+    if args.cycles:
+        blend = args.blend or cycles.make_blends(tools, ("rust-all",))["rust-all"]
+        cyc = cycles.Cycles()
+        cyc.call(op="render", blend=blend, size=[w, h], spp=1)  # warm
+        fixed = [cyc.call(op="render", blend=blend, size=[16, 16], spp=1)["seconds"]
+                 for _ in range(3)]
+
+    def one(c):
+        if c != "cycles":
+            return render(tools, scene, textures, args.size, args.spp, c == "lanes")
+        raw = cyc.call(op="render", blend=blend, size=[w, h], spp=args.spp)["seconds"]
+        return raw, raw - common.median(fixed)
+
+    keys = [(load, c) for load in ("quiet", "nice") for c in CONFIGS if c != "cycles" or cyc]
     for r in range(args.rounds):
         k = r % len(keys)
         for load, c in keys[k:] + keys[:k]:
             before = os.getloadavg()[0]
             stressor = th.Stressor(load, 2)
             try:
-                wall, frame = render(tools, scene, textures, args.size, args.spp, c == "lanes")
+                wall, frame = one(c)
             finally:
                 stress = stressor.stop()
             runs.setdefault("%s/%s" % (load, c), []).append(
                 {"round": r, "wall": wall, "frame": frame, "stressCpu": stress,
                  "load1Before": before})
             common.log("round %d/%d %s %s: %.2f s" % (r + 1, args.rounds, load, c, wall))
-    return {"runs": runs}
+    if cyc:
+        cyc.close()
+    return {"runs": runs, "cyclesFixed": fixed}
 
 
 def report(data):
@@ -73,7 +93,7 @@ def report(data):
     runs = data["runs"]
     lines = ["| configuration | quiet (wall) | nice (wall) | growth (paired) | frame quiet / nice "
              "| the stressor's CPU s |", "|---|---|---|---|---|---|"]
-    for c in CONFIGS:
+    for c in (c for c in CONFIGS if "quiet/" + c in runs):
         q, n = runs["quiet/" + c], runs["nice/" + c]
         quiet = {s["round"]: s["wall"] for s in q}
         paired = [s["wall"] / quiet[s["round"]] - 1 for s in n if s["round"] in quiet]
@@ -104,8 +124,12 @@ def main():
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--size", default="512x512")
     ap.add_argument("--spp", type=int, default=16)
+    ap.add_argument("--cycles", action="store_true", help="Cycles (bpy) in the same rounds")
+    ap.add_argument("--blend", help="the rust-all .blend (default: made by make_scene.py)")
     ap.add_argument("--out", help="result file (default bench/results/lanes.json)")
     args = ap.parse_args()
+    if args.cycles:
+        cycles.ensure_bpy()
     t0 = time.perf_counter()
     tools = texture_speed.bench_tools(args.build, tempfile.mkdtemp(prefix="texcc-lanes-"))
     data = measure(args, tools)
