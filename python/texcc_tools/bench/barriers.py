@@ -20,7 +20,6 @@ configuration does the same work; the stage lengths are nominal (quiet).
 Results: bench/results/barriers.json.
 """
 import argparse
-import json
 import os
 import subprocess
 import sys
@@ -118,12 +117,7 @@ def numbers(text):
 
 def main():
     if sys.argv[1:2] == ["--report"]:
-        path = sys.argv[2] if len(sys.argv) > 2 else os.path.join(common.RESULTS, "barriers.json")
-        try:
-            with open(path) as f:
-                print(report(json.load(f)))
-        except (OSError, ValueError, KeyError) as e:
-            raise common.BenchError("%s: not a bench/barriers.py result (%s)" % (path, e))
+        common.print_report("barriers", sys.argv[2:3], report)
         return
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rounds", type=int, default=4)

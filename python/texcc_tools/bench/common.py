@@ -195,6 +195,18 @@ def save(name, data, path=None):
     return path
 
 
+def print_report(name, argv, report):
+    """`bench/NAME.py --report [FILE]`: prints report(the result) of FILE, by default
+    bench/results/NAME.json; BenchError naming the file if it cannot be read or is not one."""
+    path = argv[0] if argv else os.path.join(RESULTS, name + ".json")
+    try:
+        with open(path) as f:
+            text = report(json.load(f))
+    except (OSError, ValueError, KeyError) as e:
+        raise BenchError("%s: not a bench/%s.py result (%s)" % (path, name, e))
+    print(text)
+
+
 def load(name):
     path = os.path.join(RESULTS, name + ".json")
     if not os.path.exists(path):

@@ -428,12 +428,7 @@ def report(data):
 
 def main():
     if sys.argv[1:2] == ["--report"]:
-        path = sys.argv[2] if len(sys.argv) > 2 else os.path.join(common.RESULTS, "threads.json")
-        try:
-            with open(path) as f:
-                print(report(json.load(f)))
-        except (OSError, ValueError, KeyError) as e:
-            raise common.BenchError("%s: not a bench/threads.py result (%s)" % (path, e))
+        common.print_report("threads", sys.argv[2:3], report)
         return
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
