@@ -104,26 +104,17 @@ def report(data):
     return "\n".join(lines)
 
 
-def numbers(text):
-    """A comma list of positive numbers (argparse type)."""
-    try:
-        values = [float(x) for x in text.split(",") if x]
-    except ValueError:
-        values = []
-    if not values or min(values) <= 0:
-        raise argparse.ArgumentTypeError("expected positive numbers separated by commas: %r" % text)
-    return values
-
-
 def main():
     if sys.argv[1:2] == ["--report"]:
         common.print_report("barriers", sys.argv[2:3], report)
         return
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--rounds", type=int, default=4)
-    ap.add_argument("--seconds", type=float, default=2.0, help="work per run, quiet")
-    ap.add_argument("--stages-ms", type=numbers, default=[1, 5, 10, 20, 40])
-    ap.add_argument("--spin-us", type=numbers, default=[], help="also each stage length with its threads "
+    ap.add_argument("--rounds", type=common.positive_int, default=4)
+    ap.add_argument("--seconds", type=common.positive_number, default=2.0,
+                    help="work per run, quiet")
+    ap.add_argument("--stages-ms", type=common.positive_numbers, default=[1, 5, 10, 20, 40])
+    ap.add_argument("--spin-us", type=common.positive_numbers, default=[],
+                    help="also each stage length with its threads "
                     "polling for the next stage this long before they sleep (comma list)")
     ap.add_argument("--halves", action="store_true",
                     help="also each stage length split into two independent halves")

@@ -1,6 +1,7 @@
 """Shared helpers of the benchmarks: running texcc and texrender, reading stats.json, medians,
 the machine description. Every helper raises BenchError on a failed measurement so that
 bench/run exits non-zero."""
+import argparse
 import contextlib
 import json
 import os
@@ -193,6 +194,48 @@ def save(name, data, path=None):
         f.write("\n")
     log("wrote " + path)
     return path
+
+
+# argparse types of the figure scripts' options: a bad value ends the script with argparse's
+# "NAME: error: argument --OPT: ..." before anything runs.
+def positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError("expected a positive integer, got %r" % text)
+    return value
+
+
+def positive_numbers(text):
+    """A comma list of positive numbers."""
+    try:
+        values = [float(x) for x in text.split(",") if x]
+    except ValueError:
+        values = []
+    if not values or min(values) <= 0:
+        raise argparse.ArgumentTypeError("expected positive numbers separated by commas, got %r"
+                                         % text)
+    return values
+
+
+def positive_number(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = 0.0
+    if not value > 0:
+        raise argparse.ArgumentTypeError("expected a positive number, got %r" % text)
+    return value
+
+
+def film_size(text):
+    """WxH with positive integers, kept as the text texrender's --size takes."""
+    parts = text.split("x")
+    if len(parts) != 2 or not all(x.isdigit() and int(x) > 0 for x in parts):
+        raise argparse.ArgumentTypeError("expected WxH (positive integers), got %r" % text)
+    return text
 
 
 def print_report(name, argv, report):

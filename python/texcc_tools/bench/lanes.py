@@ -96,7 +96,8 @@ def report(data):
         q, n = runs["quiet/" + c], runs["nice/" + c]
         quiet = {s["round"]: s["wall"] for s in q}
         paired = [s["wall"] / quiet[s["round"]] - 1 for s in n if s["round"] in quiet]
-        lines.append("| %s | %.2f s (%s) | %.2f s (%s) | %+.1f%% (%+.1f%%) | %.2f / %.2f s | %.2f |" % (
+        row = "| %s | %.2f s (%s) | %.2f s (%s) | %+.1f%% (%+.1f%%) | %.2f / %.2f s | %.2f |"
+        lines.append(row % (
             c, med([s["wall"] for s in q]), ", ".join("%.2f" % s["wall"] for s in q),
             med([s["wall"] for s in n]), ", ".join("%.2f" % s["wall"] for s in n),
             100 * (med([s["wall"] for s in n]) / med([s["wall"] for s in q]) - 1),
@@ -115,9 +116,9 @@ def main():
         return
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default=os.path.join(common.ROOT, "build"))
-    ap.add_argument("--rounds", type=int, default=5)
-    ap.add_argument("--size", default="512x512")
-    ap.add_argument("--spp", type=int, default=16)
+    ap.add_argument("--rounds", type=common.positive_int, default=5)
+    ap.add_argument("--size", type=common.film_size, default="512x512")
+    ap.add_argument("--spp", type=common.positive_int, default=16)
     ap.add_argument("--cycles", action="store_true", help="Cycles (bpy) in the same rounds")
     ap.add_argument("--blend", help="the rust-all .blend (default: made by make_scene.py)")
     ap.add_argument("--out", help="result file (default bench/results/lanes.json)")
