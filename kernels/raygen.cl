@@ -4,19 +4,21 @@
  * Mitsuba's `box` rfilter), from the camera pattern of the Owen-scrambled Sobol sampler
  * (rt_sampling.h). The random stream, the sampler's pixel key and RtPath.pixel use the
  * full-film pixel index, so that a region renders exactly the pixels of a whole render
- * (texrender --region). The path keeps its sample index in origin.w and the pixel key in
+ * (texrender --region). rowStep > 1 renders every rowStep-th row of the region from its
+ * first (a lane of a frame: texrender's lanes, Lanes.h); regionY + r * rowStep is row r's film
+ * row. The path keeps its sample index in origin.w and the pixel key in
  * throughput.w (as uint bits) for the sampler's later dimensions (shade.cl). */
 #include "rt_sampling.h"
 #include "rt_types.h"
 
 __kernel void raygen(__global RtPath *paths, __global int *active, __global const RtCamera *camera,
                      int width, int height, int sppPerPass, int passStart, uint seed,
-                     int numPaths, int regionX, int regionY, int regionWidth) {
+                     int numPaths, int regionX, int regionY, int regionWidth, int rowStep) {
   int i = get_global_id(0);
   if (i >= numPaths)
     return;
   int inRegion = i / sppPerPass;
-  int x = regionX + inRegion % regionWidth, y = regionY + inRegion / regionWidth;
+  int x = regionX + inRegion % regionWidth, y = regionY + (inRegion / regionWidth) * rowStep;
   int pixel = y * width + x;
   int sample = passStart + i % sppPerPass;
   uint rng = rt_seed((uint)pixel, (uint)sample, seed);

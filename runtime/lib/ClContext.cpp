@@ -68,6 +68,7 @@ unsigned ThreadsGiven = 0; // setRenderThreads's N; 0: every core
 bool PoolSized = false;    // sizePoclPool ran: the count is fixed for the process
 bool Pinned = false;       // each pool's thread I runs on CPU I (sizePoclPool)
 std::mutex PoolMutex;
+thread_local bool OnLane = false; // the calling thread is a lane's (LaneThread)
 } // namespace
 
 static unsigned coresAvailable() {
@@ -78,7 +79,18 @@ static unsigned coresAvailable() {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-unsigned renderThreads() { return ThreadsGiven ? ThreadsGiven : coresAvailable(); }
+unsigned renderThreads() {
+  if (OnLane)
+    return 1;
+  return ThreadsGiven ? ThreadsGiven : coresAvailable();
+}
+
+LaneThread::LaneThread(unsigned I) {
+  OnLane = true;
+  pinRenderThread(I);
+}
+
+LaneThread::~LaneThread() { OnLane = false; }
 
 bool renderThreadsGiven() { return ThreadsGiven != 0; }
 
@@ -127,8 +139,9 @@ static void sizePoclPool(unsigned N) {
   ThreadsGiven = N;
   if (!N && std::getenv("POCL_MAX_PTHREAD_COUNT"))
     return;
-  const std::string Count = std::to_string(renderThreads());
-  Pinned = pinnable(renderThreads());
+  const unsigned Pool = ThreadsGiven ? ThreadsGiven : coresAvailable();
+  const std::string Count = std::to_string(Pool);
+  Pinned = pinnable(Pool);
   if (Pinned)
     setenv("POCL_AFFINITY", "1", 1);
   else
@@ -217,7 +230,8 @@ std::vector<std::string> listDevices() {
   return Names;
 }
 
-ClContext::ClContext(int DeviceIndex, std::string CacheDirIn) : CacheDir(std::move(CacheDirIn)) {
+ClContext::ClContext(int DeviceIndex, std::string CacheDirIn, int Lane)
+    : CacheDir(std::move(CacheDirIn)) {
   DiscoveryFailure Failure;
   auto Devs = allDevices(&Failure);
   if (Devs.empty())
@@ -229,14 +243,35 @@ ClContext::ClContext(int DeviceIndex, std::string CacheDirIn) : CacheDir(std::mo
   Device = Devs[DeviceIndex].first;
   DeviceName = Devs[DeviceIndex].second;
   try {
-    Ctx = cl::Context(Device);
-    Queue = cl::CommandQueue(Ctx, Device, CL_QUEUE_PROFILING_ENABLE);
+    // The program cache's key stays the whole device's: a sub-device runs the same binaries.
     DeviceKey = DeviceName + "|" + Device.getInfo<CL_DRIVER_VERSION>() + "|" +
                 Device.getInfo<CL_DEVICE_VERSION>();
+    if (Lane >= 0) {
+      if (unsigned(Lane) >= laneCapacity())
+        throw Error("OpenCL device '" + DeviceName + "' has no lane " + std::to_string(Lane) +
+                    " (it splits into " + std::to_string(laneCapacity()) + " one-unit parts)");
+      const cl_device_partition_property Equally[] = {CL_DEVICE_PARTITION_EQUALLY, 1, 0};
+      std::vector<cl::Device> Parts;
+      Device.createSubDevices(Equally, &Parts);
+      Device = Parts.at(size_t(Lane));
+    }
+    Ctx = cl::Context(Device);
+    Queue = cl::CommandQueue(Ctx, Device, CL_QUEUE_PROFILING_ENABLE);
   } catch (const cl::Error &E) {
     throw Error(std::string("cannot open OpenCL device '") + DeviceName + "': " + E.what() +
                 " failed with " + clErrorName(E.err()));
   }
+}
+
+unsigned ClContext::laneCapacity() {
+  try {
+    for (cl_device_partition_property P : Device.getInfo<CL_DEVICE_PARTITION_PROPERTIES>())
+      if (P == CL_DEVICE_PARTITION_EQUALLY)
+        return Device.getInfo<CL_DEVICE_PARTITION_MAX_SUB_DEVICES>();
+  } catch (const cl::Error &) {
+    // A device that cannot say: no lanes.
+  }
+  return 0;
 }
 
 std::string ClContext::cachePath(const std::string &Key) const {

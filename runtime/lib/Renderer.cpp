@@ -113,11 +113,14 @@ bool quickFirstBuildDefault() {
 Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
     : SceneDesc(S), Lay(L), Opts(O), Settings(S.Render), Epoch(steadySeconds()) {
   KernelDir = Opts.KernelDir.empty() ? kernelDirectory() : Opts.KernelDir;
-  {
+  if (Opts.Prebuilt) {
+    Data = *Opts.Prebuilt;
+    Opts.Prebuilt = nullptr; // not kept: the caller's may go
+  } else {
     SlowStep Step("building the scene's acceleration structures");
     Data = buildSceneData(S, L);
   }
-  Cl = std::make_unique<ClContext>(Opts.Device, Opts.CacheDir);
+  Cl = std::make_unique<ClContext>(Opts.Device, Opts.CacheDir, Opts.Lane);
   // scripts/build.sh prebuilds the fixed kernels into build/programs, beside build/kernels;
   // $TEXRENDER_PREBUILT_DIR names another folder ("": none). --no-cache uses neither.
   if (!Opts.CacheDir.empty()) {
@@ -496,6 +499,7 @@ std::vector<float> Renderer::render(FrameStats &Stats, std::vector<float> *Varia
       RG.setArg(3, cl_int(W)), RG.setArg(4, cl_int(H)), RG.setArg(5, cl_int(Now));
       RG.setArg(6, cl_int(Done)), RG.setArg(7, cl_uint(Settings.Seed)), RG.setArg(8, cl_int(N));
       RG.setArg(9, cl_int(RX)), RG.setArg(10, cl_int(RY)), RG.setArg(11, cl_int(RW));
+      RG.setArg(12, cl_int(Whole ? 1 : std::max(1, Settings.RegionRowStep)));
       Cl->launch(RG, N, "raygen");
       Stats.Bounces += traceBounces(N, Stats, false);
       if (Stats.PassCut) { // abandoned: its paths are never accumulated
@@ -583,6 +587,7 @@ std::vector<TexccHitAttrs> Renderer::primaryHitAttributes(uint32_t Mask, FrameSt
   RG.setArg(3, cl_int(Settings.Width)), RG.setArg(4, cl_int(Settings.Height)), RG.setArg(5, cl_int(1));
   RG.setArg(6, cl_int(0)), RG.setArg(7, cl_uint(Settings.Seed)), RG.setArg(8, cl_int(N));
   RG.setArg(9, cl_int(0)), RG.setArg(10, cl_int(0)), RG.setArg(11, cl_int(Settings.Width));
+  RG.setArg(12, cl_int(1));
   Cl->launch(RG, N, "raygen");
   traceBounces(int(N), Stats, true);
   Cl->finish();

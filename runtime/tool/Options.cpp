@@ -57,6 +57,10 @@ const char *Usage =
     "  --threads N          threads that render (1..1024; default: every core this process\n"
     "                       may run on): the CPU device's pool and the trace backend's\n"
     "                       (Embree), which take turns within a frame\n"
+    "  --lanes on|off       on (default): with two or more threads a frame renders as one\n"
+    "                       lane per thread, each on its own core with every N-th row of the\n"
+    "                       film, where it can (docs/cli.md, Lanes); off: one renderer whose\n"
+    "                       stages run on every core\n"
     "  --view-transform Standard|AgX|Filmic  a .png's view transform, as Blender's Color\n"
     "                       Management (default: the scene's film.view, else Standard)\n"
     "  --look NAME          the view's look (\"AgX - Punchy\", \"High Contrast\", ...; None)\n"
@@ -257,6 +261,11 @@ Options parseArgs(int Argc, char **Argv) {
       O.ListDevices = true;
     } else if (A == "--trace") {
       O.Trace = parseTraceKind(Next());
+    } else if (A == "--lanes") {
+      const std::string M = Next();
+      if (M != "on" && M != "off")
+        throw Error("--lanes: expected on or off, got " + quoted(M));
+      O.Lanes = M == "on";
     } else if (A == "--ao-method") {
       std::string M = Next();
       if (M != "parallel" && M != "loop")

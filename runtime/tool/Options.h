@@ -26,6 +26,7 @@ struct Options {
   std::vector<std::string> Sets;
   int Device = 0;
   std::optional<int> Threads; // --threads N (1..MaxThreads); default: every core (Threads.h)
+  bool Lanes = true;          // --lanes on|off (Lanes.h)
   TraceKind Trace = TraceKind::Auto; // --trace
   std::optional<TierPolicy> Tier; // default: auto in an edit session, else shape
   bool Watch = false, Control = false, ReducedFirstPass = true;

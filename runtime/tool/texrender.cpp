@@ -15,6 +15,7 @@
 #include "texrender/Renderer.h"
 #include "texrender/SlowStep.h"
 #include "texrender/Stats.h"
+#include "texrender/Lanes.h"
 #include "texrender/Threads.h"
 #include "texrender/ViewTransform.h"
 #include "texrender/Watch.h"
@@ -427,14 +428,35 @@ std::shared_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSet
 /// given (--threads, else every core), and "openclComputeUnits", the device's own count (on
 /// PoCL's CPU device, its pool's threads) and "pinned", whether the pools' threads are pinned
 /// one per CPU (Threads.h).
+/// "lanes", the lanes the first frame rendered in (1: one renderer on every core), with
+/// "lanesWhyNot", why not in lanes, and "laneMemoryBytes", the lanes' device memory (Lanes.h).
 nlohmann::json statsWithThreads(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Frames,
-                                double Seconds) {
+                                double Seconds, const LaneReport &Lanes, const std::string &WhyNot) {
   nlohmann::json J = statsJson(R, L, Frames, Seconds);
   J["threads"] = {{"pool", renderThreads()},
                   {"given", renderThreadsGiven()},
                   {"openclComputeUnits", R.cl().device().getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>()},
-                  {"pinned", renderThreadsPinned()}};
+                  {"pinned", renderThreadsPinned()},
+                  {"lanes", std::max(1u, Lanes.Lanes)}};
+  if (Lanes.Lanes)
+    J["threads"]["laneMemoryBytes"] = Lanes.MemoryBytes;
+  else
+    J["threads"]["lanesWhyNot"] = WhyNot;
   return J;
+}
+
+/// Why the first frame does not render in lanes (Lanes.h; "": it does).
+std::string whyNoLanes(const Options &O, bool EditSession, bool HasSets, Renderer &R,
+                       const RendererOptions &RO) {
+  if (!O.Lanes)
+    return "--lanes off";
+  if (EditSession)
+    return "an edit session (the edits go to one renderer)";
+  if (HasSets)
+    return "--set edits (they go to one renderer)";
+  if (O.TimeLimit > 0)
+    return "--time-limit (the lanes would stop at different passes)";
+  return lanesUnavailable(R, RO, renderThreads());
 }
 
 int run(int Argc, char **Argv) try {
@@ -562,8 +584,14 @@ int run(int Argc, char **Argv) try {
   BuildCounter Builds(R);
   // Between passes the render stops by itself at the deadline; only a pass is timed.
   phase(Dog.get(), "");
-  std::vector<float> Image = texcc::whileAllocating(
-      "rendering", [&] { return R.render(First.Frame, O.Variance.empty() ? nullptr : &Variance); });
+  const std::string WhyNot = whyNoLanes(O, EditSession, !Checked.Sets.empty(), R, RO);
+  LaneReport Lanes;
+  std::vector<float> Image = texcc::whileAllocating("rendering", [&] {
+    std::vector<float> *Var = O.Variance.empty() ? nullptr : &Variance;
+    if (WhyNot.empty())
+      return renderInLanes(R, S, L, RO, renderThreads(), First.Frame, Var, &Lanes);
+    return R.render(First.Frame, Var);
+  });
   if (ShowProgress) {
     Bar.finish();
     printSummary(First.Frame, OutW, OutH);
@@ -586,7 +614,7 @@ int run(int Argc, char **Argv) try {
       Outputs.addImage(O.Variance, OutW, OutH, Variance);
     Outputs.addImage(O.Output, OutW, OutH, Image, View.get());
     if (!O.Stats.empty())
-      Outputs.addText(O.Stats, statsWithThreads(R, L, Frames, now() - T0).dump(2) + "\n");
+      Outputs.addText(O.Stats, statsWithThreads(R, L, Frames, now() - T0, Lanes, WhyNot).dump(2) + "\n");
     Outputs.commit();
     if (int Sig = StopSignal.load())
       return 128 + Sig;
@@ -605,7 +633,7 @@ int run(int Argc, char **Argv) try {
   bool SessionOk = !O.Interactive || StopSignal.load() ||
                    interactiveSession(O, S, View.get(), *Editor, R, Builds, Image, Frames);
   if (!O.Stats.empty())
-    writeTextFile(O.Stats, statsWithThreads(R, L, Frames, now() - T0).dump(2) + "\n");
+    writeTextFile(O.Stats, statsWithThreads(R, L, Frames, now() - T0, Lanes, WhyNot).dump(2) + "\n");
   if (int Sig = StopSignal.load())
     return 128 + Sig;
   return SessionOk ? 0 : 1;

@@ -37,8 +37,10 @@ std::vector<std::string> listDevices();
 class ClContext {
 public:
   /// Opens device DeviceIndex (the order of listDevices()). CacheDir: where program binaries
-  /// are kept ("" = no disk cache).
-  ClContext(int DeviceIndex, std::string CacheDir);
+  /// are kept ("" = no disk cache). Lane >= 0: only the device's compute unit Lane (a
+  /// sub-device of one unit; on PoCL's CPU device, its worker thread Lane), for a lane of a
+  /// frame (Lanes.h); the programs and their cache are the whole device's.
+  ClContext(int DeviceIndex, std::string CacheDir, int Lane = -1);
 
   /// Builds (or loads from the cache) a program. Name is used in messages (the file);
   /// KeyExtra joins the cache key (e.g. the text of the headers the source includes). Throws
@@ -75,6 +77,8 @@ public:
   void finish();
 
   const std::string &deviceName() const { return DeviceName; }
+  /// How many one-unit lanes the device splits into (CL_DEVICE_PARTITION_EQUALLY; 0: none).
+  unsigned laneCapacity();
   cl::Context &context() { return Ctx; }
   cl::CommandQueue &queue() { return Queue; }
 

@@ -73,6 +73,12 @@ struct RendererOptions {
   /// passes done before it (FrameStats::Interrupted, PassCut). texrender --watch cuts a pass
   /// when an edit comes, whose accumulation restarts anyway.
   std::function<bool()> CutPass;
+  /// A lane of a frame (Lanes.h): renders on the device's compute unit Lane alone (ClContext).
+  /// -1: the whole device.
+  int Lane = -1;
+  /// The scene's host data already built (a lane's: the frame's Renderer has it), copied
+  /// instead of built again; null: built from the scene.
+  const SceneData *Prebuilt = nullptr;
 };
 
 

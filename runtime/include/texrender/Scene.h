@@ -101,6 +101,9 @@ struct RenderSettings {
   /// texrender --region: the part of the film to render (RegionWidth 0: the whole film). Its
   /// pixels keep their full-film coordinates and random streams (kernels/raygen.cl).
   int RegionX = 0, RegionY = 0, RegionWidth = 0, RegionHeight = 0;
+  /// A lane of a frame (Lanes.h): the region's RegionHeight rows are film rows RegionY,
+  /// RegionY + RegionRowStep, ... (1: consecutive rows, as --region gives).
+  int RegionRowStep = 1;
   /// film.view: a .png's Color Management (Config empty: texrender's --ocio-config or $OCIO).
   ViewSettings View;
   int Frame = 0;  // readSetting("Frame") (texrender --frame)

@@ -19,8 +19,19 @@ namespace texrender {
 void setRenderThreads(unsigned N);
 
 /// The thread count of every pool: setRenderThreads's N, else the cores this process may run on
-/// (its CPU affinity mask; at least 1).
+/// (its CPU affinity mask; at least 1). On a lane's thread (LaneThread): 1.
 unsigned renderThreads();
+
+/// Makes the calling thread lane I of a frame (Lanes.h) for the object's lifetime: its trace
+/// stages and Embree's builds run on it alone (renderThreads() is 1 there), and it runs on
+/// CPU I when the pools are pinned, as the OpenCL sub-device of lane I does (PoCL's worker I).
+class LaneThread {
+public:
+  explicit LaneThread(unsigned I);
+  ~LaneThread();
+  LaneThread(const LaneThread &) = delete;
+  LaneThread &operator=(const LaneThread &) = delete;
+};
 
 /// Whether a count was given (setRenderThreads with N >= 1: texrender --threads).
 bool renderThreadsGiven();
@@ -35,7 +46,8 @@ bool renderThreadsPinned();
 /// Pins the calling thread, the pool's thread I, to CPU I when the pools are pinned.
 void pinRenderThread(unsigned I);
 
-/// The configuration string of rtcNewDevice: "threads=N" with N = renderThreads().
+/// The configuration string of rtcNewDevice: "threads=N" with N = renderThreads() (on a lane's
+/// thread: 1).
 std::string embreeDeviceConfig();
 
 } // namespace texrender

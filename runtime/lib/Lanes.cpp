@@ -1,0 +1,156 @@
+#include "texrender/Lanes.h"
+#include "texrender/Threads.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace texrender {
+
+namespace {
+
+/// The rows a frame renders: the --region's, else the film's.
+struct Rows {
+  int X = 0, Y = 0, Width = 0, Height = 0;
+};
+
+Rows frameRows(const RenderSettings &G) {
+  if (G.RegionWidth == 0)
+    return {0, 0, G.Width, G.Height};
+  return {G.RegionX, G.RegionY, G.RegionWidth, G.RegionHeight};
+}
+
+/// What one lane made.
+struct LaneResult {
+  std::vector<float> Image, Variance;
+  FrameStats Stats;
+  size_t MemoryBytes = 0;
+  int SamplesDone = 0;
+  std::exception_ptr Failure;
+};
+
+void addStats(FrameStats &Sum, const FrameStats &L, bool First) {
+  Sum.PrimaryRays += L.PrimaryRays;
+  Sum.BounceRays += L.BounceRays;
+  Sum.ShadowRays += L.ShadowRays;
+  Sum.AoRays += L.AoRays;
+  Sum.AoWorkItemsPerLaunchMax = std::max(Sum.AoWorkItemsPerLaunchMax, L.AoWorkItemsPerLaunchMax);
+  Sum.NonFiniteSamples += L.NonFiniteSamples;
+  Sum.SaturatedSamples += L.SaturatedSamples;
+  Sum.Passes = std::max(Sum.Passes, L.Passes);
+  Sum.SamplesDone = First ? L.SamplesDone : std::min(Sum.SamplesDone, L.SamplesDone);
+  Sum.TimeLimited |= L.TimeLimited;
+  Sum.Interrupted |= L.Interrupted;
+  Sum.PassCut |= L.PassCut;
+  Sum.Bounces = std::max(Sum.Bounces, L.Bounces);
+  if (First)
+    Sum.Tier = L.Tier;
+  for (const auto &[Name, T] : L.Kernels) {
+    KernelTiming &S = Sum.Kernels[Name];
+    S.Launches += T.Launches, S.Seconds += T.Seconds, S.WorkItems += T.WorkItems;
+  }
+}
+
+/// Copies lane I's rows (every Lanes-th row of the frame's, from row I) into Frame.
+void scatterRows(const std::vector<float> &Lane, unsigned I, unsigned Lanes, int Width,
+                 std::vector<float> &Frame) {
+  const size_t Row = size_t(Width) * 3;
+  for (size_t R = 0; R * Row < Lane.size(); ++R)
+    std::copy_n(Lane.begin() + R * Row, Row, Frame.begin() + (I + R * Lanes) * Row);
+}
+
+} // namespace
+
+std::string lanesUnavailable(Renderer &R, const RendererOptions &O, unsigned Lanes) {
+  if (Lanes < 2)
+    return "one render thread";
+  if (std::string(R.tracer().name()) != "embree")
+    return std::string("the trace backend is ") + R.tracer().name() + ", not embree";
+  if (const unsigned Parts = R.cl().laneCapacity(); Parts < Lanes)
+    return "the OpenCL device splits into " + std::to_string(Parts) + " one-unit parts, not " +
+           std::to_string(Lanes);
+  if (frameRows(R.settings()).Height < int(Lanes))
+    return "fewer rows than lanes";
+  if (O.CacheDir.empty())
+    return "no program cache (each lane would build the kernels)";
+  if (R.tiers().quickFirstBuildActive())
+    return "the texture kernel is a quick first build (its optimised build would run per lane)";
+  return "";
+}
+
+std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
+                                 const RendererOptions &O, unsigned Lanes, FrameStats &Stats,
+                                 std::vector<float> *Variance, LaneReport *Report) {
+  const double T0 = steadySeconds();
+  const RenderSettings &G = R.settings();
+  const Rows F = frameRows(G);
+  std::vector<LaneResult> Out(Lanes);
+  std::mutex M; // Out[].SamplesDone, O.AfterPass
+  std::atomic<bool> Stop{false};
+  auto Run = [&](unsigned I) {
+    try {
+      LaneThread Here(I);
+      Scene LS = S;
+      LS.Render = G;
+      LS.Render.RegionX = F.X, LS.Render.RegionY = F.Y + int(I), LS.Render.RegionWidth = F.Width;
+      LS.Render.RegionHeight = (F.Height - int(I) + int(Lanes) - 1) / int(Lanes);
+      LS.Render.RegionRowStep = int(Lanes);
+      RendererOptions LO = O;
+      LO.Lane = int(I);
+      LO.Prebuilt = &R.sceneData();
+      LO.MaxPathsPerPass = std::max<size_t>(1, O.MaxPathsPerPass / Lanes);
+      LO.AfterPass = [&, I](const PassProgress &P) {
+        std::lock_guard<std::mutex> Lock(M);
+        Out[I].SamplesDone = P.SamplesDone;
+        int Fewest = P.SamplesDone;
+        for (const LaneResult &Res : Out)
+          Fewest = std::min(Fewest, Res.SamplesDone);
+        if (O.AfterPass && !Stop && !O.AfterPass(PassProgress{Fewest, P.Spp, steadySeconds() - T0, {}}))
+          Stop = true;
+        return !Stop;
+      };
+      Renderer Lane(LS, L, LO);
+      Out[I].Image = Lane.render(Out[I].Stats, Variance ? &Out[I].Variance : nullptr);
+      Out[I].MemoryBytes = Lane.cl().memoryTotal();
+    } catch (...) {
+      Out[I].Failure = std::current_exception();
+      Stop = true;
+    }
+  };
+  // Every lane on a thread of its own: LaneThread pins it, and the caller stays unpinned.
+  std::vector<std::thread> Threads;
+  try {
+    for (unsigned I = 0; I < Lanes; ++I)
+      Threads.emplace_back(Run, I);
+  } catch (...) { // no thread for a lane: the ones started stop at their first pass boundary
+    Stop = true;
+    for (std::thread &T : Threads)
+      T.join();
+    throw;
+  }
+  for (std::thread &T : Threads)
+    T.join();
+  for (const LaneResult &Res : Out)
+    if (Res.Failure)
+      std::rethrow_exception(Res.Failure);
+  Stats = FrameStats();
+  std::vector<float> Image(size_t(F.Width) * F.Height * 3);
+  if (Variance)
+    Variance->assign(Image.size(), 0.0f);
+  size_t Memory = 0;
+  for (unsigned I = 0; I < Lanes; ++I) {
+    addStats(Stats, Out[I].Stats, I == 0);
+    scatterRows(Out[I].Image, I, Lanes, F.Width, Image);
+    if (Variance)
+      scatterRows(Out[I].Variance, I, Lanes, F.Width, *Variance);
+    Memory += Out[I].MemoryBytes;
+  }
+  Stats.Seconds = steadySeconds() - T0;
+  if (Report)
+    *Report = LaneReport{Lanes, Memory};
+  return Image;
+}
+
+} // namespace texrender
