@@ -2,7 +2,6 @@
 #include "texrender/Threads.h"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -27,7 +26,8 @@ struct LaneResult {
   std::vector<float> Image, Variance;
   FrameStats Stats;
   size_t MemoryBytes = 0;
-  int SamplesDone = 0;
+  int SamplesDone = 0;   // at its last pass boundary
+  bool Finished = false; // its render has returned
   std::exception_ptr Failure;
 };
 
@@ -87,8 +87,25 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
   const RenderSettings &G = R.settings();
   const Rows F = frameRows(G);
   std::vector<LaneResult> Out(Lanes);
-  std::mutex M; // Out[].SamplesDone, O.AfterPass
-  std::atomic<bool> Stop{false};
+  // Every lane's passes are as many samples as the whole frame's would be, so that lanes stopped
+  // early (below) stop at the same sample count.
+  const size_t FramePixels = size_t(F.Width) * F.Height;
+  const size_t SppPerPass = std::clamp<size_t>(O.MaxPathsPerPass / FramePixels, 1, size_t(G.Spp));
+  std::mutex M; // Out[].SamplesDone and .Finished, Stop, Target, O.AfterPass
+  bool Stop = false;
+  int Target = 0; // once Stop: the samples every lane ends with
+  // Stops every lane at Target: the most samples a lane will have done at its next pass
+  // boundary (lane Caller is at one, with Done; the others that run are in a pass), at most
+  // AtMost (0 after an error).
+  auto stop = [&](unsigned Caller, int Done, int AtMost) {
+    int Most = Done;
+    for (unsigned J = 0; J < Lanes; ++J)
+      if (J != Caller)
+        Most = std::max(Most, Out[J].Finished ? Out[J].SamplesDone
+                                              : std::min(G.Spp, Out[J].SamplesDone + int(SppPerPass)));
+    Target = Stop ? std::min(Target, AtMost) : std::min(Most, AtMost);
+    Stop = true;
+  };
   auto Run = [&](unsigned I) {
     try {
       LaneThread Here(I);
@@ -100,7 +117,7 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
       RendererOptions LO = O;
       LO.Lane = int(I);
       LO.Prebuilt = &R.sceneData();
-      LO.MaxPathsPerPass = std::max<size_t>(1, O.MaxPathsPerPass / Lanes);
+      LO.MaxPathsPerPass = SppPerPass * size_t(F.Width) * size_t(LS.Render.RegionHeight);
       LO.AfterPass = [&, I](const PassProgress &P) {
         std::lock_guard<std::mutex> Lock(M);
         Out[I].SamplesDone = P.SamplesDone;
@@ -108,15 +125,21 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
         for (const LaneResult &Res : Out)
           Fewest = std::min(Fewest, Res.SamplesDone);
         if (O.AfterPass && !Stop && !O.AfterPass(PassProgress{Fewest, P.Spp, steadySeconds() - T0, {}}))
-          Stop = true;
-        return !Stop;
+          stop(I, P.SamplesDone, G.Spp);
+        return !Stop || P.SamplesDone < Target;
       };
       Renderer Lane(LS, L, LO);
       Out[I].Image = Lane.render(Out[I].Stats, Variance ? &Out[I].Variance : nullptr);
+      {
+        std::lock_guard<std::mutex> Lock(M); // a stop from now on counts this lane's samples
+        Out[I].SamplesDone = Out[I].Stats.SamplesDone;
+        Out[I].Finished = true;
+      }
       Out[I].MemoryBytes = Lane.cl().memoryTotal();
     } catch (...) {
       Out[I].Failure = std::current_exception();
-      Stop = true;
+      std::lock_guard<std::mutex> Lock(M);
+      stop(I, 0, 0); // the others stop at their next pass boundary
     }
   };
   // Every lane on a thread of its own: LaneThread pins it, and the caller stays unpinned.
@@ -125,7 +148,10 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
     for (unsigned I = 0; I < Lanes; ++I)
       Threads.emplace_back(Run, I);
   } catch (...) { // no thread for a lane: the ones started stop at their first pass boundary
-    Stop = true;
+    {
+      std::lock_guard<std::mutex> Lock(M);
+      stop(Lanes, 0, 0);
+    }
     for (std::thread &T : Threads)
       T.join();
     throw;

@@ -1,8 +1,10 @@
-"""Figure: the frame of bench/threads.py (the atrium with rust everywhere) rendered whole by one
-texrender (its default threads: the stages shared by both cores, a barrier at each stage's end)
-and as two lanes: two `texrender --threads 1` processes at once, each rendering half of the film
-(`--region`, the top and bottom halves; stitched, the halves equal the whole bit for bit,
-docs/runtime.md), so that no stage waits for a thread on the other core. Quiet and beside
+"""Figure: the frame of bench/threads.py (the atrium with rust everywhere) rendered by one
+texrender whole (`whole`: `--lanes off`, the stages shared by both cores, a barrier at each
+stage's end), by one texrender in lanes (`texrender-lanes`: its default, one lane per core,
+docs/cli.md) and as two lanes in two processes (`lanes`: two `texrender --threads 1` processes
+at once, each rendering half of the film with `--region`, the top and bottom halves; stitched,
+the halves equal the whole bit for bit, docs/runtime.md), so that no stage waits for a thread on
+the other core. --configs picks them (default: all three). Quiet and beside
 `nice -n 10 stress-ng --cpu 2` in this session (bench/threads.py's Stressor); each round runs
 every (load, configuration) pair once, in an order rotating with the round. The time of the
 lanes is the wall time until both have ended; `frame` is the longer of their renderSeconds
@@ -11,7 +13,7 @@ lanes is the wall time until both have ended; `frame` is the longer of their ren
 bpy.ops.render.render() in a warm bpy process, its frame that less the fixed part.
 
     python3 bench/lanes.py [--build DIR] [--rounds 5] [--size 512x512] [--spp 16]
-        [--cycles [--blend B]] [--out FILE]
+        [--configs whole,texrender-lanes,lanes] [--cycles [--blend B]] [--out FILE]
     python3 bench/lanes.py --report [FILE]
 
 Results: bench/results/lanes.json.
@@ -26,13 +28,13 @@ import time
 from texcc_tools.bench import common, cycles, texture_speed
 from texcc_tools.bench import threads as th
 
-CONFIGS = ("whole", "lanes", "cycles")
+CONFIGS = ("whole", "texrender-lanes", "lanes", "cycles")
 
 
-def render(tools, scene, textures, size, spp, lanes):
-    """(wall seconds, frame seconds) of the whole frame or of its two lanes."""
+def render(tools, scene, textures, size, spp, config):
+    """(wall seconds, frame seconds) of the frame in configuration config (not cycles)."""
     w, h = (int(x) for x in size.split("x"))
-    jobs = [[]] if not lanes else [
+    jobs = [["--lanes", "off"]] if config == "whole" else [[]] if config == "texrender-lanes" else [
         ["--threads", "1", "--region", "0,0,%d,%d" % (w, h // 2)],
         ["--threads", "1", "--region", "0,%d,%d,%d" % (h // 2, w, h - h // 2)]]
     outs = [os.path.join(tools.work, "lane%d" % i) for i in range(len(jobs))]
@@ -49,9 +51,18 @@ def render(tools, scene, textures, size, spp, lanes):
     return time.perf_counter() - t0, max(frames)
 
 
+def configs(text):
+    """--configs: a comma-separated list of texrender's configurations."""
+    out = text.split(",")
+    bad = [c for c in out if c not in CONFIGS[:-1]]
+    if bad or not text:
+        raise argparse.ArgumentTypeError("expected some of %s, got %r" % (",".join(CONFIGS[:-1]), text))
+    return out
+
+
 def measure(args, tools):
     scene, textures = th.inputs(tools)
-    render(tools, scene, textures, args.size, args.spp, False)  # warm: kernels cached
+    render(tools, scene, textures, args.size, args.spp, "whole")  # warm: kernels cached
     runs = {}
     w, h = (int(x) for x in args.size.split("x"))
     cyc, fixed = None, []
@@ -64,11 +75,11 @@ def measure(args, tools):
 
     def one(c):
         if c != "cycles":
-            return render(tools, scene, textures, args.size, args.spp, c == "lanes")
+            return render(tools, scene, textures, args.size, args.spp, c)
         raw = cyc.call(op="render", blend=blend, size=[w, h], spp=args.spp)["seconds"]
         return raw, raw - common.median(fixed)
 
-    keys = [(load, c) for load in ("quiet", "nice") for c in CONFIGS if c != "cycles" or cyc]
+    keys = [(load, c) for load in ("quiet", "nice") for c in args.configs + (["cycles"] if cyc else [])]
     for r in range(args.rounds):
         k = r % len(keys)
         for load, c in keys[k:] + keys[:k]:
@@ -119,6 +130,8 @@ def main():
     ap.add_argument("--rounds", type=common.positive_int, default=5)
     ap.add_argument("--size", type=common.film_size, default="512x512")
     ap.add_argument("--spp", type=common.positive_int, default=16)
+    ap.add_argument("--configs", type=configs, default="whole,texrender-lanes,lanes",
+                    help="texrender's configurations, of " + ", ".join(CONFIGS[:-1]))
     ap.add_argument("--cycles", action="store_true", help="Cycles (bpy) in the same rounds")
     ap.add_argument("--blend", help="the rust-all .blend (default: made by make_scene.py)")
     ap.add_argument("--out", help="result file (default bench/results/lanes.json)")

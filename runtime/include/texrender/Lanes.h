@@ -30,13 +30,14 @@ struct LaneReport {
 };
 
 /// Renders the frame R would (R.settings(), with R's scene data; S and L as R was made from,
-/// O its options) in Lanes lanes (lanesUnavailable(R, O, Lanes) must be ""), each with
-/// O.MaxPathsPerPass / Lanes paths a pass, and returns the image as R.render would (and the
-/// variance, if asked). Stats: the frame's wall clock; rays, samples and kernel timings summed
-/// over the lanes; SamplesDone the fewest any lane did. O.AfterPass hears the fewest samples
-/// done (PassProgress::Image is empty); once it returns false every lane stops at its next
-/// pass boundary (a lane may have done one pass more: its rows average those). The first error
-/// of a lane is rethrown, after every lane has stopped.
+/// O its options) in Lanes lanes (lanesUnavailable(R, O, Lanes) must be ""), each pass of each
+/// lane as many samples per pixel as a pass of the whole frame, and returns the image as
+/// R.render would (and the variance, if asked). Stats: the frame's wall clock; rays and kernel
+/// timings summed over the lanes. O.AfterPass hears the fewest samples any lane has done
+/// (PassProgress::Image is empty); once it returns false, each lane stops at the first pass
+/// boundary where it has done as many samples as the lane furthest on had then, so that every
+/// pixel averages the same samples. The first error of a lane is rethrown, after every lane
+/// has stopped (at its next pass boundary).
 std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
                                  const RendererOptions &O, unsigned Lanes, FrameStats &Stats,
                                  std::vector<float> *Variance, LaneReport *Report = nullptr);
