@@ -124,7 +124,9 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
         int Fewest = P.SamplesDone;
         for (const LaneResult &Res : Out)
           Fewest = std::min(Fewest, Res.SamplesDone);
-        if (O.AfterPass && !Stop && !O.AfterPass(PassProgress{Fewest, P.Spp, steadySeconds() - T0, {}}))
+        // O.AfterPass hears of progress once every lane has some.
+        if (O.AfterPass && !Stop && Fewest > 0 &&
+            !O.AfterPass(PassProgress{Fewest, P.Spp, steadySeconds() - T0, {}}))
           stop(I, P.SamplesDone, G.Spp);
         return !Stop || P.SamplesDone < Target;
       };

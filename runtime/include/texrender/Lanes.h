@@ -33,8 +33,8 @@ struct LaneReport {
 /// O its options) in Lanes lanes (lanesUnavailable(R, O, Lanes) must be ""), each pass of each
 /// lane as many samples per pixel as a pass of the whole frame, and returns the image as
 /// R.render would (and the variance, if asked). Stats: the frame's wall clock; rays and kernel
-/// timings summed over the lanes. O.AfterPass hears the fewest samples any lane has done
-/// (PassProgress::Image is empty); once it returns false, each lane stops at the first pass
+/// timings summed over the lanes. O.AfterPass hears the fewest samples any lane has done,
+/// once every lane has done a pass (PassProgress::Image is empty); once it returns false, each lane stops at the first pass
 /// boundary where it has done as many samples as the lane furthest on had then, so that every
 /// pixel averages the same samples. The first error of a lane is rethrown, after every lane
 /// has stopped (at its next pass boundary).
