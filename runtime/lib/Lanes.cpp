@@ -26,8 +26,6 @@ struct LaneResult {
   std::vector<float> Image, Variance;
   FrameStats Stats;
   size_t MemoryBytes = 0;
-  int SamplesDone = 0;   // at its last pass boundary
-  bool Finished = false; // its render has returned
   std::exception_ptr Failure;
 };
 
@@ -80,86 +78,121 @@ std::string lanesUnavailable(Renderer &R, const RendererOptions &O, unsigned Lan
   return "";
 }
 
-std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
-                                 const RendererOptions &O, unsigned Lanes, FrameStats &Stats,
-                                 std::vector<float> *Variance, LaneReport *Report) {
-  const double T0 = steadySeconds();
-  const RenderSettings &G = R.settings();
-  const Rows F = frameRows(G);
-  std::vector<LaneResult> Out(Lanes);
-  // Every lane's passes are as many samples as the whole frame's would be, so that lanes stopped
-  // early (below) stop at the same sample count.
-  const size_t FramePixels = size_t(F.Width) * F.Height;
-  const size_t SppPerPass = std::clamp<size_t>(O.MaxPathsPerPass / FramePixels, 1, size_t(G.Spp));
-  std::mutex M; // Out[].SamplesDone and .Finished, Stop, Target, O.AfterPass
-  bool Stop = false;
-  int Target = 0; // once Stop: the samples every lane ends with
-  // Stops every lane at Target: the most samples a lane will have done at its next pass
-  // boundary (lane Caller is at one, with Done; the others that run are in a pass), at most
-  // AtMost (0 after an error).
-  auto stop = [&](unsigned Caller, int Done, int AtMost) {
-    int Most = Done;
-    for (unsigned J = 0; J < Lanes; ++J)
+namespace {
+
+/// The lanes' pass boundaries: progress told to O.AfterPass, and where each lane stops once
+/// the frame stops (AfterPass returned false, or a lane failed).
+class LaneStops {
+public:
+  LaneStops(unsigned Lanes, int Spp, int SppPerPass, const RendererOptions &O, double T0)
+      : Done(Lanes, 0), Finished(Lanes, false), Spp(Spp), SppPerPass(SppPerPass), O(O), T0(T0) {}
+
+  /// Lane I is at a pass boundary: whether it renders on.
+  bool afterPass(unsigned I, const PassProgress &P) {
+    std::lock_guard<std::mutex> Lock(M);
+    Done[I] = P.SamplesDone;
+    const int Fewest = *std::min_element(Done.begin(), Done.end());
+    // O.AfterPass hears of progress once every lane has some.
+    if (O.AfterPass && !Stop && Fewest > 0 &&
+        !O.AfterPass(PassProgress{Fewest, P.Spp, steadySeconds() - T0, {}}))
+      stop(I, P.SamplesDone, Spp);
+    return !Stop || P.SamplesDone < Target;
+  }
+  /// Lane I's render has returned with Samples.
+  void finished(unsigned I, int Samples) {
+    std::lock_guard<std::mutex> Lock(M); // a stop from now on counts these samples
+    Done[I] = Samples;
+    Finished[I] = true;
+  }
+  /// Lane I (or, with I out of range, the frame) failed: every lane stops at its next boundary.
+  void failed(unsigned I) {
+    std::lock_guard<std::mutex> Lock(M);
+    stop(I, 0, 0);
+  }
+
+private:
+  /// Stops every lane at Target: the most samples a lane will have done at its next pass
+  /// boundary (lane Caller is at one, with Samples; the others that run are in a pass), at most
+  /// AtMost (0 after an error).
+  void stop(unsigned Caller, int Samples, int AtMost) {
+    int Most = Samples;
+    for (unsigned J = 0; J < Done.size(); ++J)
       if (J != Caller)
-        Most = std::max(Most, Out[J].Finished ? Out[J].SamplesDone
-                                              : std::min(G.Spp, Out[J].SamplesDone + int(SppPerPass)));
+        Most = std::max(Most, Finished[J] ? Done[J] : std::min(Spp, Done[J] + SppPerPass));
     Target = Stop ? std::min(Target, AtMost) : std::min(Most, AtMost);
     Stop = true;
-  };
-  auto Run = [&](unsigned I) {
-    try {
-      LaneThread Here(I);
-      Scene LS = S;
-      LS.Render = G;
-      LS.Render.RegionX = F.X, LS.Render.RegionY = F.Y + int(I), LS.Render.RegionWidth = F.Width;
-      LS.Render.RegionHeight = (F.Height - int(I) + int(Lanes) - 1) / int(Lanes);
-      LS.Render.RegionRowStep = int(Lanes);
-      RendererOptions LO = O;
-      LO.Lane = int(I);
-      LO.Prebuilt = &R.sceneData();
-      LO.MaxPathsPerPass = SppPerPass * size_t(F.Width) * size_t(LS.Render.RegionHeight);
-      LO.AfterPass = [&, I](const PassProgress &P) {
-        std::lock_guard<std::mutex> Lock(M);
-        Out[I].SamplesDone = P.SamplesDone;
-        int Fewest = P.SamplesDone;
-        for (const LaneResult &Res : Out)
-          Fewest = std::min(Fewest, Res.SamplesDone);
-        // O.AfterPass hears of progress once every lane has some.
-        if (O.AfterPass && !Stop && Fewest > 0 &&
-            !O.AfterPass(PassProgress{Fewest, P.Spp, steadySeconds() - T0, {}}))
-          stop(I, P.SamplesDone, G.Spp);
-        return !Stop || P.SamplesDone < Target;
-      };
-      Renderer Lane(LS, L, LO);
-      Out[I].Image = Lane.render(Out[I].Stats, Variance ? &Out[I].Variance : nullptr);
-      {
-        std::lock_guard<std::mutex> Lock(M); // a stop from now on counts this lane's samples
-        Out[I].SamplesDone = Out[I].Stats.SamplesDone;
-        Out[I].Finished = true;
-      }
-      Out[I].MemoryBytes = Lane.cl().memoryTotal();
-    } catch (...) {
-      Out[I].Failure = std::current_exception();
-      std::lock_guard<std::mutex> Lock(M);
-      stop(I, 0, 0); // the others stop at their next pass boundary
-    }
-  };
-  // Every lane on a thread of its own: LaneThread pins it, and the caller stays unpinned.
+  }
+
+  std::mutex M;
+  std::vector<int> Done;        // samples per lane at its last pass boundary
+  std::vector<bool> Finished;   // its render has returned
+  bool Stop = false;
+  int Target = 0;               // once Stop: the samples every lane ends with
+  const int Spp, SppPerPass;
+  const RendererOptions &O;
+  const double T0;
+};
+
+/// Lane I's scene: S with G's settings, rendering rows I, I + Lanes, ... of F.
+Scene laneScene(const Scene &S, const RenderSettings &G, const Rows &F, unsigned I, unsigned Lanes) {
+  Scene LS = S;
+  LS.Render = G;
+  LS.Render.RegionX = F.X, LS.Render.RegionY = F.Y + int(I), LS.Render.RegionWidth = F.Width;
+  LS.Render.RegionHeight = (F.Height - int(I) + int(Lanes) - 1) / int(Lanes);
+  LS.Render.RegionRowStep = int(Lanes);
+  return LS;
+}
+
+/// Runs Run(I) for I < Lanes, each on a thread of its own (LaneThread pins it; the caller stays
+/// unpinned). Without a thread for a lane, the lanes started stop (Stops.failed) and the error
+/// is thrown once they have.
+template <typename F> void runLanes(unsigned Lanes, LaneStops &Stops, F &&Run) {
   std::vector<std::thread> Threads;
   try {
     for (unsigned I = 0; I < Lanes; ++I)
       Threads.emplace_back(Run, I);
-  } catch (...) { // no thread for a lane: the ones started stop at their first pass boundary
-    {
-      std::lock_guard<std::mutex> Lock(M);
-      stop(Lanes, 0, 0);
-    }
+  } catch (...) {
+    Stops.failed(Lanes);
     for (std::thread &T : Threads)
       T.join();
     throw;
   }
   for (std::thread &T : Threads)
     T.join();
+}
+
+} // namespace
+
+std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
+                                 const RendererOptions &O, unsigned Lanes, FrameStats &Stats,
+                                 std::vector<float> *Variance, LaneReport *Report) {
+  const double T0 = steadySeconds();
+  const RenderSettings &G = R.settings();
+  const Rows F = frameRows(G);
+  // Every lane's passes are as many samples as the whole frame's would be, so that stopped
+  // lanes end at the same sample count (LaneStops).
+  const size_t SppPerPass =
+      std::clamp<size_t>(O.MaxPathsPerPass / (size_t(F.Width) * F.Height), 1, size_t(G.Spp));
+  LaneStops Stops(Lanes, G.Spp, int(SppPerPass), O, T0);
+  std::vector<LaneResult> Out(Lanes);
+  runLanes(Lanes, Stops, [&](unsigned I) {
+    try {
+      LaneThread Here(I);
+      const Scene LS = laneScene(S, G, F, I, Lanes);
+      RendererOptions LO = O;
+      LO.Lane = int(I);
+      LO.Prebuilt = &R.sceneData();
+      LO.MaxPathsPerPass = SppPerPass * size_t(F.Width) * size_t(LS.Render.RegionHeight);
+      LO.AfterPass = [&Stops, I](const PassProgress &P) { return Stops.afterPass(I, P); };
+      Renderer Lane(LS, L, LO);
+      Out[I].Image = Lane.render(Out[I].Stats, Variance ? &Out[I].Variance : nullptr);
+      Stops.finished(I, Out[I].Stats.SamplesDone);
+      Out[I].MemoryBytes = Lane.cl().memoryTotal();
+    } catch (...) {
+      Out[I].Failure = std::current_exception();
+      Stops.failed(I);
+    }
+  });
   for (const LaneResult &Res : Out)
     if (Res.Failure)
       std::rethrow_exception(Res.Failure);
