@@ -26,6 +26,7 @@ struct LaneResult {
   std::vector<float> Image, Variance;
   FrameStats Stats;
   size_t MemoryBytes = 0;
+  double ReadySeconds = 0, DoneSeconds = 0; // since the frame's start
   std::exception_ptr Failure;
 };
 
@@ -185,7 +186,9 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
       LO.MaxPathsPerPass = SppPerPass * size_t(F.Width) * size_t(LS.Render.RegionHeight);
       LO.AfterPass = [&Stops, I](const PassProgress &P) { return Stops.afterPass(I, P); };
       Renderer Lane(LS, L, LO);
+      Out[I].ReadySeconds = steadySeconds() - T0;
       Out[I].Image = Lane.render(Out[I].Stats, Variance ? &Out[I].Variance : nullptr);
+      Out[I].DoneSeconds = steadySeconds() - T0;
       Stops.finished(I, Out[I].Stats.SamplesDone);
       Out[I].MemoryBytes = Lane.cl().memoryTotal();
     } catch (...) {
@@ -200,17 +203,19 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
   std::vector<float> Image(size_t(F.Width) * F.Height * 3);
   if (Variance)
     Variance->assign(Image.size(), 0.0f);
-  size_t Memory = 0;
+  LaneReport Lr{Lanes, 0, {}, {}};
   for (unsigned I = 0; I < Lanes; ++I) {
     addStats(Stats, Out[I].Stats, I == 0);
     scatterRows(Out[I].Image, I, Lanes, F.Width, Image);
     if (Variance)
       scatterRows(Out[I].Variance, I, Lanes, F.Width, *Variance);
-    Memory += Out[I].MemoryBytes;
+    Lr.MemoryBytes += Out[I].MemoryBytes;
+    Lr.ReadySeconds.push_back(Out[I].ReadySeconds);
+    Lr.DoneSeconds.push_back(Out[I].DoneSeconds);
   }
   Stats.Seconds = steadySeconds() - T0;
   if (Report)
-    *Report = LaneReport{Lanes, Memory};
+    *Report = std::move(Lr);
   return Image;
 }
 

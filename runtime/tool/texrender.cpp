@@ -429,7 +429,8 @@ std::shared_ptr<ViewTransform> makeViewTransform(const Options &O, const ViewSet
 /// PoCL's CPU device, its pool's threads) and "pinned", whether the pools' threads are pinned
 /// one per CPU (Threads.h).
 /// "lanes", the lanes the first frame rendered in (1: one renderer on every core), with
-/// "lanesWhyNot", why not in lanes, and "laneMemoryBytes", the lanes' device memory (Lanes.h).
+/// "lanesWhyNot", why not in lanes, or "laneMemoryBytes", the lanes' device memory, and
+/// "laneReadySeconds" and "laneDoneSeconds", when each lane was ready and done (Lanes.h).
 nlohmann::json statsWithThreads(Renderer &R, const Layout &L, const std::vector<FrameRecord> &Frames,
                                 double Seconds, const LaneReport &Lanes, const std::string &WhyNot) {
   nlohmann::json J = statsJson(R, L, Frames, Seconds);
@@ -438,8 +439,11 @@ nlohmann::json statsWithThreads(Renderer &R, const Layout &L, const std::vector<
                   {"openclComputeUnits", R.cl().device().getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>()},
                   {"pinned", renderThreadsPinned()},
                   {"lanes", std::max(1u, Lanes.Lanes)}};
-  if (Lanes.Lanes)
+  if (Lanes.Lanes) {
     J["threads"]["laneMemoryBytes"] = Lanes.MemoryBytes;
+    J["threads"]["laneReadySeconds"] = Lanes.ReadySeconds;
+    J["threads"]["laneDoneSeconds"] = Lanes.DoneSeconds;
+  }
   else
     J["threads"]["lanesWhyNot"] = WhyNot;
   return J;

@@ -679,7 +679,7 @@ def tail_sections():
                        ("bench/modes.md", "evaluation modes: value stack placement, GPU registers, superinstructions, hoisting and quickened opcodes, measured"),
                        ("bench/blender-nodes.md", "Blender node library: conformance run times and per-node speed"),
                        ("bench/texture-speed.md", "texture code against the same code compiled as C: where the time goes per mode, and what changed (`bench/texture_speed.py`)"),
-                       ("bench/threads.md", "texrender --threads, the pinned pools, and a frame beside a competing niced load, with Cycles (`bench/threads.py`)"),
+                       ("bench/threads.md", "texrender --threads, the pinned pools, a frame in lanes, and a frame beside a competing niced load, with Cycles (`bench/threads.py`, `bench/lanes.py`)"),
                        ("bench/test-suite.md", "the test suite's run time on fresh clones and under a parallel CPU load"),
                        ("bench/fuzzing.md", "fuzzer and sanitizer runs and what they found"),
                        ("bench/run-times.md", "how long `bench/run` and its parts took")):

@@ -27,6 +27,9 @@ std::string lanesUnavailable(Renderer &R, const RendererOptions &O, unsigned Lan
 struct LaneReport {
   unsigned Lanes = 0;
   size_t MemoryBytes = 0; // every lane's device memory, summed
+  /// Per lane, seconds from the frame's start: until its Renderer was made (its scene upload,
+  /// trace structure and kernels loaded), and until its render returned.
+  std::vector<double> ReadySeconds, DoneSeconds;
 };
 
 /// Renders the frame R would (R.settings(), with R's scene data; S and L as R was made from,
