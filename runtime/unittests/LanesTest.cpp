@@ -7,67 +7,33 @@
 #include "texrender/Lanes.h"
 #include "texrender/Layout.h"
 #include "texrender/Renderer.h"
+#include "TestScenes.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <unistd.h>
-
-namespace fs = std::filesystem;
 using namespace texrender;
+using namespace texrender::test;
 
 namespace {
 
-std::string sourceDir() {
-  if (const char *S = std::getenv("TEXCC_SRC"))
-    return S;
-  return TEXRENDER_SOURCE_DIR;
-}
-
-struct TestScene {
-  Scene S;
-  Layout L;
-};
-
+/// makeScene's floor and cube at Width x Height, Spp samples, paths of up to 4 segments.
 TestScene floorAndCube(int Width, int Height, int Spp) {
-  fs::path Dir = fs::temp_directory_path() / ("texrender-lanes-" + std::to_string(::getpid()));
-  fs::create_directories(Dir);
-  TestScene T;
-  T.L = loadLayout(sourceDir() + "/testsuite/Inputs/runtime/cornell-tex");
-  T.S.Path = (Dir / "scene.json").string();
-  T.S.Cam.Position = {0.0f, 1.5f, 3.0f};
-  T.S.Cam.Target = {0.0f, 0.0f, 0.0f};
-  T.S.Cam.FovDegrees = 50;
+  TestScene T = makeScene(tempDir("lanes"), {FloorAndCube}, Width);
   T.S.Render.Width = Width, T.S.Render.Height = Height, T.S.Render.Spp = Spp;
   T.S.Render.MaxDepth = 4;
-  fs::path P = Dir / "m.obj";
-  std::ofstream(P) << "v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nvn 0 1 0\nf 1//1 4//1 3//1 2//1\n"
-                      "v -0.4 0 -0.4\nv 0.4 0 -0.4\nv 0.4 0 0.4\nv -0.4 0 0.4\n"
-                      "v -0.4 0.8 -0.4\nv 0.4 0.8 -0.4\nv 0.4 0.8 0.4\nv -0.4 0.8 0.4\n"
-                      "f 9 10 11 12\nf 5 6 10 9\nf 6 7 11 10\nf 7 8 12 11\nf 8 5 9 12\n";
-  MeshInstance M;
-  M.ObjPath = P.string();
-  M.Material = "white";
-  M.Transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  M.JsonPath = "/meshes/0";
-  T.S.Meshes.push_back(M);
   return T;
 }
 
-RendererOptions testOptions() {
-  RendererOptions O;
-  O.CacheDir = (fs::temp_directory_path() / "texrender-test-cache").string();
+/// testOptions without the quick first build: a lane loads what the frame's Renderer built.
+RendererOptions laneOptions() {
+  RendererOptions O = testOptions();
   O.QuickFirstBuild = false;
-  if (!std::getenv("TEXRENDER_KERNELS"))
-    O.KernelDir = TEXRENDER_KERNEL_DIR;
   return O;
 }
 
 /// Lanes the default device splits into (0 without a device).
 unsigned laneCapacity() {
-  if (listDevices().empty())
+  if (!haveDevice())
     return 0;
   ClContext Cl(0, "");
   return Cl.laneCapacity();
@@ -86,7 +52,7 @@ TEST(Lanes, SameImageAsTheWholeFrame) {
       if (Region)
         T.S.Render.RegionX = 4, T.S.Render.RegionY = 3, T.S.Render.RegionWidth = 11,
         T.S.Render.RegionHeight = 9;
-      RendererOptions O = testOptions();
+      RendererOptions O = laneOptions();
       Renderer R(T.S, T.L, O);
       ASSERT_EQ(lanesUnavailable(R, O, Lanes), "");
       FrameStats Whole, InLanes;
@@ -108,7 +74,7 @@ TEST(Lanes, StoppedLanesEndAtTheSameSamples) {
     GTEST_SKIP() << "no OpenCL device that splits into two lanes";
   const int W = 20, H = 14;
   TestScene T = floorAndCube(W, H, 64);
-  RendererOptions O = testOptions();
+  RendererOptions O = laneOptions();
   O.MaxPathsPerPass = size_t(W) * H; // one sample per pixel a pass
   int Calls = 0;
   O.AfterPass = [&](const PassProgress &P) {
@@ -126,7 +92,7 @@ TEST(Lanes, StoppedLanesEndAtTheSameSamples) {
   EXPECT_EQ(Stopped.Passes, unsigned(Stopped.SamplesDone));
   // The image is that of a render asked for that many samples, on one renderer.
   T.S.Render.Spp = Stopped.SamplesDone;
-  RendererOptions Plain = testOptions();
+  RendererOptions Plain = laneOptions();
   Plain.MaxPathsPerPass = O.MaxPathsPerPass;
   Renderer Whole(T.S, T.L, Plain);
   FrameStats WholeStats;
@@ -137,7 +103,7 @@ TEST(Lanes, UnavailableSaysWhy) {
   if (laneCapacity() < 2)
     GTEST_SKIP() << "no OpenCL device that splits into two lanes";
   TestScene T = floorAndCube(8, 3, 1);
-  RendererOptions O = testOptions();
+  RendererOptions O = laneOptions();
   Renderer R(T.S, T.L, O);
   EXPECT_EQ(lanesUnavailable(R, O, 1), "one render thread");
   if (laneCapacity() >= 4)
