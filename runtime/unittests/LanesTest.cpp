@@ -75,7 +75,7 @@ TEST(Lanes, StoppedLanesEndAtTheSameSamples) {
   const int W = 20, H = 14;
   TestScene T = floorAndCube(W, H, 64);
   RendererOptions O = laneOptions();
-  O.MaxPathsPerPass = size_t(W) * H; // one sample per pixel a pass
+  O.MaxPathsPerPass = size_t(W) * H; // one or two samples per pixel a pass
   int Calls = 0;
   O.AfterPass = [&](const PassProgress &P) {
     EXPECT_GE(P.SamplesDone, 1);
@@ -89,7 +89,8 @@ TEST(Lanes, StoppedLanesEndAtTheSameSamples) {
   EXPECT_TRUE(Stopped.Interrupted);
   EXPECT_GE(Stopped.SamplesDone, 2);
   EXPECT_LT(Stopped.SamplesDone, 64);
-  EXPECT_EQ(Stopped.Passes, unsigned(Stopped.SamplesDone));
+  ASSERT_GT(Stopped.Passes, 0u);
+  EXPECT_EQ(Stopped.SamplesDone % int(Stopped.Passes), 0); // passes of equal samples
   // The image is that of a render asked for that many samples, on one renderer.
   T.S.Render.Spp = Stopped.SamplesDone;
   RendererOptions Plain = laneOptions();

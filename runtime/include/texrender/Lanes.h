@@ -33,8 +33,9 @@ struct LaneReport {
 };
 
 /// Renders the frame R would (R.settings(), with R's scene data; S and L as R was made from,
-/// O its options) in Lanes lanes (lanesUnavailable(R, O, Lanes) must be ""), each pass of each
-/// lane as many samples per pixel as a pass of the whole frame, and returns the image as
+/// O its options) in Lanes lanes (lanesUnavailable(R, O, Lanes) must be ""), the lanes'
+/// passes together twice O.MaxPathsPerPass paths, each lane's as many samples per pixel,
+/// and returns the image as
 /// R.render would (and the variance, if asked). Stats: the frame's wall clock; rays and kernel
 /// timings summed over the lanes. O.AfterPass hears the fewest samples any lane has done,
 /// once every lane has done a pass (PassProgress::Image is empty); once it returns false, each lane stops at the first pass
