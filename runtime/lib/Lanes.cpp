@@ -197,6 +197,7 @@ std::vector<float> renderInLanes(Renderer &R, const Scene &S, const Layout &L,
       RendererOptions LO = O;
       LO.Lane = int(I);
       LO.Prebuilt = &R.sceneData();
+      LO.PrebuiltTrace = &R.tracer();
       LO.MaxPathsPerPass = SppPerPass * size_t(F.Width) * size_t(LS.Render.RegionHeight);
       LO.AfterPass = [&Stops, I](const PassProgress &P) { return Stops.afterPass(I, P); };
       Renderer Lane(LS, L, LO);

@@ -134,7 +134,9 @@ Renderer::Renderer(const Scene &S, const Layout &L, const RendererOptions &O)
       buildFixedKernels();
     }
     uploadScene();
-    Tracer = makeTrace(Opts.Trace, TraceContext{*Cl, K, B, Data});
+    const TraceContext Here{*Cl, K, B, Data};
+    Tracer = Opts.PrebuiltTrace ? Opts.PrebuiltTrace->share(Here) : makeTrace(Opts.Trace, Here);
+    Opts.PrebuiltTrace = nullptr; // not kept, as Prebuilt
     Tiers = std::make_unique<TierManager>(
         *Cl, Lay, Opts.Tier, Opts.InterpStackHeadroom, programOptions(), Epoch,
         [this](Layout &&New) {

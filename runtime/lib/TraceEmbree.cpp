@@ -22,6 +22,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -96,11 +98,20 @@ void skipOwnTriangle(const RTCFilterFunctionNArguments *A) {
       A->valid[I] = 0;
 }
 
+/// Where an Embree device's errors go: the first message, kept for check(). Shared by the
+/// backends tracing over that device's scene (Trace::share), and locked: they trace on
+/// different threads.
+struct ErrorSink {
+  std::mutex Lock;
+  std::string Last;
+};
+
 void embreeError(void *User, RTCError Code, const char *Message) {
-  auto *Last = static_cast<std::string *>(User);
+  auto *Sink = static_cast<ErrorSink *>(User);
   try {
-    if (Last->empty())
-      *Last = std::string(Message ? Message : "") + " (Embree error " + std::to_string(int(Code)) + ")";
+    std::lock_guard<std::mutex> Hold(Sink->Lock);
+    if (Sink->Last.empty())
+      Sink->Last = std::string(Message ? Message : "") + " (Embree error " + std::to_string(int(Code)) + ")";
   } catch (const std::bad_alloc &) {
     // Out of memory: check() reads the code from rtcGetDeviceError; nothing may unwind into Embree.
   }
@@ -115,7 +126,7 @@ public:
       throw std::bad_alloc(); // named by makeEmbreeTrace's step (Embree's threads did not start)
     if (!Device)
       throw Error("cannot start Embree: " + std::to_string(int(rtcGetDeviceError(nullptr))));
-    rtcSetDeviceErrorFunction(Device, embreeError, &LastError);
+    rtcSetDeviceErrorFunction(Device, embreeError, Errors.get());
     if (!rtcGetDeviceProperty(Device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
       throw Error("this Embree has no filter functions (AO rays skip their own triangle)");
     Scene = rtcNewScene(Device);
@@ -147,6 +158,13 @@ public:
     BuildSeconds = seconds() - T0;
   }
 
+  /// Traces over From's scene (retained: it lives as long as either backend).
+  EmbreeTrace(const TraceContext &C, const EmbreeTrace &From)
+      : C(C), Device(From.Device), Scene(From.Scene), Errors(From.Errors) {
+    rtcRetainDevice(Device);
+    rtcRetainScene(Scene);
+  }
+
   ~EmbreeTrace() override {
     if (Scene)
       rtcReleaseScene(Scene);
@@ -156,6 +174,9 @@ public:
 
   const char *name() const override { return "embree"; }
   double buildSeconds() const override { return BuildSeconds; }
+  std::unique_ptr<Trace> share(const TraceContext &To) const override {
+    return std::make_unique<EmbreeTrace>(To, *this);
+  }
 
   void closestHit(const cl::Buffer &Active, int Count, const std::string &Stage) override {
     if (Count <= 0)
@@ -327,15 +348,16 @@ private:
   void check(const char *What) {
     if (rtcGetDeviceError(Device) == RTC_ERROR_OUT_OF_MEMORY)
       throw std::bad_alloc(); // named by makeEmbreeTrace's step
-    if (!LastError.empty())
-      throw Error(std::string(What) + ": " + LastError);
+    std::lock_guard<std::mutex> Hold(Errors->Lock);
+    if (!Errors->Last.empty())
+      throw Error(std::string(What) + ": " + Errors->Last);
   }
 
   TraceContext C;
   RTCDevice Device = nullptr;
   RTCScene Scene = nullptr;
-  std::string LastError;
-  double BuildSeconds = 0;
+  std::shared_ptr<ErrorSink> Errors = std::make_shared<ErrorSink>();
+  double BuildSeconds = 0; // 0: shared
 };
 
 } // namespace

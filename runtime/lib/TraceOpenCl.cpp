@@ -48,6 +48,9 @@ public:
   explicit OpenClTrace(const TraceContext &C) : C(C) {}
   const char *name() const override { return "opencl"; }
   double buildSeconds() const override { return 0.0; }
+  std::unique_ptr<Trace> share(const TraceContext &To) const override {
+    return std::make_unique<OpenClTrace>(To); // the SAH BVH is in To's buffers
+  }
 
   void closestHit(const cl::Buffer &Active, int Count, const std::string &Stage) override {
     cl::Kernel &CH = C.K.at("closest_hit");

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <random>
+#include <cstring>
+#include <thread>
 
 namespace fs = std::filesystem;
 using namespace texrender;
@@ -44,41 +46,77 @@ SceneData tinyScene() {
   return sceneOf({{0, 0, -2}, {1, 0, -2}, {0, 1, -2}, {-1, -1, -5}, {0, -1, -5}, {-1, 0, -5}}, 1);
 }
 
+/// A context holding closest-hit rays Rays (origin, direction) over D, in the buffers the
+/// backends read: hit i belongs to path Rays.size() - 1 - i.
+struct Rig {
+  ClContext Cl{0, ""};
+  std::map<std::string, cl::Kernel> K;
+  std::map<std::string, cl::Buffer> B;
+  cl::Buffer Act;
+  const SceneData &D;
+  size_t N;
+
+  Rig(const SceneData &D, const std::vector<std::pair<Vec3, Vec3>> &Rays) : D(D), N(Rays.size()) {
+    std::string Path = kernelDir() + "/closest_hit.cl";
+    cl::Program P = Cl.buildProgram(Path, readKernelSource(Path),
+                                    "-cl-std=CL1.2 -I " + kernelDir() + "/common");
+    K["closest_hit"] = cl::Kernel(P, "closest_hit");
+    B["bvhNodes"] = Cl.allocateWith("bvhNodes", D.Tree.Nodes.data(),
+                                    D.Tree.Nodes.size() * sizeof(RtBvh4Node), CL_MEM_READ_ONLY);
+    B["triangles"] = Cl.allocateWith("triangles", D.Tris.data(), D.Tris.size() * sizeof(RtTri),
+                                     CL_MEM_READ_ONLY);
+    std::vector<RtPath> Paths(N);
+    std::vector<cl_int> Active(N);
+    for (size_t I = 0; I < N; ++I) {
+      const auto &[O, Dir] = Rays[I];
+      Paths[I].origin = {{O[0], O[1], O[2], 0}};
+      Paths[I].dir = {{Dir[0], Dir[1], Dir[2], 0}};
+      Active[I] = cl_int(N - 1 - I);
+    }
+    B["paths"] = Cl.allocateWith("paths", Paths.data(), N * sizeof(RtPath), CL_MEM_READ_WRITE);
+    Act = Cl.allocateWith("active", Active.data(), N * sizeof(cl_int), CL_MEM_READ_WRITE);
+    B["hits"] = Cl.allocate("hits", N * sizeof(RtHit), CL_MEM_READ_WRITE);
+  }
+  TraceContext context() { return TraceContext{Cl, K, B, D}; }
+  /// The closest hits that T (on this context) finds.
+  std::vector<RtHit> hits(Trace &T) {
+    T.closestHit(Act, int(N), "closest_hit_primary");
+    Cl.finish();
+    std::vector<RtHit> Hits(N);
+    Cl.read(B["hits"], Hits.data(), Hits.size() * sizeof(RtHit));
+    return Hits;
+  }
+};
+
 /// Traces Rays (origin, direction) as closest-hit rays with backend Kind.
 std::vector<RtHit> trace(TraceKind Kind, const SceneData &D,
                          const std::vector<std::pair<Vec3, Vec3>> &Rays) {
-  ClContext Cl(0, "");
-  std::map<std::string, cl::Kernel> K;
-  std::map<std::string, cl::Buffer> B;
-  std::string Path = kernelDir() + "/closest_hit.cl";
-  cl::Program P = Cl.buildProgram(Path, readKernelSource(Path),
-                                  "-cl-std=CL1.2 -I " + kernelDir() + "/common");
-  K["closest_hit"] = cl::Kernel(P, "closest_hit");
-  B["bvhNodes"] = Cl.allocateWith("bvhNodes", D.Tree.Nodes.data(),
-                                  D.Tree.Nodes.size() * sizeof(RtBvh4Node), CL_MEM_READ_ONLY);
-  B["triangles"] = Cl.allocateWith("triangles", D.Tris.data(), D.Tris.size() * sizeof(RtTri),
-                                   CL_MEM_READ_ONLY);
-  std::vector<RtPath> Paths(Rays.size());
-  std::vector<cl_int> Active(Rays.size());
-  for (size_t I = 0; I < Rays.size(); ++I) {
-    const auto &[O, Dir] = Rays[I];
-    Paths[I].origin = {{O[0], O[1], O[2], 0}};
-    Paths[I].dir = {{Dir[0], Dir[1], Dir[2], 0}};
-    Active[I] = cl_int(Rays.size() - 1 - I); // hit i belongs to path active[i]
-  }
-  B["paths"] = Cl.allocateWith("paths", Paths.data(), Paths.size() * sizeof(RtPath),
-                               CL_MEM_READ_WRITE);
-  cl::Buffer Act = Cl.allocateWith("active", Active.data(), Active.size() * sizeof(cl_int),
-                                   CL_MEM_READ_WRITE);
-  B["hits"] = Cl.allocate("hits", Rays.size() * sizeof(RtHit), CL_MEM_READ_WRITE);
-  std::unique_ptr<Trace> T = makeTrace(Kind, TraceContext{Cl, K, B, D});
+  Rig R(D, Rays);
+  std::unique_ptr<Trace> T = makeTrace(Kind, R.context());
   EXPECT_STREQ(T->name(), traceKindName(Kind));
-  T->closestHit(Act, int(Rays.size()), "closest_hit_primary");
-  Cl.finish();
-  std::vector<RtHit> Hits(Rays.size());
-  Cl.read(B["hits"], Hits.data(), Hits.size() * sizeof(RtHit));
-  EXPECT_EQ(Cl.timings().count("closest_hit_primary"), 1u);
+  std::vector<RtHit> Hits = R.hits(*T);
+  EXPECT_EQ(R.Cl.timings().count("closest_hit_primary"), 1u);
   return Hits;
+}
+
+/// 3000 random triangles (a BVH several levels deep).
+SceneData randomScene(std::mt19937 &Rng) {
+  std::uniform_real_distribution<float> U(-1.0f, 1.0f), S(0.02f, 0.15f);
+  std::vector<Vec3> In;
+  for (int I = 0; I < 3000; ++I) {
+    Vec3 C{U(Rng), U(Rng), U(Rng)};
+    for (int K = 0; K < 3; ++K)
+      In.push_back({C[0] + U(Rng) * S(Rng), C[1] + U(Rng) * S(Rng), C[2] + U(Rng) * S(Rng)});
+  }
+  return sceneOf(In, 4);
+}
+
+std::vector<std::pair<Vec3, Vec3>> randomRays(std::mt19937 &Rng, int N) {
+  std::uniform_real_distribution<float> R(-1.5f, 1.5f);
+  std::vector<std::pair<Vec3, Vec3>> Rays;
+  for (int I = 0; I < N; ++I)
+    Rays.push_back({{R(Rng), R(Rng), R(Rng)}, {R(Rng), R(Rng), R(Rng)}});
+  return Rays;
 }
 
 class TraceTest : public ::testing::TestWithParam<TraceKind> {};
@@ -115,18 +153,9 @@ TEST_P(TraceTest, ClosestHitsMatchBruteForce) {
   if (listDevices().empty())
     GTEST_SKIP() << "no OpenCL device";
   std::mt19937 Rng(11);
-  std::uniform_real_distribution<float> U(-1.0f, 1.0f), S(0.02f, 0.15f), R(-1.5f, 1.5f);
-  std::vector<Vec3> In;
-  for (int I = 0; I < 3000; ++I) {
-    Vec3 C{U(Rng), U(Rng), U(Rng)};
-    for (int K = 0; K < 3; ++K)
-      In.push_back({C[0] + U(Rng) * S(Rng), C[1] + U(Rng) * S(Rng), C[2] + U(Rng) * S(Rng)});
-  }
-  SceneData D = sceneOf(In, 4);
+  SceneData D = randomScene(Rng);
   ASSERT_GT(D.Tree.Depth, 2u);
-  std::vector<std::pair<Vec3, Vec3>> Rays;
-  for (int I = 0; I < 3000; ++I)
-    Rays.push_back({{R(Rng), R(Rng), R(Rng)}, {R(Rng), R(Rng), R(Rng)}});
+  std::vector<std::pair<Vec3, Vec3>> Rays = randomRays(Rng, 3000);
   std::vector<RtHit> H = trace(GetParam(), D, Rays);
   int Hits = 0, Mismatches = 0;
   for (size_t I = 0; I < Rays.size(); ++I) {
@@ -145,6 +174,38 @@ TEST_P(TraceTest, ClosestHitsMatchBruteForce) {
   }
   EXPECT_GT(Hits, 500);
   EXPECT_EQ(Mismatches, 0);
+}
+
+TEST_P(TraceTest, SharedBackendsTraceTheOwnersSceneAtOnce) {
+  // Two backends shared from one (Trace::share, as a frame's lanes share the frame's), each
+  // on a context of its own, trace at the same time on two threads after the owner is gone:
+  // each finds the owner's hits, bit for bit.
+  if (listDevices().empty())
+    GTEST_SKIP() << "no OpenCL device";
+  std::mt19937 Rng(12);
+  SceneData D = randomScene(Rng);
+  std::vector<std::pair<Vec3, Vec3>> Rays = randomRays(Rng, 3000);
+  Rig Owner(D, Rays), A(D, Rays), B(D, Rays);
+  std::unique_ptr<Trace> T = makeTrace(GetParam(), Owner.context());
+  const std::vector<RtHit> Expected = Owner.hits(*T);
+  std::unique_ptr<Trace> TA = T->share(A.context()), TB = T->share(B.context());
+  EXPECT_STREQ(TA->name(), T->name());
+  EXPECT_EQ(TA->buildSeconds(), 0.0);
+  T.reset();
+  std::vector<RtHit> HA, HB;
+  std::thread Other([&] { HB = B.hits(*TB); });
+  HA = A.hits(*TA);
+  Other.join();
+  int Hits = 0;
+  for (const std::vector<RtHit> *H : {&HA, &HB}) {
+    ASSERT_EQ(H->size(), Expected.size());
+    for (size_t I = 0; I < Expected.size(); ++I) {
+      Hits += Expected[I].tri >= 0;
+      EXPECT_EQ((*H)[I].tri, Expected[I].tri) << I;
+      EXPECT_EQ(std::memcmp(&(*H)[I], &Expected[I], sizeof(RtHit)), 0) << I;
+    }
+  }
+  EXPECT_GT(Hits, 1000);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, TraceTest,

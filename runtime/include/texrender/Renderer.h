@@ -79,6 +79,9 @@ struct RendererOptions {
   /// The scene's host data already built (a lane's: the frame's Renderer has it), copied
   /// instead of built again; null: built from the scene.
   const SceneData *Prebuilt = nullptr;
+  /// The trace backend of the frame's Renderer (a lane's), whose acceleration structure this
+  /// renderer's backend shares (Trace::share); null: built for this renderer.
+  const texrender::Trace *PrebuiltTrace = nullptr; // (Trace alone: the TraceKind field)
 };
 
 

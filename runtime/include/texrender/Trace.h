@@ -61,6 +61,10 @@ public:
   /// the hits whose material reads AO (the slots of the other hits are 0 with OpenCL and left
   /// as they were with Embree: ao_reduce reads only the former); ao_reduce averages them.
   virtual void aoOccluded(const cl::Buffer &Active, int Count, const AoParams &P) = 0;
+  /// The same backend over the same scene on another renderer's context and buffers (a
+  /// lane's, Lanes.h), sharing this one's acceleration structure instead of building its
+  /// own. Both may trace at once, from different threads.
+  virtual std::unique_ptr<Trace> share(const TraceContext &C) const = 0;
 };
 
 /// Auto: Embree on a CPU device, OpenCL otherwise.
