@@ -111,7 +111,8 @@ void embreeError(void *User, RTCError Code, const char *Message) {
   try {
     std::lock_guard<std::mutex> Hold(Sink->Lock);
     if (Sink->Last.empty())
-      Sink->Last = std::string(Message ? Message : "") + " (Embree error " + std::to_string(int(Code)) + ")";
+      Sink->Last = std::string(Message ? Message : "") + " (Embree error " +
+                   std::to_string(int(Code)) + ")";
   } catch (const std::bad_alloc &) {
     // Out of memory: check() reads the code from rtcGetDeviceError; nothing may unwind into Embree.
   }

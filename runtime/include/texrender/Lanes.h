@@ -4,11 +4,12 @@
 // A frame in lanes (docs/cli.md, "Lanes"): one lane per render thread, lane I on the device's
 // compute unit I alone (an OpenCL sub-device; on PoCL's CPU device, its worker thread I) and a
 // host thread of its own (its trace stages, pinned to CPU I with the pools), rendering the film
-// rows I, I + N, I + 2N, ... of the frame with a Renderer of its own. No lane waits at another's
-// stage ends: a frame beside a competing load grows by the load's share of the cores, where the
-// stages of one Renderer on every core wait, at each stage's end, for the core the load took
-// last (bench/threads.md). Each row's pixels keep their film coordinates and random streams
-// (raygen.cl), so the image is the whole frame's bit for bit.
+// rows I, I + N, I + 2N, ... of the frame with a Renderer of its own, which traces over the
+// frame Renderer's Embree BVH (Trace::share: built once, on every thread). No lane waits at
+// another's stage ends: a frame beside a competing load grows by the load's share of the
+// cores, where the stages of one Renderer on every core wait, at each stage's end, for the
+// core the load took last (bench/threads.md). Each row's pixels keep their film coordinates
+// and random streams (raygen.cl), so the image is the whole frame's bit for bit.
 
 #include "texrender/Renderer.h"
 
@@ -27,8 +28,8 @@ std::string lanesUnavailable(Renderer &R, const RendererOptions &O, unsigned Lan
 struct LaneReport {
   unsigned Lanes = 0;
   size_t MemoryBytes = 0; // every lane's device memory, summed
-  /// Per lane, seconds from the frame's start: until its Renderer was made (its scene upload,
-  /// trace structure and kernels loaded), and until its render returned.
+  /// Per lane, seconds from the frame's start: until its Renderer was made (its scene upload
+  /// and kernels loaded), and until its render returned.
   std::vector<double> ReadySeconds, DoneSeconds;
 };
 
