@@ -1,7 +1,8 @@
 // The trace backends (Trace.h) on a tiny scene: a primary ray hits the expected triangle (its
 // index in BVH order, the id every other stage uses) at the expected t, with the barycentrics of
 // v1 and v2 that closest_hit.cl writes; a ray past the triangles misses. Embree and the OpenCL
-// traversal must both give it. Skipped without an OpenCL device.
+// traversal must both give it, and a backend shared from another (Trace::share, a lane's)
+// gives the owner's hits. Skipped without an OpenCL device.
 #include "texrender/Error.h"
 #include "texrender/TextureTiers.h"
 #include "texrender/Trace.h"
@@ -10,9 +11,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <random>
-#include <cstring>
 #include <thread>
 
 namespace fs = std::filesystem;

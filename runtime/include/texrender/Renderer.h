@@ -81,7 +81,7 @@ struct RendererOptions {
   const SceneData *Prebuilt = nullptr;
   /// The trace backend of the frame's Renderer (a lane's), whose acceleration structure this
   /// renderer's backend shares (Trace::share); null: built for this renderer.
-  const texrender::Trace *PrebuiltTrace = nullptr; // (Trace alone: the TraceKind field)
+  const texrender::Trace *PrebuiltTrace = nullptr; // qualified: the field Trace names the kind
 };
 
 

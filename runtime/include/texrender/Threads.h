@@ -23,8 +23,8 @@ void setRenderThreads(unsigned N);
 unsigned renderThreads();
 
 /// Makes the calling thread lane I of a frame (Lanes.h) for the object's lifetime: its trace
-/// stages run on it alone (renderThreads() is 1 there), and it runs on
-/// CPU I when the pools are pinned, as the OpenCL sub-device of lane I does (PoCL's worker I).
+/// stages run on it alone (renderThreads() is 1 there), and it runs on CPU I when the pools
+/// are pinned, as the OpenCL sub-device of lane I does (PoCL's worker I).
 class LaneThread {
 public:
   explicit LaneThread(unsigned I);
